@@ -1,0 +1,292 @@
+#include "commands.h"
+
+#include "ground_truth.h"
+#include "headless_context.h"
+#include "image_io.h"
+#include "metrics.h"
+#include "renderer.h"
+#include "retroaa_hooks.h"
+#include "scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace app {
+
+namespace {
+
+// One headless session: context, scene, host renderer with the engine patch installed.
+struct Session {
+  host::HeadlessContext context;
+  host::Scene scene;
+  std::unique_ptr<host::Renderer> renderer;
+  std::unique_ptr<patch::RetroaaHooks> hooks;
+
+  Session(const std::string& scenePath, int width, int height) : scene(host::loadScene(scenePath)) {
+    renderer = std::make_unique<host::Renderer>(scene, width, height);
+    auto created = patch::RetroaaHooks::create(renderer->targets(), retroaa::Config{});
+    if (!created) throw std::runtime_error("retroaa: " + created.error().message);
+    hooks = std::move(created.value());
+    renderer->setHooks(hooks.get());
+  }
+  host::Camera camera(int frame) const { return frame < 0 ? scene.camera : scene.path.at(scene.camera, frame); }
+  void configure(const retroaa::Config& config) {
+    const retroaa::Status status = hooks->plugin().reconfigure(config);
+    if (!status) throw std::invalid_argument(status.error().message);
+  }
+};
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+void ensureParent(const std::string& path) {
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+}
+
+std::map<std::string, std::string> metadata(const Session& session, const std::string& method) {
+  return {{"retroaa:method", method},
+          {"retroaa:scene", session.scene.name},
+          {"retroaa:renderer", session.context.info().summary()},
+          {"retroaa:config", retroaa::toConfigText(session.hooks->plugin().config())}};
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+}  // namespace
+
+MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base) {
+  MethodSpec out{spec, base};
+  std::string rest = spec;
+  const size_t plus = rest.find('+');
+  if (plus != std::string::npos) {
+    if (rest.substr(plus + 1) != "fxaa")
+      throw std::invalid_argument("method '" + spec + "': only '+fxaa' can be stacked");
+    out.config.fxaa = true;
+    rest = rest.substr(0, plus);
+  }
+  const size_t slash = rest.find('/');
+  if (slash != std::string::npos) {
+    const retroaa::Status status = retroaa::applySetting(out.config, "resolve_weighting", rest.substr(slash + 1));
+    if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
+    rest = rest.substr(0, slash);
+  }
+  const retroaa::Status status = retroaa::applySetting(out.config, "method", rest);
+  if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
+  return out;
+}
+
+std::vector<std::string> expandMethodList(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (item == "all") {
+      for (const char* m : {"off", "fxaa", "resolve", "resolve/front", "resolve/back", "resolve/fso",
+                            "resolve/mean", "resolve+fxaa"})
+        out.push_back(m);
+    } else if (!item.empty()) {
+      out.push_back(item);
+    }
+  }
+  return out;
+}
+
+int runRender(const RenderOptions& options) {
+  Session session(options.scene, options.width, options.height);
+  const host::Camera camera = session.camera(options.frame);
+  const std::string ext = lowerExtension(options.out);
+  if (ext != ".png" && ext != ".exr") throw std::invalid_argument("--out must end in .png or .exr, got '" + options.out + "'");
+  ensureParent(options.out);
+
+  std::vector<uint8_t> display;
+  std::vector<float> radiance;
+  if (options.method == "ground-truth") {
+    const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, options.groundTruthSamples);
+    display = truth.display;
+    radiance = truth.radiance;
+  } else {
+    session.configure(parseMethodSpec(options.method, options.base).config);
+    session.renderer->renderFrame(camera);
+    display = session.renderer->readDisplay();
+    radiance = session.renderer->readLight();
+  }
+  auto meta = metadata(session, options.method);
+  if (ext == ".exr")
+    writeImageFloat(options.out, options.width, options.height, radiance, meta);
+  else
+    writeImage8(options.out, options.width, options.height, display, meta);
+
+  if (!options.heatmap.empty()) {
+    const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, options.groundTruthSamples);
+    const DisplayImage image = DisplayImage::fromRgba8(options.width, options.height, display);
+    const DisplayImage reference = DisplayImage::fromRgba8(options.width, options.height, truth.display);
+    ensureParent(options.heatmap);
+    writeImage8(options.heatmap, options.width, options.height, errorHeatmap(image, reference), meta);
+    const ErrorMetrics m = compare(image, reference, edgeMaskFromSpread(truth.lumaStdDev));
+    std::printf("%s vs ground truth (%dx%d): PSNR %.2f dB, edge PSNR %.2f dB, SSIM %.4f\n", options.method.c_str(),
+                options.groundTruthSamples, options.groundTruthSamples, m.psnrDb, m.edgePsnrDb, m.ssim);
+  }
+  std::printf("wrote %s (%s)\n", options.out.c_str(), session.context.info().summary().c_str());
+  return kExitOk;
+}
+
+int runBench(const BenchOptions& options) {
+  std::vector<MethodSpec> specs;
+  for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
+  if (specs.empty()) throw std::invalid_argument("--methods names no method");
+
+  Session session(options.scene, options.width, options.height);
+  const host::Camera camera = session.camera(options.frame);
+  const int w = options.width, h = options.height;
+  std::fprintf(stderr, "bench: %s, %dx%d, %zu triangles, %zu lights; ground truth %dx%d per pixel...\n",
+               session.scene.name.c_str(), w, h, session.scene.triangleCount(), session.scene.lights.size(),
+               options.groundTruthSamples, options.groundTruthSamples);
+  const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, options.groundTruthSamples);
+  const DisplayImage reference = DisplayImage::fromRgba8(w, h, truth.display);
+  const std::vector<uint8_t> edges = edgeMaskFromSpread(truth.lumaStdDev);
+  if (!options.imagesDirectory.empty()) {
+    std::filesystem::create_directories(options.imagesDirectory);
+    writeImage8(options.imagesDirectory + "/ground-truth.png", w, h, truth.display, metadata(session, "ground-truth"));
+    std::vector<uint8_t> mask(size_t(w) * h * 4, 255);
+    for (size_t p = 0; p < edges.size(); ++p) mask[p * 4] = mask[p * 4 + 1] = mask[p * 4 + 2] = edges[p] ? 255 : 0;
+    writeImage8(options.imagesDirectory + "/edge-mask.png", w, h, mask);
+  }
+
+  nlohmann::json rows = nlohmann::json::array();
+  double offFrameMs = 0;
+  for (const MethodSpec& spec : specs) {
+    std::fprintf(stderr, "bench: %s\n", spec.name.c_str());
+    retroaa::Config config = spec.config;
+    config.measureGpuTime = true;
+    session.configure(config);
+    session.renderer->measureTime = true;
+    session.renderer->renderFrame(camera);  // warm-up: shader compilation, first-touch allocation
+    std::vector<double> frameMs, modelMs, lightingMs, tonemapMs;
+    std::map<std::string, std::vector<double>> pluginMs;
+    for (int r = 0; r < std::max(1, options.repeats); ++r) {
+      session.renderer->renderFrame(camera);
+      const host::HostTimings& t = session.renderer->timings();
+      frameMs.push_back(t.frameMs);
+      modelMs.push_back(t.modelPassMs);
+      lightingMs.push_back(t.lightingMs);
+      tonemapMs.push_back(t.tonemapMs);
+      for (const retroaa::PassTime& pass : session.hooks->plugin().stats().passes) pluginMs[pass.name].push_back(pass.ms);
+    }
+    session.renderer->measureTime = false;
+    const retroaa::Stats stats = session.hooks->plugin().stats();
+    const std::vector<uint8_t> display = session.renderer->readDisplay();
+    const DisplayImage image = DisplayImage::fromRgba8(w, h, display);
+    const ErrorMetrics m = compare(image, reference, edges);
+    if (spec.name == "off") offFrameMs = median(frameMs);
+
+    nlohmann::json passes = {{"model_pass", median(modelMs)}, {"lighting", median(lightingMs)}, {"tonemap_post", median(tonemapMs)}};
+    for (const auto& [name, values] : pluginMs) passes["plugin." + name] = median(values);
+    nlohmann::json row = {
+        {"method", spec.name},
+        {"samples", stats.samples},
+        {"evals_per_pixel", stats.evaluationsPerPixel()},
+        {"lighting_evaluations", stats.lightingEvaluations},
+        {"gpu_ms", median(frameMs)},
+        {"passes_ms", passes},
+        {"plugin_bytes", stats.bytesHeld},
+        {"plugin_bytes_per_pixel", double(stats.bytesHeld) / (double(w) * h)},
+        {"psnr_db", m.psnrDb},
+        {"edge_psnr_db", m.edgePsnrDb},
+        {"ssim", m.ssim},
+        {"max_abs_error", m.maxAbsError},
+        {"psnr_vs_per_sample_db", nullptr},  // filled once `per-sample` exists in this build
+    };
+    rows.push_back(row);
+    if (!options.imagesDirectory.empty()) {
+      std::string file = spec.name;
+      std::replace(file.begin(), file.end(), '/', '-');
+      writeImage8(options.imagesDirectory + "/" + file + ".png", w, h, display, metadata(session, spec.name));
+      writeImage8(options.imagesDirectory + "/" + file + "-error.png", w, h, errorHeatmap(image, reference));
+    }
+  }
+  for (auto& row : rows) row["time_vs_off"] = offFrameMs > 0 ? nlohmann::json(row["gpu_ms"].get<double>() / offFrameMs) : nlohmann::json(nullptr);
+
+  nlohmann::json document = {
+      {"scene", session.scene.name},
+      {"width", w},
+      {"height", h},
+      {"frame", options.frame},
+      {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
+      {"edge_pixels", std::count(edges.begin(), edges.end(), 1)},
+      {"renderer", session.context.info().renderer},
+      {"gl_version", session.context.info().version},
+      {"egl_platform", session.context.info().platform},
+      {"gl_max_samples", session.context.info().maxSamples},
+      {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
+      {"rows", rows},
+  };
+
+  // A table for the terminal, and for the Markdown report.
+  std::ostringstream table;
+  table << "| method | samples | evals/px | GPU ms | time vs off | plugin B/px | PSNR dB | edge PSNR dB | SSIM | max err |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& row : rows) {
+    table << std::fixed << "| " << row["method"].get<std::string>() << " | " << row["samples"].get<int>() << " | "
+          << std::setprecision(3) << row["evals_per_pixel"].get<double>() << " | " << std::setprecision(2)
+          << row["gpu_ms"].get<double>() << " | "
+          << (row["time_vs_off"].is_null() ? std::string("-") : [&] { std::ostringstream s; s << std::fixed << std::setprecision(2) << row["time_vs_off"].get<double>(); return s.str(); }())
+          << " | " << std::setprecision(1) << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
+          << row["psnr_db"].get<double>() << " | " << row["edge_psnr_db"].get<double>() << " | " << std::setprecision(4)
+          << row["ssim"].get<double>() << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " |\n";
+  }
+  std::printf("%s", table.str().c_str());
+  std::printf("renderer: %s\n", session.context.info().summary().c_str());
+
+  if (!options.json.empty()) {
+    ensureParent(options.json);
+    std::ofstream(options.json) << document.dump(2) << "\n";
+  }
+  if (!options.csv.empty()) {
+    ensureParent(options.csv);
+    std::ofstream csv(options.csv);
+    csv << "method,samples,evals_per_pixel,gpu_ms,time_vs_off,plugin_bytes_per_pixel,psnr_db,edge_psnr_db,ssim,max_abs_error\n";
+    for (const auto& row : rows)
+      csv << row["method"].get<std::string>() << "," << row["samples"] << "," << row["evals_per_pixel"] << ","
+          << row["gpu_ms"] << "," << row["time_vs_off"] << "," << row["plugin_bytes_per_pixel"] << "," << row["psnr_db"]
+          << "," << row["edge_psnr_db"] << "," << row["ssim"] << "," << row["max_abs_error"] << "\n";
+  }
+  if (!options.report.empty()) {
+    ensureParent(options.report);
+    std::ofstream md(options.report);
+    md << "# retroaa speed vs error: " << session.scene.name << "\n\n"
+       << "Renderer: " << session.context.info().summary() << "  \n"
+       << "Size " << w << "x" << h << ", ground truth " << options.groundTruthSamples << "x" << options.groundTruthSamples
+       << " supersamples per pixel lit per sample (box filter on linear radiance), " << document["edge_pixels"]
+       << " edge pixels. Errors on tonemapped display values in [0,1]; times are the median of " << options.repeats
+       << " frames (GPU timer queries).\n\n"
+       << table.str() << "\n";
+    if (!options.imagesDirectory.empty()) {
+      const auto relative = std::filesystem::relative(options.imagesDirectory, std::filesystem::path(options.report).parent_path()).string();
+      md << "Ground truth: ![](" << relative << "/ground-truth.png) edge mask: ![](" << relative << "/edge-mask.png)\n\n";
+      for (const auto& row : rows) {
+        std::string file = row["method"].get<std::string>();
+        std::replace(file.begin(), file.end(), '/', '-');
+        md << "`" << row["method"].get<std::string>() << "`: ![](" << relative << "/" << file << ".png) error: ![]("
+           << relative << "/" << file << "-error.png)\n\n";
+      }
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace app

@@ -1,0 +1,52 @@
+// The `retroaa` subcommands as functions, so tests call them without a process in between.
+#pragma once
+
+#include "retroaa/config.h"
+
+#include <string>
+#include <vector>
+
+namespace app {
+
+// Exit codes of every subcommand.
+constexpr int kExitOk = 0;
+constexpr int kExitCheckFailed = 1;
+constexpr int kExitBadInput = 2;
+
+// A method as named in reports and on the command line: `method[/weighting][+fxaa]`,
+// e.g. `off`, `fxaa`, `resolve`, `resolve/fso`, `resolve+fxaa`. Settings (--set, --config) apply first.
+struct MethodSpec {
+  std::string name;
+  retroaa::Config config;
+};
+// Throws std::invalid_argument naming the bad part.
+MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base);
+// "all" expands to every method the plugin offers, with the resolve weightings and stacking.
+std::vector<std::string> expandMethodList(const std::string& list);
+
+struct RenderOptions {
+  std::string scene = "default";
+  std::string method = "off";  // a MethodSpec, or "ground-truth"
+  retroaa::Config base;        // from --config / --set / FSO flags
+  int width = 320, height = 240;
+  int frame = -1;              // camera path frame; -1: the scene's camera
+  int groundTruthSamples = 8;  // per axis, for --method ground-truth and --heatmap
+  std::string out;             // .png or .exr (.exr writes linear radiance)
+  std::string heatmap;         // optional: error heat map against ground truth
+};
+int runRender(const RenderOptions& options);
+
+struct BenchOptions {
+  std::string scene = "default";
+  std::string methods = "all";
+  retroaa::Config base;
+  int width = 320, height = 240;
+  int frame = -1;
+  int groundTruthSamples = 8;
+  int repeats = 3;             // timed frames per method; the median is reported
+  std::string json, csv, report;  // outputs (any may be empty)
+  std::string imagesDirectory;    // per-method PNGs and heat maps (optional)
+};
+int runBench(const BenchOptions& options);
+
+}  // namespace app

@@ -1,0 +1,106 @@
+// `retroaa`: render, bench (more subcommands land with their issues). Exit codes: 0 ok, 1 a check
+// failed, 2 bad usage or input (with a message naming what was wrong).
+#include "commands.h"
+#include "headless_context.h"
+#include "scene.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace {
+
+// --config FILE, --set key=value, -msaa N, -aa_preset N and RETROAA_SETTINGS, in that order of
+// precedence from lowest: environment, file, FSO flags, --set.
+retroaa::Config buildConfig(const std::string& configFile, const std::vector<std::string>& sets,
+                            const std::string& msaa, const std::string& aaPreset) {
+  retroaa::Config config;
+  auto check = [](const retroaa::Status& status) {
+    if (!status) throw std::invalid_argument(status.error().message);
+  };
+  if (const char* env = std::getenv("RETROAA_SETTINGS")) check(retroaa::applySettingsList(config, env, "RETROAA_SETTINGS"));
+  if (!configFile.empty()) check(retroaa::applyConfigFile(config, configFile));
+  std::vector<std::string> warnings;
+  if (!msaa.empty()) check(retroaa::applyFsoFlag(config, "-msaa", msaa, warnings));
+  if (!aaPreset.empty()) check(retroaa::applyFsoFlag(config, "-aa_preset", aaPreset, warnings));
+  for (const std::string& w : warnings) std::fprintf(stderr, "retroaa: warning: %s\n", w.c_str());
+  for (const std::string& set : sets) {
+    const size_t equals = set.find('=');
+    if (equals == std::string::npos) throw std::invalid_argument("--set expects key=value, got '" + set + "'");
+    check(retroaa::applySetting(config, set.substr(0, equals), set.substr(equals + 1)));
+  }
+  return config;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"retroaa: retrofit anti-aliasing for deferred renderers"};
+  cli.require_subcommand(1);
+  std::string configFile, msaa, aaPreset, samples;
+  std::vector<std::string> sets;
+  auto addConfigOptions = [&](CLI::App* sub) {
+    sub->add_option("--config", configFile, "config file of key=value lines");
+    sub->add_option("--set", sets, "one setting, key=value (repeatable)");
+    sub->add_option("--samples", samples, "MSAA samples (same as --set samples=N)");
+    sub->add_option("-m,--msaa", msaa, "FreeSpace Open's -msaa 0|4|8|16");
+    sub->add_option("--aa_preset", aaPreset, "FreeSpace Open's -aa_preset 0..6");
+  };
+
+  app::RenderOptions render;
+  CLI::App* renderCmd = cli.add_subcommand("render", "render one frame headless");
+  renderCmd->add_option("--scene", render.scene, "scene file, or 'default'");
+  renderCmd->add_option("--method", render.method, "method[/weighting][+fxaa], or ground-truth");
+  renderCmd->add_option("--width", render.width)->check(CLI::Range(16, 8192));
+  renderCmd->add_option("--height", render.height)->check(CLI::Range(16, 8192));
+  renderCmd->add_option("--frame", render.frame, "camera path frame (default: the scene camera)");
+  renderCmd->add_option("--gt-samples", render.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  renderCmd->add_option("--out", render.out, "output image (.png display, .exr linear radiance)")->required();
+  renderCmd->add_option("--heatmap", render.heatmap, "also write the error against ground truth as a heat map");
+  addConfigOptions(renderCmd);
+
+  app::BenchOptions bench;
+  CLI::App* benchCmd = cli.add_subcommand("bench", "every method on one frame: speed against error");
+  benchCmd->add_option("--scene", bench.scene, "scene file, or 'default'");
+  benchCmd->add_option("--methods", bench.methods, "comma-separated method specs, or 'all'");
+  benchCmd->add_option("--width", bench.width)->check(CLI::Range(16, 8192));
+  benchCmd->add_option("--height", bench.height)->check(CLI::Range(16, 8192));
+  benchCmd->add_option("--frame", bench.frame, "camera path frame (default: the scene camera)");
+  benchCmd->add_option("--gt-samples", bench.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  benchCmd->add_option("--repeats", bench.repeats, "timed frames per method (median)")->check(CLI::Range(1, 100));
+  benchCmd->add_option("--json", bench.json, "write the rows as JSON");
+  benchCmd->add_option("--csv", bench.csv, "write the rows as CSV");
+  benchCmd->add_option("--report", bench.report, "write a Markdown report");
+  benchCmd->add_option("--images", bench.imagesDirectory, "write each method's image and error heat map here");
+  addConfigOptions(benchCmd);
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = cli.exit(e);
+    return code == 0 ? app::kExitOk : app::kExitBadInput;
+  }
+  try {
+    if (!samples.empty()) sets.insert(sets.begin(), "samples=" + samples);
+    const retroaa::Config config = buildConfig(configFile, sets, msaa, aaPreset);
+    if (renderCmd->parsed()) {
+      render.base = config;
+      return app::runRender(render);
+    }
+    bench.base = config;
+    return app::runBench(bench);
+  } catch (const host::SceneError& e) {
+    std::fprintf(stderr, "retroaa: bad scene: %s\n", e.what());
+    return app::kExitBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "retroaa: %s\n", e.what());
+    return app::kExitBadInput;
+  } catch (const host::ContextError& e) {
+    std::fprintf(stderr, "retroaa: no usable OpenGL context: %s\n", e.what());
+    return app::kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "retroaa: error: %s\n", e.what());
+    return app::kExitCheckFailed;
+  }
+}

@@ -1,0 +1,48 @@
+// The seams of the host's frame where an AA module may step in. The stock implementation is the
+// host's own single-sample path; engine-patch/patch/ provides the one that calls retroaa.
+// Each hook names the FreeSpace Open function it corresponds to (docs/integration.md).
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <functional>
+
+namespace host {
+
+// The host's render targets, handed out whenever they are (re)created.
+struct HostTargets {
+  int width = 0, height = 0;
+  GLuint gbufferFramebuffer = 0;  // attachments 0..4 + depth-stencil
+  GLuint color = 0, position = 0, normal = 0, specular = 0, emissive = 0;  // textures
+  GLuint depthStencil = 0;        // DEPTH24_STENCIL8 texture
+  GLuint lightFramebuffer = 0, lightTexture = 0;  // RGBA16F light accumulation ("composite")
+  GLuint displayFramebuffer = 0, displayTexture = 0;  // RGBA8 tonemapped output
+};
+
+// Camera facts a resolve needs for its closeness test, per frame.
+struct FrameView {
+  float horizontalFovRadians = 1.0f;
+  float verticalFovRadians = 1.0f;
+  int width = 0, height = 0;
+};
+
+// The host's lighting pass: renders every light of the frame, reading the host's single-sample
+// G-buffer, into `target` (a framebuffer with one RGBA16F colour attachment).
+using LightingPass = std::function<void(GLuint target)>;
+
+class FrameHooks {
+ public:
+  virtual ~FrameHooks() = default;
+  // opengl_setup_scene_textures(): the host (re)created its targets.
+  virtual void targetsCreated(const HostTargets&) {}
+  // gr_opengl_deferred_lighting_begin(): the framebuffer the background and models render into.
+  virtual GLuint modelPassFramebuffer(GLuint stockGbuffer) { return stockGbuffer; }
+  // gr_opengl_deferred_lighting_msaa() / _end(): the model pass is done.
+  virtual void modelPassEnd(const FrameView&) {}
+  // gr_opengl_deferred_lighting_finish(): run the host's lighting.
+  virtual void lighting(const LightingPass& pass, GLuint stockLightFramebuffer) { pass(stockLightFramebuffer); }
+  // gr_opengl_post_process_end(): after tonemapping, on the display target.
+  virtual void postProcess() {}
+};
+
+}  // namespace host

@@ -1,0 +1,102 @@
+#include "gl_objects.h"
+
+#include <map>
+#include <sstream>
+
+namespace host {
+
+const std::map<std::string, std::string>& embeddedFiles();
+
+namespace {
+
+std::string expandIncludes(const std::string& file, int depth = 0) {
+  const auto& files = embeddedFiles();
+  const auto found = files.find(file);
+  if (found == files.end()) throw std::runtime_error("host shader not embedded: " + file);
+  if (depth > 8) throw std::runtime_error("host shader includes nest too deep: " + file);
+  std::istringstream in(found->second);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    const std::string directive = "#include \"";
+    if (line.rfind(directive, 0) == 0) {
+      const std::string name = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
+      out += expandIncludes("shaders/" + name, depth + 1);
+    } else {
+      out += line + "\n";
+    }
+  }
+  return out;
+}
+
+GLuint compile(GLenum stage, const std::string& file) {
+  const std::string source = expandIncludes(file);
+  const GLuint shader = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    glDeleteShader(shader);
+    throw std::runtime_error("host shader " + file + " does not compile:\n" + log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+Program::Program(const std::string& vertexFile, const std::string& fragmentFile) {
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertexFile);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentFile);
+  name_ = glCreateProgram();
+  glAttachShader(name_, vs);
+  glAttachShader(name_, fs);
+  glLinkProgram(name_);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(name_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetProgramInfoLog(name_, sizeof log, nullptr, log);
+    throw std::runtime_error("host program " + vertexFile + " + " + fragmentFile + " does not link:\n" + log);
+  }
+  const std::string label = fragmentFile;
+  glObjectLabel(GL_PROGRAM, name_, -1, label.c_str());
+}
+
+Program::~Program() {
+  if (name_) glDeleteProgram(name_);
+}
+
+Program& Program::operator=(Program&& other) noexcept {
+  if (this != &other) {
+    if (name_) glDeleteProgram(name_);
+    name_ = std::exchange(other.name_, 0);
+  }
+  return *this;
+}
+
+Texture makeTexture2D(GLenum internalFormat, int width, int height, const char* label) {
+  GLuint name = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &name);
+  glTextureStorage2D(name, 1, internalFormat, width, height);
+  glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glObjectLabel(GL_TEXTURE, name, -1, label);
+  return Texture(name);
+}
+
+void checkFramebuffer(GLuint framebuffer, const char* label) {
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
+  if (status == GL_FRAMEBUFFER_COMPLETE) return;
+  std::ostringstream message;
+  message << "host framebuffer '" << label << "' is incomplete (status 0x" << std::hex << status << ")";
+  throw std::runtime_error(message.str());
+}
+
+}  // namespace host

@@ -1,0 +1,73 @@
+// The host engine's small GL helpers: owning handles and program building from embedded sources.
+// (The plugin has its own: it must not depend on its host.)
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace host {
+
+// Owns one GL name; `Deleter` is a function like glDeleteTextures(count, names).
+template <void (*Deleter)(GLsizei, const GLuint*)>
+class GlName {
+ public:
+  GlName() = default;
+  explicit GlName(GLuint name) : name_(name) {}
+  ~GlName() { reset(); }
+  GlName(GlName&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
+  GlName& operator=(GlName&& other) noexcept {
+    if (this != &other) {
+      reset();
+      name_ = std::exchange(other.name_, 0);
+    }
+    return *this;
+  }
+  GlName(const GlName&) = delete;
+  GlName& operator=(const GlName&) = delete;
+  void reset() {
+    if (name_) Deleter(1, &name_);
+    name_ = 0;
+  }
+  GLuint get() const { return name_; }
+  operator GLuint() const { return name_; }
+
+ private:
+  GLuint name_ = 0;
+};
+
+inline void deleteTextures(GLsizei n, const GLuint* names) { glDeleteTextures(n, names); }
+inline void deleteBuffers(GLsizei n, const GLuint* names) { glDeleteBuffers(n, names); }
+inline void deleteFramebuffers(GLsizei n, const GLuint* names) { glDeleteFramebuffers(n, names); }
+inline void deleteVertexArrays(GLsizei n, const GLuint* names) { glDeleteVertexArrays(n, names); }
+inline void deleteQueries(GLsizei n, const GLuint* names) { glDeleteQueries(n, names); }
+using Texture = GlName<deleteTextures>;
+using Buffer = GlName<deleteBuffers>;
+using Framebuffer = GlName<deleteFramebuffers>;
+using VertexArray = GlName<deleteVertexArrays>;
+using Query = GlName<deleteQueries>;
+
+class Program {
+ public:
+  Program() = default;
+  // Sources are embedded file names (shaders/...); "#include \"x\"" lines pull in other embedded files.
+  Program(const std::string& vertexFile, const std::string& fragmentFile);
+  ~Program();
+  Program(Program&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
+  Program& operator=(Program&& other) noexcept;
+  Program(const Program&) = delete;
+  Program& operator=(const Program&) = delete;
+  GLuint get() const { return name_; }
+  GLint uniform(const char* name) const { return glGetUniformLocation(name_, name); }
+
+ private:
+  GLuint name_ = 0;
+};
+
+Texture makeTexture2D(GLenum internalFormat, int width, int height, const char* label);
+void checkFramebuffer(GLuint framebuffer, const char* label);  // throws with the status name
+
+}  // namespace host

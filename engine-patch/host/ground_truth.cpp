@@ -1,0 +1,73 @@
+#include "ground_truth.h"
+
+#include <cmath>
+
+namespace host {
+
+GroundTruth renderGroundTruth(Renderer& renderer, const Camera& camera, int samplesPerAxis) {
+  const int width = renderer.width(), height = renderer.height();
+  FrameHooks* previousHooks = renderer.hooks();
+  renderer.setHooks(nullptr);
+
+  Texture radiance = makeTexture2D(GL_RGBA32F, width, height, "host.ground_truth.radiance");
+  Texture moments = makeTexture2D(GL_RGBA32F, width, height, "host.ground_truth.luma_moments");
+  GLuint fbo = 0;
+  glCreateFramebuffers(1, &fbo);
+  Framebuffer accumulation(fbo);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, radiance, 0);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, moments, 0);
+  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(fbo, 2, drawBuffers);
+  checkFramebuffer(fbo, "host.ground_truth");
+  const float zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
+
+  Program accumulate("shaders/fullscreen.vert", "shaders/accumulate.frag");
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  VertexArray emptyVertexArray(vao);
+  const float weight = 1.0f / float(samplesPerAxis * samplesPerAxis);
+  for (int sy = 0; sy < samplesPerAxis; ++sy)
+    for (int sx = 0; sx < samplesPerAxis; ++sx) {
+      const glm::vec2 jitter((sx + 0.5f) / samplesPerAxis - 0.5f, (sy + 0.5f) / samplesPerAxis - 0.5f);
+      renderer.renderFrame(camera, jitter);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+      glViewport(0, 0, width, height);
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);
+      glUseProgram(accumulate.get());
+      glUniform1f(accumulate.uniform("uWeight"), weight);
+      glUniform1f(accumulate.uniform("uExposure"), renderer.exposure());
+      glBindTextureUnit(0, renderer.targets().lightTexture);
+      glBindVertexArray(emptyVertexArray);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glDisable(GL_BLEND);
+    }
+
+  renderer.tonemap(radiance);
+  GroundTruth truth;
+  truth.width = width;
+  truth.height = height;
+  truth.samplesPerAxis = samplesPerAxis;
+  truth.display = renderer.readDisplay();
+  truth.radiance.resize(size_t(width) * height * 4);
+  std::vector<float> momentPixels(truth.radiance.size());
+  glGetTextureImage(radiance, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(truth.radiance.size() * 4), truth.radiance.data());
+  glGetTextureImage(moments, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(momentPixels.size() * 4), momentPixels.data());
+  truth.lumaStdDev.resize(size_t(width) * height);
+  std::vector<float> flipped(truth.radiance.size());
+  for (int y = 0; y < height; ++y) {
+    const int source = height - 1 - y;  // GL rows run bottom-up
+    std::copy_n(truth.radiance.begin() + size_t(source) * width * 4, width * 4, flipped.begin() + size_t(y) * width * 4);
+    for (int x = 0; x < width; ++x) {
+      const float* m = &momentPixels[(size_t(source) * width + x) * 4];
+      truth.lumaStdDev[size_t(y) * width + x] = std::sqrt(std::fmax(m[1] - m[0] * m[0], 0.0f));
+    }
+  }
+  truth.radiance = std::move(flipped);
+  renderer.setHooks(previousHooks);
+  return truth;
+}
+
+}  // namespace host

@@ -1,0 +1,28 @@
+// Ground truth: the host's stock pipeline rendered at s×s jittered sub-pixel positions, every
+// supersample lit, box-filtered.
+//
+// Averaging happens on linear radiance, before tonemapping: a pixel's true value is the integral
+// of the radiance over its footprint, and the slice methods composite their weighted lighting in the
+// same linear space before the host's tonemap. (Averaging after tonemapping would instead model
+// per-sample tonemapped resolves; at high-contrast silhouettes the two differ by up to the tonemap's
+// curvature, which is why the choice is fixed here once.)
+#pragma once
+
+#include "renderer.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace host {
+
+struct GroundTruth {
+  int width = 0, height = 0, samplesPerAxis = 0;
+  std::vector<uint8_t> display;    // RGBA8 top-down, tonemapped average radiance
+  std::vector<float> radiance;     // RGBA32F top-down, average linear radiance
+  std::vector<float> lumaStdDev;   // per pixel: std. deviation of the supersamples' display luma
+};
+
+// Renders with the stock hooks whatever hooks the renderer has; restores them afterwards.
+GroundTruth renderGroundTruth(Renderer& renderer, const Camera& camera, int samplesPerAxis);
+
+}  // namespace host

@@ -1,0 +1,313 @@
+#include "renderer.h"
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace host {
+
+namespace {
+
+void setUniform(GLint location, const glm::mat4& m) { glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(m)); }
+void setUniform(GLint location, const glm::mat3& m) { glUniformMatrix3fv(location, 1, GL_FALSE, glm::value_ptr(m)); }
+void setUniform(GLint location, glm::vec3 v) { glUniform3fv(location, 1, glm::value_ptr(v)); }
+void setUniform(GLint location, glm::vec2 v) { glUniform2fv(location, 1, glm::value_ptr(v)); }
+void setUniform(GLint location, float v) { glUniform1f(location, v); }
+void setUniform(GLint location, int v) { glUniform1i(location, v); }
+
+// Field of view along x for a vertical fov and aspect ratio.
+float horizontalFov(float verticalFov, int width, int height) {
+  return 2.0f * std::atan(std::tan(verticalFov * 0.5f) * float(width) / float(height));
+}
+
+}  // namespace
+
+Renderer::Renderer(const Scene& scene, int width, int height)
+    : scene_(scene),
+      modelProgram_("shaders/model.vert", "shaders/model.frag"),
+      backgroundProgram_("shaders/fullscreen.vert", "shaders/background.frag"),
+      ambientProgram_("shaders/fullscreen.vert", "shaders/light_ambient_directional.frag"),
+      pointProgram_("shaders/light_volume.vert", "shaders/light_point.frag"),
+      emissiveProgram_("shaders/fullscreen.vert", "shaders/emissive.frag"),
+      tonemapProgram_("shaders/fullscreen.vert", "shaders/tonemap.frag") {
+  for (const Object& object : scene_.objects) meshes_.push_back(upload(object.mesh));
+  // Light volumes must contain their sphere: a 16-segment sphere's faces sit inside radius 1, so
+  // the volume is scaled up by 1/cos(pi/16)^2 when drawn.
+  sphereVolume_ = upload(generate::sphere(1.0f, 3));
+  boxVolume_ = upload(generate::box(glm::vec3(2.0f)));
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  emptyVertexArray_ = VertexArray(vao);
+  createTargets(width, height);
+}
+
+Renderer::~Renderer() = default;
+
+Renderer::GpuMesh Renderer::upload(const Mesh& mesh) const {
+  GpuMesh gpu;
+  GLuint names[2];
+  glCreateBuffers(2, names);
+  gpu.vertices = Buffer(names[0]);
+  gpu.indices = Buffer(names[1]);
+  glNamedBufferStorage(gpu.vertices, mesh.vertices.size() * sizeof(Vertex), mesh.vertices.data(), 0);
+  glNamedBufferStorage(gpu.indices, mesh.indices.size() * sizeof(uint32_t), mesh.indices.data(), 0);
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  gpu.vertexArray = VertexArray(vao);
+  glVertexArrayVertexBuffer(vao, 0, gpu.vertices, 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vao, gpu.indices);
+  glEnableVertexArrayAttrib(vao, 0);
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
+  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
+  glVertexArrayAttribBinding(vao, 0, 0);
+  glVertexArrayAttribBinding(vao, 1, 0);
+  gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+  return gpu;
+}
+
+void Renderer::createTargets(int width, int height) {
+  // opengl_setup_scene_textures(): FSO's attachments and formats.
+  color_ = makeTexture2D(GL_RGBA16F, width, height, "host.gbuffer.color");
+  position_ = makeTexture2D(GL_RGBA16F, width, height, "host.gbuffer.position");
+  normal_ = makeTexture2D(GL_RGBA16F, width, height, "host.gbuffer.normal");
+  specular_ = makeTexture2D(GL_RGBA8, width, height, "host.gbuffer.specular");
+  emissive_ = makeTexture2D(GL_RGBA16F, width, height, "host.gbuffer.emissive");
+  depthStencil_ = makeTexture2D(GL_DEPTH24_STENCIL8, width, height, "host.gbuffer.depth_stencil");
+  light_ = makeTexture2D(GL_RGBA16F, width, height, "host.light");
+  display_ = makeTexture2D(GL_RGBA8, width, height, "host.display");
+
+  GLuint fbos[3];
+  glCreateFramebuffers(3, fbos);
+  gbufferFramebuffer_ = Framebuffer(fbos[0]);
+  lightFramebuffer_ = Framebuffer(fbos[1]);
+  displayFramebuffer_ = Framebuffer(fbos[2]);
+  const GLuint attachments[] = {color_, position_, normal_, specular_, emissive_};
+  GLenum drawBuffers[5];
+  for (int i = 0; i < 5; ++i) {
+    glNamedFramebufferTexture(gbufferFramebuffer_, GL_COLOR_ATTACHMENT0 + i, attachments[i], 0);
+    drawBuffers[i] = GL_COLOR_ATTACHMENT0 + i;
+  }
+  glNamedFramebufferDrawBuffers(gbufferFramebuffer_, 5, drawBuffers);
+  glNamedFramebufferTexture(gbufferFramebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_, 0);
+  glNamedFramebufferTexture(lightFramebuffer_, GL_COLOR_ATTACHMENT0, light_, 0);
+  glNamedFramebufferTexture(displayFramebuffer_, GL_COLOR_ATTACHMENT0, display_, 0);
+  glObjectLabel(GL_FRAMEBUFFER, gbufferFramebuffer_, -1, "host.gbuffer");
+  glObjectLabel(GL_FRAMEBUFFER, lightFramebuffer_, -1, "host.light");
+  glObjectLabel(GL_FRAMEBUFFER, displayFramebuffer_, -1, "host.display");
+  checkFramebuffer(gbufferFramebuffer_, "host.gbuffer");
+  checkFramebuffer(lightFramebuffer_, "host.light");
+  checkFramebuffer(displayFramebuffer_, "host.display");
+
+  targets_ = HostTargets{width,       height,      gbufferFramebuffer_, color_,   position_, normal_,
+                         specular_,   emissive_,   depthStencil_,       lightFramebuffer_,   light_,
+                         displayFramebuffer_, display_};
+  hooks_->targetsCreated(targets_);
+}
+
+void Renderer::resize(int width, int height) {
+  if (width == targets_.width && height == targets_.height) return;
+  createTargets(width, height);
+}
+
+void Renderer::setHooks(FrameHooks* hooks) {
+  hooks_ = hooks ? hooks : &stockHooks_;
+  hooks_->targetsCreated(targets_);
+}
+
+void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
+  const int width = targets_.width, height = targets_.height;
+  const glm::mat4 view = camera.view();
+  const glm::mat4 projection = camera.projection(width, height, jitterPixels);
+  GLuint timestamps[4] = {};
+  if (measureTime) glGenQueries(4, timestamps);
+  if (measureTime) glQueryCounter(timestamps[0], GL_TIMESTAMP);
+
+  // gr_opengl_scene_texture_begin() + gr_opengl_deferred_lighting_begin()
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 1, -1, "host.model_pass");
+  const GLuint modelTarget = hooks_->modelPassFramebuffer(gbufferFramebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, modelTarget);
+  glViewport(0, 0, width, height);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  const float zero[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(modelTarget, GL_COLOR, i, zero);
+  glClearNamedFramebufferfi(modelTarget, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+
+  // The sky goes into emissive first (FSO copies what was drawn before the models there).
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glUseProgram(backgroundProgram_.get());
+  setUniform(backgroundProgram_.uniform("uInverseProjection"), glm::inverse(projection));
+  setUniform(backgroundProgram_.uniform("uViewToWorld"), glm::mat3(glm::inverse(view)));
+  setUniform(backgroundProgram_.uniform("uViewportSize"), glm::vec2(width, height));
+  setUniform(backgroundProgram_.uniform("uSkyColor"), scene_.skyColor);
+  setUniform(backgroundProgram_.uniform("uStarDensity"), scene_.starDensity);
+  glBindVertexArray(emptyVertexArray_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glUseProgram(modelProgram_.get());
+  setUniform(modelProgram_.uniform("uProjection"), projection);
+  setUniform(modelProgram_.uniform("uNear"), camera.nearPlane);
+  setUniform(modelProgram_.uniform("uFar"), camera.farPlane);
+  for (size_t i = 0; i < scene_.objects.size(); ++i) {
+    const Object& object = scene_.objects[i];
+    const Material& material = scene_.materials[object.material];
+    const glm::mat4 modelView = view * object.transform;
+    setUniform(modelProgram_.uniform("uModelView"), modelView);
+    setUniform(modelProgram_.uniform("uNormalMatrix"), glm::transpose(glm::inverse(glm::mat3(modelView))));
+    setUniform(modelProgram_.uniform("uAlbedo"), material.albedo);
+    setUniform(modelProgram_.uniform("uSpecular"), material.specular);
+    setUniform(modelProgram_.uniform("uGloss"), material.gloss);
+    setUniform(modelProgram_.uniform("uEmissive"), material.emissive);
+    glBindVertexArray(meshes_[i].vertexArray);
+    glDrawElements(GL_TRIANGLES, meshes_[i].indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+  glPopDebugGroup();
+
+  // gr_opengl_deferred_lighting_msaa() + gr_opengl_deferred_lighting_end()
+  FrameView frameView;
+  frameView.verticalFovRadians = glm::radians(camera.fovYDegrees);
+  frameView.horizontalFovRadians = horizontalFov(frameView.verticalFovRadians, width, height);
+  frameView.width = width;
+  frameView.height = height;
+  hooks_->modelPassEnd(frameView);
+  if (measureTime) glQueryCounter(timestamps[1], GL_TIMESTAMP);
+
+  // gr_opengl_deferred_lighting_finish()
+  hooks_->lighting([&](GLuint target) { lightingPass(target, camera, projection); }, lightFramebuffer_);
+  if (measureTime) glQueryCounter(timestamps[2], GL_TIMESTAMP);
+
+  // gr_opengl_post_process_end(): tonemap, then the AA post pass.
+  tonemap(light_);
+  hooks_->postProcess();
+  if (measureTime) {
+    glQueryCounter(timestamps[3], GL_TIMESTAMP);
+    GLuint64 t[4];
+    for (int i = 0; i < 4; ++i) glGetQueryObjectui64v(timestamps[i], GL_QUERY_RESULT, &t[i]);
+    glDeleteQueries(4, timestamps);
+    timings_.modelPassMs = (t[1] - t[0]) * 1e-6;
+    timings_.lightingMs = (t[2] - t[1]) * 1e-6;
+    timings_.tonemapMs = (t[3] - t[2]) * 1e-6;
+    timings_.frameMs = (t[3] - t[0]) * 1e-6;
+  }
+}
+
+void Renderer::lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection) {
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 2, -1, "host.lighting");
+  const glm::mat4 view = camera.view();
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, targets_.width, targets_.height);
+  const float zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(target, GL_COLOR, 0, zero);
+  const GLuint gbuffer[] = {color_, position_, normal_, specular_, emissive_};
+  glBindTextures(0, 5, gbuffer);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glBindVertexArray(emptyVertexArray_);
+
+  // Ambient and directional lights: one full-screen pass.
+  glUseProgram(ambientProgram_.get());
+  setUniform(ambientProgram_.uniform("uShadingModel"), scene_.shading == ShadingModel::GGX ? 1 : 0);
+  setUniform(ambientProgram_.uniform("uAmbient"), scene_.ambient);
+  int directional = 0;
+  for (const Light& light : scene_.lights) {
+    if (light.type != LightType::Directional || directional == 4) continue;
+    const glm::vec3 toLight = glm::normalize(glm::mat3(view) * -light.direction);
+    const std::string index = "[" + std::to_string(directional) + "]";
+    setUniform(ambientProgram_.uniform(("uToLight" + index).c_str()), toLight);
+    setUniform(ambientProgram_.uniform(("uRadiance" + index).c_str()), light.color * light.intensity);
+    ++directional;
+  }
+  setUniform(ambientProgram_.uniform("uDirectionalCount"), directional);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  // Point and tube lights as volumes; back faces only, so a camera inside a volume still lights.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  glUseProgram(pointProgram_.get());
+  setUniform(pointProgram_.uniform("uShadingModel"), scene_.shading == ShadingModel::GGX ? 1 : 0);
+  setUniform(pointProgram_.uniform("uProjection"), projection);
+  for (const Light& light : scene_.lights) {
+    if (light.type == LightType::Directional) continue;
+    const glm::vec3 start = glm::vec3(view * glm::vec4(light.position, 1.0f));
+    const glm::vec3 end = glm::vec3(view * glm::vec4(light.end, 1.0f));
+    setUniform(pointProgram_.uniform("uStart"), start);
+    setUniform(pointProgram_.uniform("uEnd"), end);
+    setUniform(pointProgram_.uniform("uRadiance"), light.color * light.intensity);
+    setUniform(pointProgram_.uniform("uRadius"), light.radius);
+    glm::mat4 volume;
+    const GpuMesh* mesh = &sphereVolume_;
+    if (light.type == LightType::Point) {
+      volume = glm::scale(glm::translate(glm::mat4(1.0f), start), glm::vec3(light.radius * 1.1f));
+    } else {
+      // The tube's view-space bounding box, grown by the radius (the unit box spans [-1, 1]).
+      const glm::vec3 centre = (start + end) * 0.5f;
+      const glm::vec3 half = glm::abs(end - start) * 0.5f + light.radius;
+      volume = glm::scale(glm::translate(glm::mat4(1.0f), centre), half);
+      mesh = &boxVolume_;
+    }
+    setUniform(pointProgram_.uniform("uVolumeToView"), volume);
+    glBindVertexArray(mesh->vertexArray);
+    glDrawElements(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  glDisable(GL_CULL_FACE);
+
+  // Emissive (and the sky) last.
+  glUseProgram(emissiveProgram_.get());
+  glBindVertexArray(emptyVertexArray_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+  glPopDebugGroup();
+}
+
+void Renderer::tonemap(GLuint hdrTexture) {
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 3, -1, "host.tonemap");
+  glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
+  glViewport(0, 0, targets_.width, targets_.height);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(tonemapProgram_.get());
+  setUniform(tonemapProgram_.uniform("uExposure"), scene_.exposure);
+  glBindTextureUnit(0, hdrTexture);
+  glBindVertexArray(emptyVertexArray_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glPopDebugGroup();
+}
+
+namespace {
+template <typename T>
+std::vector<T> readTopDown(GLuint texture, int width, int height, GLenum format, GLenum type) {
+  std::vector<T> pixels(size_t(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(texture, 0, format, type, static_cast<GLsizei>(pixels.size() * sizeof(T)), pixels.data());
+  // GL rows run bottom-up; images run top-down.
+  const size_t row = size_t(width) * 4;
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row,
+                     pixels.begin() + (height - 1 - y) * row);
+  return pixels;
+}
+}  // namespace
+
+std::vector<uint8_t> Renderer::readDisplay() const {
+  return readTopDown<uint8_t>(display_, targets_.width, targets_.height, GL_RGBA, GL_UNSIGNED_BYTE);
+}
+
+std::vector<float> Renderer::readLight() const {
+  return readTopDown<float>(light_, targets_.width, targets_.height, GL_RGBA, GL_FLOAT);
+}
+
+}  // namespace host

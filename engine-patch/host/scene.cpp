@@ -1,0 +1,351 @@
+#include "scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <sstream>
+
+namespace host {
+
+const std::map<std::string, std::string>& embeddedFiles();  // generated: scenes/*.json
+
+namespace {
+
+using nlohmann::json;
+
+// Reads typed fields and throws SceneError with the full field path on any mismatch.
+class Reader {
+ public:
+  Reader(const std::string& file, const json& node, std::string path)
+      : file_(file), node_(node), path_(std::move(path)) {}
+
+  Reader child(const std::string& key) const {
+    return Reader(file_, node_.at(key), path_ + "." + key);
+  }
+  Reader element(size_t i) const {
+    return Reader(file_, node_.at(i), path_ + "[" + std::to_string(i) + "]");
+  }
+  bool has(const std::string& key) const { return node_.is_object() && node_.contains(key); }
+  const json& raw() const { return node_; }
+  const std::string& path() const { return path_; }
+
+  [[noreturn]] void fail(const std::string& problem) const { throw SceneError(file_, path_, problem); }
+
+  void expectObject(std::initializer_list<const char*> allowed) const {
+    if (!node_.is_object()) fail("expected an object");
+    for (auto it = node_.begin(); it != node_.end(); ++it) {
+      bool known = false;
+      for (const char* key : allowed) known = known || it.key() == key;
+      if (!known) {
+        std::string list;
+        for (const char* key : allowed) list += std::string(list.empty() ? "" : ", ") + key;
+        throw SceneError(file_, path_ + "." + it.key(), "unknown key (allowed: " + list + ")");
+      }
+    }
+  }
+  size_t arraySize() const {
+    if (!node_.is_array()) fail("expected an array");
+    return node_.size();
+  }
+  float number(float minimum = -INFINITY, float maximum = INFINITY) const {
+    if (!node_.is_number()) fail("expected a number");
+    const double value = node_.get<double>();
+    if (!std::isfinite(value) || value < minimum || value > maximum)
+      fail("expected a finite number in [" + format(minimum) + ", " + format(maximum) + "], got " +
+           node_.dump());
+    return static_cast<float>(value);
+  }
+  int integer(int minimum, int maximum) const {
+    if (!node_.is_number_integer()) fail("expected an integer");
+    const long long value = node_.get<long long>();
+    if (value < minimum || value > maximum)
+      fail("expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
+           "], got " + node_.dump());
+    return static_cast<int>(value);
+  }
+  std::string string() const {
+    if (!node_.is_string()) fail("expected a string");
+    return node_.get<std::string>();
+  }
+  glm::vec3 vec3(float minimum = -1e9f, float maximum = 1e9f) const {
+    if (!node_.is_array() || node_.size() != 3) fail("expected an array of 3 numbers");
+    return {element(0).number(minimum, maximum), element(1).number(minimum, maximum),
+            element(2).number(minimum, maximum)};
+  }
+  float numberOr(const std::string& key, float fallback, float minimum = -INFINITY,
+                 float maximum = INFINITY) const {
+    return has(key) ? child(key).number(minimum, maximum) : fallback;
+  }
+  glm::vec3 vec3Or(const std::string& key, glm::vec3 fallback, float minimum = -1e9f,
+                   float maximum = 1e9f) const {
+    return has(key) ? child(key).vec3(minimum, maximum) : fallback;
+  }
+
+ private:
+  static std::string format(float v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+  }
+  const std::string& file_;
+  const json& node_;
+  std::string path_;
+};
+
+glm::mat4 readTransform(const Reader& r) {
+  r.expectObject({"translate", "rotate_deg", "scale"});
+  glm::mat4 m(1.0f);
+  m = glm::translate(m, r.vec3Or("translate", glm::vec3(0)));
+  const glm::vec3 rotation = glm::radians(r.vec3Or("rotate_deg", glm::vec3(0), -3600, 3600));
+  m = glm::rotate(m, rotation.y, {0, 1, 0});
+  m = glm::rotate(m, rotation.x, {1, 0, 0});
+  m = glm::rotate(m, rotation.z, {0, 0, 1});
+  if (r.has("scale")) {
+    const Reader s = r.child("scale");
+    const glm::vec3 scale = s.raw().is_number() ? glm::vec3(s.number(1e-6f, 1e7f)) : s.vec3(1e-6f, 1e7f);
+    m = glm::scale(m, scale);
+  }
+  return m;
+}
+
+Mesh readGenerator(const Reader& r) {
+  const std::string kind = r.child("type").string();
+  if (kind == "box") {
+    r.expectObject({"type", "size"});
+    return generate::box(r.child("size").vec3(1e-6f, 1e7f));
+  }
+  if (kind == "plane") {
+    r.expectObject({"type", "size"});
+    const glm::vec3 size = r.child("size").vec3(1e-6f, 1e7f);
+    return generate::plane({size.x, size.z});
+  }
+  if (kind == "sphere") {
+    r.expectObject({"type", "radius", "subdivisions"});
+    return generate::sphere(r.child("radius").number(1e-6f, 1e7f),
+                            r.has("subdivisions") ? r.child("subdivisions").integer(1, 32) : 4);
+  }
+  if (kind == "cylinder") {
+    r.expectObject({"type", "radius", "length", "segments"});
+    return generate::cylinder(r.child("radius").number(1e-6f, 1e7f),
+                              r.child("length").number(1e-6f, 1e7f),
+                              r.has("segments") ? r.child("segments").integer(3, 256) : 12);
+  }
+  if (kind == "greebled_hull") {
+    r.expectObject({"type", "size", "greebles", "greeble_min", "greeble_max", "normal_noise", "seed"});
+    generate::GreebledHull p;
+    p.size = r.child("size").vec3(1e-3f, 1e7f);
+    if (r.has("greebles")) p.greebles = r.child("greebles").integer(0, 200000);
+    p.greebleMin = r.numberOr("greeble_min", p.greebleMin, 1e-6f, 1e6f);
+    p.greebleMax = r.numberOr("greeble_max", p.greebleMax, p.greebleMin, 1e6f);
+    p.normalNoise = r.numberOr("normal_noise", p.normalNoise, 0.0f, 1.5f);
+    if (r.has("seed")) p.seed = static_cast<uint32_t>(r.child("seed").integer(0, 1 << 30));
+    return generate::greebledHull(p);
+  }
+  r.child("type").fail("unknown generator '" + kind +
+                       "' (allowed: box, plane, sphere, cylinder, greebled_hull)");
+}
+
+Camera readCamera(const Reader& r) {
+  r.expectObject({"position", "target", "up", "fov_y_deg", "near", "far"});
+  Camera c;
+  c.position = r.child("position").vec3();
+  c.target = r.child("target").vec3();
+  c.up = r.vec3Or("up", c.up);
+  c.fovYDegrees = r.numberOr("fov_y_deg", c.fovYDegrees, 1.0f, 170.0f);
+  c.nearPlane = r.numberOr("near", c.nearPlane, 1e-4f, 1e3f);
+  c.farPlane = r.numberOr("far", c.farPlane, c.nearPlane * 2.0f, 1e7f);
+  if (glm::length(c.target - c.position) <= 0.0f) r.child("target").fail("target equals position");
+  return c;
+}
+
+}  // namespace
+
+SceneError::SceneError(const std::string& file, const std::string& field, const std::string& problem)
+    : std::runtime_error(file + ": " + field + ": " + problem) {}
+
+glm::mat4 Camera::view() const { return glm::lookAt(position, target, up); }
+
+glm::mat4 Camera::projection(int width, int height, glm::vec2 jitterPixels) const {
+  glm::mat4 p = glm::perspective(glm::radians(fovYDegrees), float(width) / float(height), nearPlane,
+                                 farPlane);
+  // A clip-space translation of 2/size per pixel shifts the raster by whole pixels.
+  p[2][0] += 2.0f * jitterPixels.x / float(width);
+  p[2][1] += 2.0f * jitterPixels.y / float(height);
+  return p;
+}
+
+int CameraPath::frameCount() const {
+  if (keys.size() < 2) return 1;
+  return static_cast<int>(std::floor((keys.back().time - keys.front().time) * framesPerSecond)) + 1;
+}
+
+Camera CameraPath::at(const Camera& base, int frame) const {
+  Camera camera = base;
+  if (keys.empty()) return camera;
+  const float t = keys.front().time + frame / framesPerSecond;
+  size_t i = 0;
+  while (i + 1 < keys.size() && keys[i + 1].time <= t) ++i;
+  if (i + 1 >= keys.size()) {
+    camera.position = keys.back().position;
+    camera.target = keys.back().target;
+    return camera;
+  }
+  const float span = keys[i + 1].time - keys[i].time;
+  const float s = span > 0 ? glm::clamp((t - keys[i].time) / span, 0.0f, 1.0f) : 0.0f;
+  const float smooth = s * s * (3.0f - 2.0f * s);  // eases in and out of each key
+  camera.position = glm::mix(keys[i].position, keys[i + 1].position, smooth);
+  camera.target = glm::mix(keys[i].target, keys[i + 1].target, smooth);
+  return camera;
+}
+
+size_t Scene::triangleCount() const {
+  size_t n = 0;
+  for (const Object& o : objects) n += o.mesh.triangleCount();
+  return n;
+}
+
+Scene parseScene(const std::string& jsonText, const std::string& fileName,
+                 const std::string& baseDirectory) {
+  json document;
+  try {
+    document = json::parse(jsonText);
+  } catch (const json::parse_error& e) {
+    throw SceneError(fileName, "(document)", std::string("not valid JSON: ") + e.what());
+  }
+  const Reader root(fileName, document, "$");
+  root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient",
+                     "sky_color", "star_density", "exposure", "shading", "comment"});
+  Scene scene;
+  scene.name = root.has("name") ? root.child("name").string() : fileName;
+  if (!root.has("camera")) root.fail("missing required key 'camera'");
+  scene.camera = readCamera(root.child("camera"));
+  scene.ambient = root.vec3Or("ambient", scene.ambient, 0.0f, 1e4f);
+  scene.skyColor = root.vec3Or("sky_color", scene.skyColor, 0.0f, 1e4f);
+  scene.starDensity = root.numberOr("star_density", scene.starDensity, 0.0f, 10.0f);
+  scene.exposure = root.numberOr("exposure", scene.exposure, 1e-4f, 1e4f);
+  if (root.has("shading")) {
+    const std::string shading = root.child("shading").string();
+    if (shading == "blinn-phong")
+      scene.shading = ShadingModel::BlinnPhong;
+    else if (shading == "ggx")
+      scene.shading = ShadingModel::GGX;
+    else
+      root.child("shading").fail("unknown shading model '" + shading + "' (allowed: blinn-phong, ggx)");
+  }
+
+  if (!root.has("materials")) root.fail("missing required key 'materials'");
+  const Reader materials = root.child("materials");
+  for (size_t i = 0; i < materials.arraySize(); ++i) {
+    const Reader m = materials.element(i);
+    m.expectObject({"name", "albedo", "specular", "gloss", "emissive"});
+    Material material;
+    material.name = m.child("name").string();
+    material.albedo = m.vec3Or("albedo", material.albedo, 0.0f, 1.0f);
+    material.specular = m.vec3Or("specular", material.specular, 0.0f, 1.0f);
+    material.gloss = m.numberOr("gloss", material.gloss, 0.0f, 1.0f);
+    material.emissive = m.vec3Or("emissive", material.emissive, 0.0f, 1e4f);
+    scene.materials.push_back(material);
+  }
+  if (scene.materials.empty()) materials.fail("at least one material is required");
+
+  if (!root.has("objects")) root.fail("missing required key 'objects'");
+  const Reader objects = root.child("objects");
+  for (size_t i = 0; i < objects.arraySize(); ++i) {
+    const Reader o = objects.element(i);
+    o.expectObject({"name", "generator", "model", "material", "transform", "repeat"});
+    Object object;
+    object.name = o.has("name") ? o.child("name").string() : "object" + std::to_string(i);
+    if (o.has("generator") == o.has("model")) o.fail("needs exactly one of 'generator' or 'model'");
+    if (o.has("generator")) {
+      object.mesh = readGenerator(o.child("generator"));
+    } else {
+      const std::filesystem::path model = o.child("model").string();
+      const std::string resolved = model.is_absolute() ? model.string() : (std::filesystem::path(baseDirectory) / model).string();
+      try {
+        object.mesh = loadModel(resolved);
+      } catch (const ModelLoadError& e) {
+        o.child("model").fail(e.what());
+      }
+    }
+    const std::string materialName = o.child("material").string();
+    object.material = -1;
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+      if (scene.materials[m].name == materialName) object.material = static_cast<int>(m);
+    if (object.material < 0) o.child("material").fail("no material named '" + materialName + "'");
+    if (o.has("transform")) object.transform = readTransform(o.child("transform"));
+    // "repeat": {"count": n, "offset": [x,y,z]} places n copies, each shifted by offset.
+    int count = 1;
+    glm::vec3 offset(0);
+    if (o.has("repeat")) {
+      const Reader rep = o.child("repeat");
+      rep.expectObject({"count", "offset"});
+      count = rep.child("count").integer(1, 10000);
+      offset = rep.child("offset").vec3();
+    }
+    for (int c = 0; c < count; ++c) {
+      Object copy = object;
+      copy.transform = glm::translate(glm::mat4(1.0f), offset * float(c)) * object.transform;
+      if (count > 1) copy.name += "#" + std::to_string(c);
+      scene.objects.push_back(std::move(copy));
+    }
+  }
+
+  if (root.has("lights")) {
+    const Reader lights = root.child("lights");
+    for (size_t i = 0; i < lights.arraySize(); ++i) {
+      const Reader l = lights.element(i);
+      l.expectObject({"type", "color", "intensity", "position", "end", "direction", "radius"});
+      Light light;
+      const std::string type = l.child("type").string();
+      light.color = l.vec3Or("color", light.color, 0.0f, 1e4f);
+      light.intensity = l.numberOr("intensity", light.intensity, 0.0f, 1e9f);
+      if (type == "directional") {
+        light.type = LightType::Directional;
+        light.direction = l.child("direction").vec3();
+        if (glm::length(light.direction) <= 0.0f) l.child("direction").fail("zero-length direction");
+        light.direction = glm::normalize(light.direction);
+      } else if (type == "point" || type == "tube") {
+        light.type = type == "point" ? LightType::Point : LightType::Tube;
+        light.position = l.child("position").vec3();
+        light.end = light.type == LightType::Tube ? l.child("end").vec3() : light.position;
+        light.radius = l.child("radius").number(1e-4f, 1e7f);
+      } else {
+        l.child("type").fail("unknown light type '" + type + "' (allowed: directional, point, tube)");
+      }
+      scene.lights.push_back(light);
+    }
+  }
+
+  if (root.has("camera_path")) {
+    const Reader p = root.child("camera_path");
+    p.expectObject({"fps", "keys"});
+    scene.path.framesPerSecond = p.numberOr("fps", scene.path.framesPerSecond, 1.0f, 1000.0f);
+    const Reader keys = p.child("keys");
+    for (size_t i = 0; i < keys.arraySize(); ++i) {
+      const Reader k = keys.element(i);
+      k.expectObject({"t", "position", "target"});
+      CameraKey key{k.child("t").number(0.0f, 1e6f), k.child("position").vec3(), k.child("target").vec3()};
+      if (!scene.path.keys.empty() && key.time <= scene.path.keys.back().time)
+        k.child("t").fail("key times must increase");
+      scene.path.keys.push_back(key);
+    }
+  }
+  return scene;
+}
+
+Scene loadScene(const std::string& pathOrDefault) {
+  if (pathOrDefault.empty() || pathOrDefault == "default") {
+    const auto& files = embeddedFiles();
+    return parseScene(files.at("scenes/demo.json"), "default", ".");
+  }
+  std::ifstream in(pathOrDefault);
+  if (!in) throw SceneError(pathOrDefault, "(file)", "cannot open scene file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseScene(text.str(), pathOrDefault,
+                    std::filesystem::path(pathOrDefault).parent_path().string());
+}
+
+}  // namespace host

@@ -1,0 +1,97 @@
+// Scene description for the host engine: JSON files of models (procedural or loaded), materials,
+// lights, camera and a recorded camera path. See docs/scenes.md for the format.
+#pragma once
+
+#include "mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace host {
+
+struct Camera {
+  glm::vec3 position{0, 0, 5};
+  glm::vec3 target{0, 0, 0};
+  glm::vec3 up{0, 1, 0};
+  float fovYDegrees = 50.0f;
+  float nearPlane = 0.1f;   // metres
+  float farPlane = 2.0e6f;  // metres
+
+  glm::mat4 view() const;
+  // `jitterPixels` shifts the image by a sub-pixel offset (ground-truth supersampling).
+  glm::mat4 projection(int width, int height, glm::vec2 jitterPixels = glm::vec2(0)) const;
+};
+
+struct CameraKey {
+  float time = 0;  // seconds
+  glm::vec3 position;
+  glm::vec3 target;
+};
+
+// Played back with a fixed time step, never the wall clock: frame i is at time i / fps.
+struct CameraPath {
+  std::vector<CameraKey> keys;
+  float framesPerSecond = 30.0f;
+  int frameCount() const;
+  Camera at(const Camera& base, int frame) const;
+};
+
+struct Material {
+  std::string name;
+  glm::vec3 albedo{0.5f};
+  glm::vec3 specular{0.04f};
+  float gloss = 0.5f;  // 0 rough … 1 mirror-like
+  glm::vec3 emissive{0.0f};
+};
+
+struct Object {
+  std::string name;
+  Mesh mesh;
+  int material = 0;
+  glm::mat4 transform{1.0f};
+};
+
+enum class LightType { Directional, Point, Tube };
+
+struct Light {
+  LightType type = LightType::Point;
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;
+  glm::vec3 position{0};   // point; tube start
+  glm::vec3 end{0};        // tube end
+  glm::vec3 direction{0, -1, 0};  // directional: the direction light travels
+  float radius = 10.0f;    // point and tube: distance at which the light reaches zero
+};
+
+enum class ShadingModel { BlinnPhong, GGX };
+
+struct Scene {
+  std::string name;
+  Camera camera;
+  CameraPath path;
+  std::vector<Material> materials;
+  std::vector<Object> objects;
+  std::vector<Light> lights;
+  glm::vec3 ambient{0.02f};
+  glm::vec3 skyColor{0.01f, 0.012f, 0.03f};
+  float starDensity = 1.0f;
+  float exposure = 1.0f;
+  ShadingModel shading = ShadingModel::BlinnPhong;
+  size_t triangleCount() const;
+};
+
+// A malformed scene: names the file and the field (JSON pointer-like path) and what was expected.
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(const std::string& file, const std::string& field, const std::string& problem);
+};
+
+// "default" (or "") loads the built-in demo scene of hard cases.
+Scene loadScene(const std::string& pathOrDefault);
+Scene parseScene(const std::string& jsonText, const std::string& fileName,
+                 const std::string& baseDirectory);
+
+}  // namespace host

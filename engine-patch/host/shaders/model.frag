@@ -1,0 +1,24 @@
+#version 450 core
+#include "depth_codec.glsl"
+#include "gbuffer_outputs.glsl"
+in vec3 vViewPosition;
+in vec3 vNormal;
+uniform vec3 uAlbedo;
+uniform vec3 uSpecular;
+uniform float uGloss;
+uniform vec3 uEmissive;
+uniform float uNear;
+uniform float uFar;
+void main() {
+  float d = -vViewPosition.z;
+  vec3 n = normalize(vNormal);
+  if (!gl_FrontFacing) n = -n;
+  outColor = vec4(uAlbedo, 1.0);
+  // x and y divided by depth: raw view-space x reaches 1e6 m, past FP16's range.
+  outPosition = vec4(vViewPosition.xy / d, encodeDepth(d), 1.0);
+  outNormal = vec4(n, uGloss);
+  outSpecular = vec4(uSpecular, 1.0);
+  outEmissive = vec4(uEmissive, 1.0);
+  // Logarithmic depth: D24 keeps ~1e-6 relative precision from the near plane to 1e6 m.
+  gl_FragDepth = log2(max(d, uNear) / uNear) / log2(uFar / uNear);
+}

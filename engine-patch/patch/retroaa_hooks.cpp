@@ -1,0 +1,75 @@
+#include "retroaa_hooks.h"
+
+#include "depth_codec.h"
+
+#include <cstdio>
+
+namespace patch {
+
+retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
+  using retroaa::AttachmentRole;
+  retroaa::GBufferLayout layout;
+  layout.width = targets.width;
+  layout.height = targets.height;
+  layout.attachments = {{AttachmentRole::Albedo, GL_RGBA16F, targets.color},
+                        {AttachmentRole::ViewPosition, GL_RGBA16F, targets.position},
+                        {AttachmentRole::NormalGloss, GL_RGBA16F, targets.normal},
+                        {AttachmentRole::Specular, GL_RGBA8, targets.specular},
+                        {AttachmentRole::Emissive, GL_RGBA16F, targets.emissive}};
+  layout.depthChannel = 2;
+  layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::LogAboveKnee;
+  layout.depthEncoding.knee = host::depth_codec::kKnee;
+  layout.depthEncoding.backgroundAbove = host::depth_codec::kBackgroundThreshold;
+  layout.gbufferFramebuffer = targets.gbufferFramebuffer;
+  layout.depthStencilTexture = targets.depthStencil;
+  layout.lightFramebuffer = targets.lightFramebuffer;
+  layout.displayFramebuffer = targets.displayFramebuffer;
+  layout.displayTexture = targets.displayTexture;
+  return layout;
+}
+
+retroaa::Result<std::unique_ptr<RetroaaHooks>> RetroaaHooks::create(const host::HostTargets& targets,
+                                                                     const retroaa::Config& config) {
+  retroaa::Description description;
+  description.config = config;
+  description.layout = describeHostGBuffer(targets);
+  description.log = [](retroaa::LogLevel, const std::string& message) {
+    std::fprintf(stderr, "retroaa: warning: %s\n", message.c_str());
+  };
+  auto plugin = retroaa::Plugin::create(description);
+  if (!plugin) return plugin.error();
+  auto hooks = std::unique_ptr<RetroaaHooks>(new RetroaaHooks());
+  hooks->plugin_ = std::move(plugin.value());
+  return hooks;
+}
+
+void RetroaaHooks::report(const retroaa::Status& status) {
+  if (status || !lastError_.empty()) return;
+  lastError_ = status.error().message;
+  std::fprintf(stderr, "retroaa: error: %s\n", lastError_.c_str());
+}
+
+// opengl_setup_scene_textures()
+void RetroaaHooks::targetsCreated(const host::HostTargets& targets) {
+  report(plugin_->resize(describeHostGBuffer(targets)));
+}
+
+// gr_opengl_deferred_lighting_begin(): bind the plugin's (MSAA) G-buffer instead of the host's.
+GLuint RetroaaHooks::modelPassFramebuffer(GLuint) { return plugin_->geometryFramebuffer(); }
+
+// gr_opengl_deferred_lighting_msaa(): the depth-aware resolve replaces FSO's.
+void RetroaaHooks::modelPassEnd(const host::FrameView& view) {
+  retroaa::FrameInfo frame;
+  frame.horizontalFovRadians = view.horizontalFovRadians;
+  report(plugin_->resolve(frame));
+}
+
+// gr_opengl_deferred_lighting_finish(): the host's lighting runs through the plugin.
+void RetroaaHooks::lighting(const host::LightingPass& pass, GLuint) {
+  report(plugin_->shade([&pass](retroaa::GLuintHandle target) { pass(target); }));
+}
+
+// gr_opengl_post_process_end(): after tonemapping.
+void RetroaaHooks::postProcess() { report(plugin_->post()); }
+
+}  // namespace patch

@@ -1,0 +1,89 @@
+// retroaa's settings: one plain struct, every field with its default, range and cost to change.
+// The same keys are read from config files (`key=value` lines), the command line, the
+// RETROAA_SETTINGS environment variable and FreeSpace Open's own flags (-msaa, -aa_preset).
+// docs/config.md is the reference, generated from the same table as the parser.
+#pragma once
+
+#include "retroaa/result.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace retroaa {
+
+enum class Method : uint8_t {
+  Off,      // the host's stock single-sample path; the plugin holds nothing (1 lighting eval/pixel)
+  Fxaa,     // Lottes' FXAA after tonemapping (1 eval/pixel)
+  Resolve,  // MSAA G-buffer + depth-aware resolve into the host's G-buffer (1 eval/pixel)
+};
+
+enum class ResolveWeighting : uint8_t {
+  Median,  // Magnussen: samples close (Eq. 1) to the median depth sample; the default
+  Front,   // samples close to the nearest sample
+  Back,    // samples close to the farthest sample (background counts as farthest)
+  Fso,     // what FreeSpace Open ships: smoothstep window around the lower median of view z
+  Mean,    // naive average of all geometry samples: the failure mode, kept for comparison
+};
+
+enum class FxaaQuality : uint8_t {
+  Low,     // FXAA 3.11 preset 10: 3 search steps
+  Medium,  // preset 20: 6 search steps
+  High,    // preset 39: 12 search steps (FreeSpace Open's -aa_preset 2)
+};
+
+struct Config {
+  // Which method runs. Changing it reallocates only what the new method needs.
+  Method method = Method::Off;
+  // MSAA samples of the G-buffer for multi-sample methods: 1, 2, 4, 8 or 16. Clamped to the
+  // context's GL_MAX_SAMPLES with a warning naming both counts. Changing it reallocates.
+  int samples = 4;
+  // How `resolve` weights a pixel's samples. Free to change every frame.
+  ResolveWeighting resolveWeighting = ResolveWeighting::Median;
+  // c of Eq. 1: samples within min(d1,d2)·tan(hfov/width)·c of the reference depth count as one
+  // surface. Range [0, 100]; 0 keeps only the reference sample's depth, larger merges more (and,
+  // past ~20, blends across real depth steps). Free to change every frame.
+  float closeness = 5.0f;
+  // FXAA after tonemapping, stacked on any method (FreeSpace Open users combine -msaa and FXAA).
+  bool fxaa = false;
+  FxaaQuality fxaaQuality = FxaaQuality::High;
+  // FXAA edge threshold relative to local contrast, [0.063, 0.333]; lower finds more edges.
+  float fxaaEdgeThreshold = 0.125f;
+  // A folder whose files replace the built-in shaders of the same relative path (for modders);
+  // a file that does not compile falls back to the built-in one with a warning naming file and line.
+  std::string shaderOverrideDirectory;
+  // Wrap every plugin pass in a GL_TIME_ELAPSED query and read it back at once (waits for the GPU:
+  // for benchmarks and the viewer overlay).
+  bool measureGpuTime = false;
+};
+
+// One settable key, for documentation, parsers and UIs: name, default, allowed values.
+struct ConfigKey {
+  const char* name;
+  const char* defaultValue;
+  const char* allowed;
+  const char* effect;
+};
+const std::vector<ConfigKey>& configKeys();
+
+const char* toString(Method method);
+const char* toString(ResolveWeighting weighting);
+const char* toString(FxaaQuality quality);
+
+// Sets one key; unknown keys and bad values are errors naming the key, the value and what is allowed.
+Status applySetting(Config& config, const std::string& key, const std::string& value);
+// `key=value` lines; '#' starts a comment. Errors name the source and line.
+Status applyConfigText(Config& config, const std::string& text, const std::string& sourceName);
+Status applyConfigFile(Config& config, const std::string& path);
+// Comma- or semicolon-separated key=value pairs, as in RETROAA_SETTINGS.
+Status applySettingsList(Config& config, const std::string& list, const std::string& sourceName);
+// FreeSpace Open's flags: `-msaa 0|4|8|16` (others warn and mean 0; N>0 selects `resolve`) and
+// `-aa_preset 0..6` (0-2 FXAA low/medium/high; 3-6 are SMAA in FSO, which retroaa maps to FXAA high
+// with a warning). `warnings` receives what was adjusted.
+Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
+                    std::vector<std::string>& warnings);
+// Writes a config back as `key=value` lines that applyConfigText reads.
+std::string toConfigText(const Config& config);
+
+}  // namespace retroaa

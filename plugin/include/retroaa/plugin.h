@@ -1,0 +1,139 @@
+// retroaa: retrofit anti-aliasing for OpenGL deferred renderers.
+//
+// Placement in the host's frame (docs/integration.md has the FreeSpace Open call sites):
+//
+//   host G-buffer setup ──► Plugin::create / resize(layout)
+//   bind geometryFramebuffer() ──► host model pass (unchanged shaders)
+//   resolve(frame)          ──► MSAA → host's single-sample G-buffer (or slices)
+//   shade(lighting)         ──► host lighting pass (unchanged shaders), once per slice
+//   host tonemap
+//   post()                  ──► FXAA on the host's display target
+//
+// Rules: a current GL 4.5 core context on the calling thread; every call restores the GL state it
+// changed (bindings, viewport, blend, depth, stencil, program, ...), so a host with a GL state cache
+// is never surprised; destroy the Plugin while its context is current. Two plugins in one process
+// are independent: there is no global state.
+#pragma once
+
+#include "retroaa/config.h"
+#include "retroaa/result.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace retroaa {
+
+using GLuintHandle = unsigned int;  // a GL object name; keeps <GL/gl.h> out of this header
+using GLenumValue = unsigned int;
+
+enum class AttachmentRole : uint8_t {
+  Albedo,        // rgb albedo; averaged
+  ViewPosition,  // view-space position with depth in channel `depthChannel`, encoded per DepthEncoding
+  NormalGloss,   // xyz view-space normal (renormalised after averaging), w gloss (averaged apart)
+  Specular,      // averaged
+  Emissive,      // averaged (the sky lives here for background pixels)
+  Other,         // averaged
+};
+
+// How the host stores view depth in the position attachment (distance in front of the camera, m).
+struct DepthEncoding {
+  enum class Kind : uint8_t {
+    Linear,        // stored = d
+    LogAboveKnee,  // stored = d below `knee`, knee·(1 + log2(d/knee)) above it
+  };
+  Kind kind = Kind::Linear;
+  float knee = 8192.0f;             // metres
+  float backgroundAbove = 65280.0f;  // stored values at or above this mark "no geometry"
+};
+
+struct Attachment {
+  AttachmentRole role = AttachmentRole::Other;
+  GLenumValue internalFormat = 0;  // e.g. GL_RGBA16F; the MSAA copy uses the same
+  GLuintHandle texture = 0;        // the host's single-sample texture
+};
+
+// The host's G-buffer and targets, described by role: retroaa never assumes FSO's exact layout.
+struct GBufferLayout {
+  int width = 0, height = 0;
+  std::vector<Attachment> attachments;  // in draw-buffer order: attachment i is location i
+  int depthChannel = 2;                 // channel of ViewPosition holding encoded depth
+  DepthEncoding depthEncoding;
+  GLuintHandle gbufferFramebuffer = 0;  // the host's single-sample G-buffer (attachments + depth)
+  GLuintHandle depthStencilTexture = 0;  // DEPTH24_STENCIL8
+  uint8_t hostStencilBits = 0x00;       // stencil bits the host owns; retroaa leaves them alone
+  GLuintHandle lightFramebuffer = 0;    // where the host's lighting accumulates (RGBA16F)
+  GLuintHandle displayFramebuffer = 0, displayTexture = 0;  // tonemapped RGBA8, for post()
+};
+
+enum class LogLevel : uint8_t { Info, Warning, Error };
+using LogCallback = std::function<void(LogLevel, const std::string&)>;
+
+struct Description {
+  Config config;
+  GBufferLayout layout;
+  LogCallback log;  // receives every warning (clamps, fallbacks); may be empty
+};
+
+// Per-frame camera facts for the closeness test.
+struct FrameInfo {
+  float horizontalFovRadians = 1.0f;
+};
+
+struct PassTime {
+  std::string name;  // e.g. "resolve", "fxaa"
+  double ms = 0;
+};
+
+struct Stats {
+  Method method = Method::Off;
+  int samples = 1;                    // samples granted (after clamping)
+  uint64_t pixels = 0;                // width × height
+  uint64_t lightingEvaluations = 0;   // pixels lit, summed over lighting calls of the last frame
+  double evaluationsPerPixel() const { return pixels ? double(lightingEvaluations) / pixels : 0; }
+  std::vector<PassTime> passes;       // plugin passes of the last frame (measureGpuTime)
+  uint64_t bytesHeld = 0;             // GPU memory of the plugin's own targets
+  int glObjectsHeld = 0;              // live GL objects owned by the plugin
+};
+
+// The host's lighting pass, rendering into `target` from the host's single-sample G-buffer.
+using LightingFunction = std::function<void(GLuintHandle target)>;
+
+class Plugin {
+ public:
+  // Fails with InvalidConfig, InvalidLayout, UnsupportedContext, IncompleteFramebuffer or ShaderError.
+  // Features the context lacks make the plugin fall back to a method it supports, with a warning.
+  static Result<std::unique_ptr<Plugin>> create(const Description& description);
+  ~Plugin();
+  Plugin(const Plugin&) = delete;
+  Plugin& operator=(const Plugin&) = delete;
+
+  // The framebuffer the host's model pass renders into: the plugin's MSAA G-buffer for
+  // multi-sample methods, the host's own otherwise.
+  GLuintHandle geometryFramebuffer() const;
+  // After the model pass. Errors: WrongCallOrder never; IncompleteFramebuffer after a bad resize.
+  Status resolve(const FrameInfo& frame);
+  // Runs `lighting` once per slice and composites; for single-slice methods, once into the host's
+  // light framebuffer.
+  Status shade(const LightingFunction& lighting);
+  // After the host's tonemap: FXAA (when configured) on the display target.
+  Status post();
+
+  // Applies a new config; reallocates only what the new method needs. Errors: InvalidConfig.
+  Status reconfigure(const Config& config);
+  // The host recreated its targets (window resize). Errors: InvalidLayout, IncompleteFramebuffer.
+  Status resize(const GBufferLayout& layout);
+
+  const Config& config() const;  // as granted (samples clamped, fallbacks applied)
+  Stats stats() const;
+  std::vector<std::string> warnings() const;  // every warning since creation, oldest first
+
+ private:
+  struct Impl;
+  explicit Plugin(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace retroaa

@@ -1,0 +1,229 @@
+#include "retroaa/config.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace retroaa {
+
+namespace {
+
+Error invalid(const std::string& message) { return Error{ErrorCode::InvalidConfig, message}; }
+
+std::string trim(const std::string& s) {
+  const size_t begin = s.find_first_not_of(" \t\r\n");
+  if (begin == std::string::npos) return "";
+  return s.substr(begin, s.find_last_not_of(" \t\r\n") - begin + 1);
+}
+
+template <typename Enum, size_t N>
+Status parseEnum(const std::string& key, const std::string& value, const Enum (&values)[N], Enum& out) {
+  std::string allowed;
+  for (Enum candidate : values) {
+    if (value == toString(candidate)) {
+      out = candidate;
+      return Status::ok();
+    }
+    allowed += std::string(allowed.empty() ? "" : ", ") + toString(candidate);
+  }
+  return invalid("config key '" + key + "': unknown value '" + value + "' (allowed: " + allowed + ")");
+}
+
+Status parseFloat(const std::string& key, const std::string& value, float minimum, float maximum, float& out) {
+  char* end = nullptr;
+  const double parsed = std::strtod(value.c_str(), &end);
+  if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(parsed) || parsed < minimum ||
+      parsed > maximum) {
+    std::ostringstream message;
+    message << "config key '" << key << "': value '" << value << "' is not a number in [" << minimum << ", "
+            << maximum << "]";
+    return invalid(message.str());
+  }
+  out = static_cast<float>(parsed);
+  return Status::ok();
+}
+
+Status parseBool(const std::string& key, const std::string& value, bool& out) {
+  if (value == "on" || value == "true" || value == "1") return out = true, Status::ok();
+  if (value == "off" || value == "false" || value == "0") return out = false, Status::ok();
+  return invalid("config key '" + key + "': value '" + value + "' is not a switch (allowed: on, off)");
+}
+
+constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve};
+constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
+                                            ResolveWeighting::Back, ResolveWeighting::Fso,
+                                            ResolveWeighting::Mean};
+constexpr FxaaQuality kFxaaQualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
+
+struct Setter {
+  ConfigKey key;
+  Status (*apply)(Config&, const std::string& value);
+  std::string (*read)(const Config&);
+};
+
+std::string formatFloat(float v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+const std::vector<Setter>& setters() {
+  static const std::vector<Setter> table = {
+      {{"method", "off", "off, fxaa, resolve", "which AA method runs; changing it reallocates only what it needs"},
+       [](Config& c, const std::string& v) { return parseEnum("method", v, kMethods, c.method); },
+       [](const Config& c) { return std::string(toString(c.method)); }},
+      {{"samples", "4", "1, 2, 4, 8, 16", "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
+       [](Config& c, const std::string& v) -> Status {
+         for (int allowed : {1, 2, 4, 8, 16})
+           if (v == std::to_string(allowed)) return c.samples = allowed, Status::ok();
+         return invalid("config key 'samples': unsupported sample count '" + v + "' (allowed: 1, 2, 4, 8, 16)");
+       },
+       [](const Config& c) { return std::to_string(c.samples); }},
+      {{"resolve_weighting", "median", "median, front, back, fso, mean", "how resolve weights a pixel's samples; free per frame"},
+       [](Config& c, const std::string& v) { return parseEnum("resolve_weighting", v, kWeightings, c.resolveWeighting); },
+       [](const Config& c) { return std::string(toString(c.resolveWeighting)); }},
+      {{"closeness", "5", "0 .. 100", "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"},
+       [](Config& c, const std::string& v) { return parseFloat("closeness", v, 0.0f, 100.0f, c.closeness); },
+       [](const Config& c) { return formatFloat(c.closeness); }},
+      {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
+       [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
+       [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},
+      {{"fxaa_quality", "high", "low, medium, high", "FXAA edge search length (3, 6, 12 steps); cost grows with it"},
+       [](Config& c, const std::string& v) { return parseEnum("fxaa_quality", v, kFxaaQualities, c.fxaaQuality); },
+       [](const Config& c) { return std::string(toString(c.fxaaQuality)); }},
+      {{"fxaa_edge_threshold", "0.125", "0.063 .. 0.333", "FXAA local contrast needed to filter; lower softens more"},
+       [](Config& c, const std::string& v) { return parseFloat("fxaa_edge_threshold", v, 0.063f, 0.333f, c.fxaaEdgeThreshold); },
+       [](const Config& c) { return formatFloat(c.fxaaEdgeThreshold); }},
+      {{"shader_override_dir", "", "a folder", "files there replace built-in shaders of the same path; compile errors fall back"},
+       [](Config& c, const std::string& v) { return c.shaderOverrideDirectory = v, Status::ok(); },
+       [](const Config& c) { return c.shaderOverrideDirectory; }},
+      {{"measure_gpu_time", "off", "on, off", "timer query per plugin pass, read back at once (waits for the GPU)"},
+       [](Config& c, const std::string& v) { return parseBool("measure_gpu_time", v, c.measureGpuTime); },
+       [](const Config& c) { return std::string(c.measureGpuTime ? "on" : "off"); }},
+  };
+  return table;
+}
+
+}  // namespace
+
+const char* toString(Method method) {
+  switch (method) {
+    case Method::Off: return "off";
+    case Method::Fxaa: return "fxaa";
+    case Method::Resolve: return "resolve";
+  }
+  return "?";
+}
+
+const char* toString(ResolveWeighting weighting) {
+  switch (weighting) {
+    case ResolveWeighting::Median: return "median";
+    case ResolveWeighting::Front: return "front";
+    case ResolveWeighting::Back: return "back";
+    case ResolveWeighting::Fso: return "fso";
+    case ResolveWeighting::Mean: return "mean";
+  }
+  return "?";
+}
+
+const char* toString(FxaaQuality quality) {
+  switch (quality) {
+    case FxaaQuality::Low: return "low";
+    case FxaaQuality::Medium: return "medium";
+    case FxaaQuality::High: return "high";
+  }
+  return "?";
+}
+
+const std::vector<ConfigKey>& configKeys() {
+  static const std::vector<ConfigKey> keys = [] {
+    std::vector<ConfigKey> out;
+    for (const Setter& s : setters()) out.push_back(s.key);
+    return out;
+  }();
+  return keys;
+}
+
+Status applySetting(Config& config, const std::string& key, const std::string& value) {
+  std::string known;
+  for (const Setter& s : setters()) {
+    if (key == s.key.name) return s.apply(config, trim(value));
+    known += std::string(known.empty() ? "" : ", ") + s.key.name;
+  }
+  return invalid("unknown config key '" + key + "' (known keys: " + known + ")");
+}
+
+Status applyConfigText(Config& config, const std::string& text, const std::string& sourceName) {
+  Config updated = config;  // a bad line leaves the caller's config untouched
+  std::istringstream in(text);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    const std::string content = trim(line.substr(0, line.find('#')));
+    if (content.empty()) continue;
+    const size_t equals = content.find('=');
+    if (equals == std::string::npos)
+      return invalid(sourceName + ":" + std::to_string(number) + ": expected 'key=value', got '" + content + "'");
+    const Status status = applySetting(updated, trim(content.substr(0, equals)), content.substr(equals + 1));
+    if (!status) return invalid(sourceName + ":" + std::to_string(number) + ": " + status.error().message);
+  }
+  config = updated;
+  return Status::ok();
+}
+
+Status applyConfigFile(Config& config, const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return invalid(path + ": cannot open config file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return applyConfigText(config, text.str(), path);
+}
+
+Status applySettingsList(Config& config, const std::string& list, const std::string& sourceName) {
+  std::string lines = list;
+  for (char& c : lines)
+    if (c == ',' || c == ';') c = '\n';
+  return applyConfigText(config, lines, sourceName);
+}
+
+Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
+                    std::vector<std::string>& warnings) {
+  char* end = nullptr;
+  const long n = std::strtol(value.c_str(), &end, 10);
+  const bool isInteger = !value.empty() && end == value.c_str() + value.size();
+  if (flag == "-msaa") {
+    if (!isInteger) return invalid("-msaa: value '" + value + "' is not an integer (allowed: 0, 4, 8, 16)");
+    if (n != 0 && n != 4 && n != 8 && n != 16) {
+      warnings.push_back("-msaa " + value + " is not one of 0, 4, 8, 16; using 0 as FreeSpace Open does");
+      config.samples = 4;
+      if (config.method == Method::Resolve) config.method = Method::Off;
+      return Status::ok();
+    }
+    if (n == 0) {
+      if (config.method == Method::Resolve) config.method = Method::Off;
+    } else {
+      config.samples = static_cast<int>(n);
+      if (config.method == Method::Fxaa) config.fxaa = true;  // -aa_preset came first: keep FXAA
+      config.method = Method::Resolve;
+    }
+    return Status::ok();
+  }
+  if (flag == "-aa_preset") {
+    if (!isInteger || n < 0 || n > 6) return invalid("-aa_preset: value '" + value + "' is not an integer in 0..6");
+    static const FxaaQuality qualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
+    if (n >= 3) warnings.push_back("-aa_preset " + value + " selects SMAA in FreeSpace Open; retroaa uses FXAA high instead");
+    config.fxaaQuality = n >= 3 ? FxaaQuality::High : qualities[n];
+    if (config.method == Method::Off) config.method = Method::Fxaa;
+    else if (config.method != Method::Fxaa) config.fxaa = true;
+    return Status::ok();
+  }
+  return invalid("unknown FreeSpace Open flag '" + flag + "' (known: -msaa, -aa_preset)");
+}
+
+std::string toConfigText(const Config& config) {
+  std::string out;
+  for (const Setter& s : setters()) out += std::string(s.key.name) + "=" + s.read(config) + "\n";
+  return out;
+}
+
+}  // namespace retroaa

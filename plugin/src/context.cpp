@@ -1,0 +1,91 @@
+#include "context.h"
+
+#include <sstream>
+
+namespace retroaa {
+
+void PluginContext::warn(const std::string& message) {
+  warnings.push_back(message);
+  if (log) log(LogLevel::Warning, message);
+}
+
+void PluginContext::drawFullscreen() const {
+  glBindVertexArray(emptyVertexArray.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+ScopedPass::ScopedPass(PluginContext& context, const char* name) : context_(context), name_(name) {
+  const std::string label = std::string("retroaa.") + name;
+  glPushDebugGroup(GL_DEBUG_SOURCE_THIRD_PARTY, 0, -1, label.c_str());
+  if (context_.config.measureGpuTime && context_.capabilities.timerQuery) {
+    glGenQueries(1, &query_);
+    glBeginQuery(GL_TIME_ELAPSED, query_);
+  }
+}
+
+ScopedPass::~ScopedPass() {
+  if (query_) {
+    glEndQuery(GL_TIME_ELAPSED);
+    GLuint64 nanoseconds = 0;
+    glGetQueryObjectui64v(query_, GL_QUERY_RESULT, &nanoseconds);
+    glDeleteQueries(1, &query_);
+    context_.frameStats.passes.push_back({name_, nanoseconds * 1e-6});
+  }
+  glPopDebugGroup();
+}
+
+Status checkFramebuffer(GLuint framebuffer, const char* label) {
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
+  if (status == GL_FRAMEBUFFER_COMPLETE) return Status::ok();
+  std::ostringstream message;
+  message << "framebuffer '" << label << "' is incomplete (status 0x" << std::hex << status << ")";
+  return Error{ErrorCode::IncompleteFramebuffer, message.str()};
+}
+
+uint64_t bytesPerTexel(GLenum internalFormat) {
+  switch (internalFormat) {
+    case GL_RGBA32F: return 16;
+    case GL_RGBA16F: return 8;
+    case GL_RG16F: return 4;
+    case GL_R32F: return 4;
+    case GL_RGBA8:
+    case GL_SRGB8_ALPHA8:
+    case GL_RGB10_A2:
+    case GL_R11F_G11F_B10F:
+    case GL_DEPTH24_STENCIL8:
+    case GL_DEPTH_COMPONENT32F: return 4;
+    case GL_DEPTH32F_STENCIL8: return 8;
+    case GL_R8: return 1;
+    default: return 16;  // unknown formats: count generously rather than hide memory
+  }
+}
+
+GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, int height, int samples,
+                      const char* label, uint64_t& bytes) {
+  GLuint name = 0;
+  if (samples > 1) {
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);
+    glTextureStorage2DMultisample(name, samples, internalFormat, width, height, GL_TRUE);
+  } else {
+    glCreateTextures(GL_TEXTURE_2D, 1, &name);
+    glTextureStorage2D(name, 1, internalFormat, width, height);
+    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  const std::string fullLabel = std::string("retroaa.") + label;
+  glObjectLabel(GL_TEXTURE, name, -1, fullLabel.c_str());
+  bytes += bytesPerTexel(internalFormat) * uint64_t(width) * uint64_t(height) * uint64_t(samples > 1 ? samples : 1);
+  return GlTexture(context.objects, name);
+}
+
+GlFramebuffer makeFramebuffer(PluginContext& context, const char* label) {
+  GLuint name = 0;
+  glCreateFramebuffers(1, &name);
+  const std::string fullLabel = std::string("retroaa.") + label;
+  glObjectLabel(GL_FRAMEBUFFER, name, -1, fullLabel.c_str());
+  return GlFramebuffer(context.objects, name);
+}
+
+}  // namespace retroaa

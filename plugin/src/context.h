@@ -1,0 +1,58 @@
+// What every pass of one plugin shares: the granted config, the host's layout, the GL objects
+// counter, the shader library, the log and the statistics of the frame in flight.
+#pragma once
+
+#include "gl_resources.h"
+#include "retroaa/plugin.h"
+#include "shader_library.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace retroaa {
+
+struct ContextCapabilities {
+  int maxSamples = 1;          // min of GL_MAX_SAMPLES and the texture sample limits
+  bool timerQuery = false;     // GL_TIME_ELAPSED
+};
+
+struct PluginContext {
+  Config config;  // as granted
+  GBufferLayout layout;
+  ContextCapabilities capabilities;
+  ObjectCounter objects;
+  LogCallback log;
+  std::vector<std::string> warnings;
+  std::unique_ptr<ShaderLibrary> shaders;
+  GlVertexArray emptyVertexArray;  // full-screen passes draw without vertex buffers
+  Stats frameStats;                // of the frame in flight
+
+  void warn(const std::string& message);
+  uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }
+  void drawFullscreen() const;     // one triangle with the empty vertex array bound
+};
+
+// Times one pass into the frame's stats when the config asks for it; labels it for debuggers.
+class ScopedPass {
+ public:
+  ScopedPass(PluginContext& context, const char* name);
+  ~ScopedPass();
+  ScopedPass(const ScopedPass&) = delete;
+  ScopedPass& operator=(const ScopedPass&) = delete;
+
+ private:
+  PluginContext& context_;
+  const char* name_;
+  GLuint query_ = 0;
+};
+
+Status checkFramebuffer(GLuint framebuffer, const char* label);
+
+// A texture with immutable storage; `samples` > 1 makes it GL_TEXTURE_2D_MULTISAMPLE. Adds its size
+// to the frame's bytesHeld accounting through `bytes`.
+GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, int height, int samples,
+                      const char* label, uint64_t& bytes);
+GlFramebuffer makeFramebuffer(PluginContext& context, const char* label);
+
+}  // namespace retroaa

@@ -1,0 +1,70 @@
+// Owning wrappers for the plugin's GL objects. Each one registers with its plugin's ObjectCounter,
+// so a test (and Stats::glObjectsHeld) can prove nothing leaks across resizes and method toggles.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <cstdint>
+#include <utility>
+
+namespace retroaa {
+
+struct ObjectCounter {
+  int live = 0;
+};
+
+enum class GlKind { Texture, Framebuffer, VertexArray, Program, Query, Sampler };
+
+template <GlKind Kind>
+class GlObject {
+ public:
+  GlObject() = default;
+  GlObject(ObjectCounter& counter, GLuint name) : counter_(&counter), name_(name) {
+    if (name_) ++counter_->live;
+  }
+  ~GlObject() { reset(); }
+  GlObject(GlObject&& other) noexcept
+      : counter_(std::exchange(other.counter_, nullptr)), name_(std::exchange(other.name_, 0)) {}
+  GlObject& operator=(GlObject&& other) noexcept {
+    if (this != &other) {
+      reset();
+      counter_ = std::exchange(other.counter_, nullptr);
+      name_ = std::exchange(other.name_, 0);
+    }
+    return *this;
+  }
+  GlObject(const GlObject&) = delete;
+  GlObject& operator=(const GlObject&) = delete;
+
+  void reset() {
+    if (!name_) return;
+    switch (Kind) {
+      case GlKind::Texture: glDeleteTextures(1, &name_); break;
+      case GlKind::Framebuffer: glDeleteFramebuffers(1, &name_); break;
+      case GlKind::VertexArray: glDeleteVertexArrays(1, &name_); break;
+      case GlKind::Program: glDeleteProgram(name_); break;
+      case GlKind::Query: glDeleteQueries(1, &name_); break;
+      case GlKind::Sampler: glDeleteSamplers(1, &name_); break;
+    }
+    --counter_->live;
+    name_ = 0;
+  }
+  GLuint get() const { return name_; }
+  explicit operator bool() const { return name_ != 0; }
+
+ private:
+  ObjectCounter* counter_ = nullptr;
+  GLuint name_ = 0;
+};
+
+using GlTexture = GlObject<GlKind::Texture>;
+using GlFramebuffer = GlObject<GlKind::Framebuffer>;
+using GlVertexArray = GlObject<GlKind::VertexArray>;
+using GlProgram = GlObject<GlKind::Program>;
+using GlQuery = GlObject<GlKind::Query>;
+using GlSampler = GlObject<GlKind::Sampler>;
+
+// Bytes per texel of the formats the plugin allocates (for Stats::bytesHeld).
+uint64_t bytesPerTexel(GLenum internalFormat);
+
+}  // namespace retroaa

@@ -1,0 +1,133 @@
+#include "gl_state.h"
+
+namespace retroaa {
+
+namespace {
+GLint getInt(GLenum name) {
+  GLint value = 0;
+  glGetIntegerv(name, &value);
+  return value;
+}
+void setEnabled(GLenum capability, GLboolean enabled) {
+  if (enabled)
+    glEnable(capability);
+  else
+    glDisable(capability);
+}
+}  // namespace
+
+GlStateSnapshot GlStateSnapshot::capture() {
+  GlStateSnapshot s;
+  s.drawFramebuffer = getInt(GL_DRAW_FRAMEBUFFER_BINDING);
+  s.readFramebuffer = getInt(GL_READ_FRAMEBUFFER_BINDING);
+  s.program = getInt(GL_CURRENT_PROGRAM);
+  s.vertexArray = getInt(GL_VERTEX_ARRAY_BINDING);
+  s.activeTexture = getInt(GL_ACTIVE_TEXTURE);
+  glGetIntegerv(GL_VIEWPORT, s.viewport.data());
+  glGetIntegerv(GL_SCISSOR_BOX, s.scissorBox.data());
+  s.blend = glIsEnabled(GL_BLEND);
+  s.depthTest = glIsEnabled(GL_DEPTH_TEST);
+  s.stencilTest = glIsEnabled(GL_STENCIL_TEST);
+  s.cullFace = glIsEnabled(GL_CULL_FACE);
+  s.scissorTest = glIsEnabled(GL_SCISSOR_TEST);
+  s.multisample = glIsEnabled(GL_MULTISAMPLE);
+  s.sampleShading = glIsEnabled(GL_SAMPLE_SHADING);
+  s.framebufferSrgb = glIsEnabled(GL_FRAMEBUFFER_SRGB);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &s.depthMask);
+  glGetBooleanv(GL_COLOR_WRITEMASK, s.colorMask.data());
+  s.blendSrcRgb = getInt(GL_BLEND_SRC_RGB);
+  s.blendDstRgb = getInt(GL_BLEND_DST_RGB);
+  s.blendSrcAlpha = getInt(GL_BLEND_SRC_ALPHA);
+  s.blendDstAlpha = getInt(GL_BLEND_DST_ALPHA);
+  s.blendEquationRgb = getInt(GL_BLEND_EQUATION_RGB);
+  s.blendEquationAlpha = getInt(GL_BLEND_EQUATION_ALPHA);
+  s.depthFunc = getInt(GL_DEPTH_FUNC);
+  s.cullFaceMode = getInt(GL_CULL_FACE_MODE);
+  s.stencilFunc = getInt(GL_STENCIL_FUNC);
+  s.stencilRef = getInt(GL_STENCIL_REF);
+  s.stencilValueMask = getInt(GL_STENCIL_VALUE_MASK);
+  s.stencilWriteMask = getInt(GL_STENCIL_WRITEMASK);
+  s.stencilFail = getInt(GL_STENCIL_FAIL);
+  s.stencilPassDepthFail = getInt(GL_STENCIL_PASS_DEPTH_FAIL);
+  s.stencilPassDepthPass = getInt(GL_STENCIL_PASS_DEPTH_PASS);
+  s.backStencilFunc = getInt(GL_STENCIL_BACK_FUNC);
+  s.backStencilRef = getInt(GL_STENCIL_BACK_REF);
+  s.backStencilValueMask = getInt(GL_STENCIL_BACK_VALUE_MASK);
+  s.backStencilWriteMask = getInt(GL_STENCIL_BACK_WRITEMASK);
+  s.backStencilFail = getInt(GL_STENCIL_BACK_FAIL);
+  s.backStencilPassDepthFail = getInt(GL_STENCIL_BACK_PASS_DEPTH_FAIL);
+  s.backStencilPassDepthPass = getInt(GL_STENCIL_BACK_PASS_DEPTH_PASS);
+  glGetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &s.minSampleShading);
+  s.textureBindings2D.resize(kUnits);
+  s.textureBindings2DMultisample.resize(kUnits);
+  s.samplerBindings.resize(kUnits);
+  for (int unit = 0; unit < kUnits; ++unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    s.textureBindings2D[unit] = getInt(GL_TEXTURE_BINDING_2D);
+    s.textureBindings2DMultisample[unit] = getInt(GL_TEXTURE_BINDING_2D_MULTISAMPLE);
+    s.samplerBindings[unit] = getInt(GL_SAMPLER_BINDING);
+  }
+  glActiveTexture(s.activeTexture);
+  return s;
+}
+
+void GlStateSnapshot::restore() const {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, drawFramebuffer);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, readFramebuffer);
+  glUseProgram(program);
+  glBindVertexArray(vertexArray);
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
+  setEnabled(GL_BLEND, blend);
+  setEnabled(GL_DEPTH_TEST, depthTest);
+  setEnabled(GL_STENCIL_TEST, stencilTest);
+  setEnabled(GL_CULL_FACE, cullFace);
+  setEnabled(GL_SCISSOR_TEST, scissorTest);
+  setEnabled(GL_MULTISAMPLE, multisample);
+  setEnabled(GL_SAMPLE_SHADING, sampleShading);
+  setEnabled(GL_FRAMEBUFFER_SRGB, framebufferSrgb);
+  glDepthMask(depthMask);
+  glColorMask(colorMask[0], colorMask[1], colorMask[2], colorMask[3]);
+  glBlendFuncSeparate(blendSrcRgb, blendDstRgb, blendSrcAlpha, blendDstAlpha);
+  glBlendEquationSeparate(blendEquationRgb, blendEquationAlpha);
+  glDepthFunc(depthFunc);
+  glCullFace(cullFaceMode);
+  glStencilFuncSeparate(GL_FRONT, stencilFunc, stencilRef, stencilValueMask);
+  glStencilMaskSeparate(GL_FRONT, stencilWriteMask);
+  glStencilOpSeparate(GL_FRONT, stencilFail, stencilPassDepthFail, stencilPassDepthPass);
+  glStencilFuncSeparate(GL_BACK, backStencilFunc, backStencilRef, backStencilValueMask);
+  glStencilMaskSeparate(GL_BACK, backStencilWriteMask);
+  glStencilOpSeparate(GL_BACK, backStencilFail, backStencilPassDepthFail, backStencilPassDepthPass);
+  glMinSampleShading(minSampleShading);
+  for (int unit = 0; unit < kUnits; ++unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, textureBindings2D[unit]);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, textureBindings2DMultisample[unit]);
+    glBindSampler(unit, samplerBindings[unit]);
+  }
+  glActiveTexture(activeTexture);
+}
+
+bool GlStateSnapshot::operator==(const GlStateSnapshot& o) const {
+  return drawFramebuffer == o.drawFramebuffer && readFramebuffer == o.readFramebuffer && program == o.program &&
+         vertexArray == o.vertexArray && activeTexture == o.activeTexture && viewport == o.viewport &&
+         scissorBox == o.scissorBox && blend == o.blend && depthTest == o.depthTest &&
+         stencilTest == o.stencilTest && cullFace == o.cullFace && scissorTest == o.scissorTest &&
+         multisample == o.multisample && sampleShading == o.sampleShading &&
+         framebufferSrgb == o.framebufferSrgb && depthMask == o.depthMask && colorMask == o.colorMask &&
+         blendSrcRgb == o.blendSrcRgb && blendDstRgb == o.blendDstRgb && blendSrcAlpha == o.blendSrcAlpha &&
+         blendDstAlpha == o.blendDstAlpha && blendEquationRgb == o.blendEquationRgb &&
+         blendEquationAlpha == o.blendEquationAlpha && depthFunc == o.depthFunc &&
+         cullFaceMode == o.cullFaceMode && stencilFunc == o.stencilFunc && stencilRef == o.stencilRef &&
+         stencilValueMask == o.stencilValueMask && stencilWriteMask == o.stencilWriteMask &&
+         stencilFail == o.stencilFail && stencilPassDepthFail == o.stencilPassDepthFail &&
+         stencilPassDepthPass == o.stencilPassDepthPass && backStencilFunc == o.backStencilFunc &&
+         backStencilRef == o.backStencilRef && backStencilValueMask == o.backStencilValueMask &&
+         backStencilWriteMask == o.backStencilWriteMask && backStencilFail == o.backStencilFail &&
+         backStencilPassDepthFail == o.backStencilPassDepthFail &&
+         backStencilPassDepthPass == o.backStencilPassDepthPass && minSampleShading == o.minSampleShading &&
+         textureBindings2D == o.textureBindings2D && textureBindings2DMultisample == o.textureBindings2DMultisample &&
+         samplerBindings == o.samplerBindings;
+}
+
+}  // namespace retroaa

@@ -1,0 +1,46 @@
+// Snapshot and restore of every piece of GL state a plugin pass may change. The plugin lives inside
+// someone else's renderer (FreeSpace Open keeps a GL state cache): each public call restores all of
+// it on return.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <array>
+#include <vector>
+
+namespace retroaa {
+
+struct GlStateSnapshot {
+  GLint drawFramebuffer = 0, readFramebuffer = 0, program = 0, vertexArray = 0, activeTexture = 0;
+  std::array<GLint, 4> viewport{}, scissorBox{};
+  GLboolean blend = 0, depthTest = 0, stencilTest = 0, cullFace = 0, scissorTest = 0, multisample = 0,
+            sampleShading = 0, framebufferSrgb = 0, depthMask = 0;
+  std::array<GLboolean, 4> colorMask{};
+  GLint blendSrcRgb = 0, blendDstRgb = 0, blendSrcAlpha = 0, blendDstAlpha = 0, blendEquationRgb = 0,
+        blendEquationAlpha = 0, depthFunc = 0, cullFaceMode = 0;
+  GLint stencilFunc = 0, stencilRef = 0, stencilValueMask = 0, stencilWriteMask = 0, stencilFail = 0,
+        stencilPassDepthFail = 0, stencilPassDepthPass = 0;
+  GLint backStencilFunc = 0, backStencilRef = 0, backStencilValueMask = 0, backStencilWriteMask = 0,
+        backStencilFail = 0, backStencilPassDepthFail = 0, backStencilPassDepthPass = 0;
+  GLfloat minSampleShading = 0;
+  std::vector<GLint> textureBindings2D, textureBindings2DMultisample, samplerBindings;  // per unit
+
+  static constexpr int kUnits = 16;
+  static GlStateSnapshot capture();
+  void restore() const;
+  bool operator==(const GlStateSnapshot& other) const;
+};
+
+// Captures on construction, restores on destruction.
+class GlStateGuard {
+ public:
+  GlStateGuard() : saved_(GlStateSnapshot::capture()) {}
+  ~GlStateGuard() { saved_.restore(); }
+  GlStateGuard(const GlStateGuard&) = delete;
+  GlStateGuard& operator=(const GlStateGuard&) = delete;
+
+ private:
+  GlStateSnapshot saved_;
+};
+
+}  // namespace retroaa

@@ -1,0 +1,29 @@
+#include "methods.h"
+
+#include <string>
+
+namespace retroaa {
+
+Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context, int samples) {
+  auto gbuffer = std::make_unique<MsaaGBuffer>();
+  const GBufferLayout& layout = context.layout;
+  gbuffer->samples_ = samples;
+  gbuffer->framebuffer_ = makeFramebuffer(context, "msaa_gbuffer");
+  std::vector<GLenum> drawBuffers;
+  for (size_t i = 0; i < layout.attachments.size(); ++i) {
+    const std::string label = "msaa_gbuffer." + std::to_string(i);
+    gbuffer->attachments_.push_back(makeTexture(context, layout.attachments[i].internalFormat, layout.width,
+                                                layout.height, samples, label.c_str(), gbuffer->bytes_));
+    glNamedFramebufferTexture(gbuffer->framebuffer(), GLenum(GL_COLOR_ATTACHMENT0 + i),
+                              gbuffer->attachments_.back().get(), 0);
+    drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+  }
+  glNamedFramebufferDrawBuffers(gbuffer->framebuffer(), GLsizei(drawBuffers.size()), drawBuffers.data());
+  gbuffer->depthStencil_ = makeTexture(context, GL_DEPTH24_STENCIL8, layout.width, layout.height, samples,
+                                       "msaa_gbuffer.depth_stencil", gbuffer->bytes_);
+  glNamedFramebufferTexture(gbuffer->framebuffer(), GL_DEPTH_STENCIL_ATTACHMENT, gbuffer->depthStencil(), 0);
+  if (Status status = checkFramebuffer(gbuffer->framebuffer(), "msaa_gbuffer"); !status) return status.error();
+  return gbuffer;
+}
+
+}  // namespace retroaa

@@ -1,0 +1,196 @@
+#include "retroaa/plugin.h"
+
+#include "context.h"
+#include "gl_state.h"
+#include "methods/methods.h"
+
+namespace retroaa {
+
+namespace {
+
+bool needsMultisampledGBuffer(Method method) { return method == Method::Resolve; }
+bool needsFxaa(const Config& config) { return config.method == Method::Fxaa || config.fxaa; }
+
+Status validateLayout(const GBufferLayout& layout) {
+  auto invalid = [](const std::string& message) { return Error{ErrorCode::InvalidLayout, message}; };
+  if (layout.width <= 0 || layout.height <= 0)
+    return invalid("layout size " + std::to_string(layout.width) + "x" + std::to_string(layout.height) + " is empty");
+  if (layout.attachments.empty() || layout.attachments.size() > 8)
+    return invalid("layout has " + std::to_string(layout.attachments.size()) + " attachments (allowed: 1..8)");
+  int positions = 0;
+  for (const Attachment& a : layout.attachments) {
+    if (!a.texture || !a.internalFormat) return invalid("an attachment has no texture or no format");
+    positions += a.role == AttachmentRole::ViewPosition;
+  }
+  if (positions != 1) return invalid("layout needs exactly one ViewPosition attachment (has " + std::to_string(positions) + ")");
+  if (layout.depthChannel < 0 || layout.depthChannel > 3) return invalid("depthChannel must be 0..3");
+  if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer ||
+      !layout.displayFramebuffer || !layout.displayTexture)
+    return invalid("layout is missing a host framebuffer or texture (gbuffer, depth-stencil, light, display)");
+  return Status::ok();
+}
+
+ContextCapabilities queryCapabilities() {
+  ContextCapabilities caps;
+  GLint samples = 1, colorSamples = 1, depthSamples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &samples);
+  glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &colorSamples);
+  glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depthSamples);
+  caps.maxSamples = std::max(1, std::min({samples, colorSamples, depthSamples}));
+  caps.timerQuery = epoxy_gl_version() >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query");
+  return caps;
+}
+
+}  // namespace
+
+struct Plugin::Impl {
+  PluginContext context;
+  std::unique_ptr<MsaaGBuffer> msaa;
+  std::unique_ptr<ResolvePass> resolvePass;
+  std::unique_ptr<FxaaPass> fxaaPass;
+  bool resolvedThisFrame = false;
+
+  // Grants a requested config against the context: clamps samples (with a warning).
+  Config grant(Config requested) {
+    if (requested.samples > context.capabilities.maxSamples) {
+      context.warn("samples=" + std::to_string(requested.samples) + " requested, the context grants " +
+                   std::to_string(context.capabilities.maxSamples) + " (GL_MAX_SAMPLES); using " +
+                   std::to_string(context.capabilities.maxSamples));
+      requested.samples = context.capabilities.maxSamples;
+    }
+    return requested;
+  }
+
+  // Holds exactly what the configured method needs: frees the rest, creates what is missing.
+  Status allocate(bool rebuildAll) {
+    const Config& config = context.config;
+    if (rebuildAll || !needsMultisampledGBuffer(config.method) || (msaa && msaa->samples() != config.samples)) {
+      resolvePass.reset();
+      msaa.reset();
+    }
+    if (rebuildAll || !needsFxaa(config)) fxaaPass.reset();
+    if (needsMultisampledGBuffer(config.method) && !msaa) {
+      auto created = MsaaGBuffer::create(context, config.samples);
+      if (!created) return created.error();
+      msaa = std::move(created.value());
+    }
+    if (config.method == Method::Resolve && !resolvePass) {
+      auto created = ResolvePass::create(context, *msaa);
+      if (!created) return created.error();
+      resolvePass = std::move(created.value());
+    }
+    if (needsFxaa(config) && !fxaaPass) {
+      auto created = FxaaPass::create(context);
+      if (!created) return created.error();
+      fxaaPass = std::move(created.value());
+    }
+    return Status::ok();
+  }
+
+  uint64_t bytesHeld() const {
+    return (msaa ? msaa->bytes() : 0) + (fxaaPass ? fxaaPass->bytes() : 0);
+  }
+};
+
+Plugin::Plugin(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Plugin::~Plugin() = default;
+
+Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
+  if (epoxy_gl_version() < 45)
+    return Error{ErrorCode::UnsupportedContext, "retroaa needs an OpenGL 4.5 core context, this one is " +
+                                                    std::to_string(epoxy_gl_version() / 10) + "." +
+                                                    std::to_string(epoxy_gl_version() % 10)};
+  if (Status status = validateLayout(description.layout); !status) return status.error();
+  GlStateGuard guard;
+  auto impl = std::make_unique<Impl>();
+  PluginContext& context = impl->context;
+  context.layout = description.layout;
+  context.log = description.log;
+  context.capabilities = queryCapabilities();
+  context.config = impl->grant(description.config);
+  context.shaders = std::make_unique<ShaderLibrary>(context.objects, context.config.shaderOverrideDirectory,
+                                                    [&context](const std::string& m) { context.warn(m); });
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  context.emptyVertexArray = GlVertexArray(context.objects, vao);
+  if (Status status = impl->allocate(true); !status) return status.error();
+  return std::unique_ptr<Plugin>(new Plugin(std::move(impl)));
+}
+
+GLuintHandle Plugin::geometryFramebuffer() const {
+  return impl_->msaa ? impl_->msaa->framebuffer() : impl_->context.layout.gbufferFramebuffer;
+}
+
+Status Plugin::resolve(const FrameInfo& frame) {
+  PluginContext& context = impl_->context;
+  context.frameStats.passes.clear();
+  context.frameStats.lightingEvaluations = 0;
+  impl_->resolvedThisFrame = true;
+  if (!impl_->resolvePass) return Status::ok();
+  GlStateGuard guard;
+  return impl_->resolvePass->run(context, *impl_->msaa, frame);
+}
+
+Status Plugin::shade(const LightingFunction& lighting) {
+  PluginContext& context = impl_->context;
+  if (!impl_->resolvedThisFrame) {
+    context.frameStats.passes.clear();
+    context.frameStats.lightingEvaluations = 0;
+  }
+  impl_->resolvedThisFrame = false;
+  // Every current method lights one slice covering every pixel, in the host's own target.
+  {
+    GlStateGuard guard;
+    lighting(context.layout.lightFramebuffer);
+  }
+  context.frameStats.lightingEvaluations += context.pixelCount();
+  return Status::ok();
+}
+
+Status Plugin::post() {
+  if (!impl_->fxaaPass) return Status::ok();
+  GlStateGuard guard;
+  return impl_->fxaaPass->run(impl_->context);
+}
+
+Status Plugin::reconfigure(const Config& config) {
+  PluginContext& context = impl_->context;
+  GlStateGuard guard;
+  const Config previous = context.config;
+  context.config = impl_->grant(config);
+  const bool rebuild = config.shaderOverrideDirectory != previous.shaderOverrideDirectory ||
+                       config.fxaaQuality != previous.fxaaQuality;
+  if (config.shaderOverrideDirectory != previous.shaderOverrideDirectory)
+    context.shaders = std::make_unique<ShaderLibrary>(context.objects, config.shaderOverrideDirectory,
+                                                      [&context](const std::string& m) { context.warn(m); });
+  Status status = impl_->allocate(rebuild);
+  if (!status) {  // keep the plugin usable: fall back to what worked before
+    context.config = previous;
+    impl_->allocate(true);
+  }
+  return status;
+}
+
+Status Plugin::resize(const GBufferLayout& layout) {
+  if (Status status = validateLayout(layout); !status) return status.error();
+  GlStateGuard guard;
+  impl_->context.layout = layout;
+  return impl_->allocate(true);
+}
+
+const Config& Plugin::config() const { return impl_->context.config; }
+
+Stats Plugin::stats() const {
+  const PluginContext& context = impl_->context;
+  Stats stats = context.frameStats;
+  stats.method = context.config.method;
+  stats.samples = impl_->msaa ? impl_->msaa->samples() : 1;
+  stats.pixels = context.pixelCount();
+  stats.bytesHeld = impl_->bytesHeld();
+  stats.glObjectsHeld = context.objects.live;
+  return stats;
+}
+
+std::vector<std::string> Plugin::warnings() const { return impl_->context.warnings; }
+
+}  // namespace retroaa

@@ -1,0 +1,119 @@
+#include "shader_library.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace retroaa {
+
+const std::map<std::string, std::string>& embeddedFiles();  // generated from shaders/
+
+namespace {
+
+std::string withDefines(const std::string& source, const std::string& defines) {
+  const size_t versionEnd = source.rfind("#version", 0) == 0 ? source.find('\n') : std::string::npos;
+  if (versionEnd == std::string::npos) return defines + source;
+  return source.substr(0, versionEnd + 1) + defines + "#line 2\n" + source.substr(versionEnd + 1);
+}
+
+// Compiles one stage; on failure returns the info log.
+GLuint compile(GLenum stage, const std::string& source, std::string& log) {
+  const GLuint shader = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok) return shader;
+  char buffer[4096] = {};
+  glGetShaderInfoLog(shader, sizeof buffer, nullptr, buffer);
+  log = buffer;
+  glDeleteShader(shader);
+  return 0;
+}
+
+}  // namespace
+
+ShaderLibrary::ShaderLibrary(ObjectCounter& counter, std::string overrideDirectory, Warn warn)
+    : counter_(counter), overrideDirectory_(std::move(overrideDirectory)), warn_(std::move(warn)) {}
+
+Result<std::string> ShaderLibrary::source(const std::string& path, bool allowOverride, bool& fromOverride,
+                                          int depth) const {
+  if (depth > 8) return Error{ErrorCode::ShaderError, "shader includes nest too deep at " + path};
+  std::string text;
+  const std::filesystem::path overridePath = std::filesystem::path(overrideDirectory_) / path;
+  if (allowOverride && !overrideDirectory_.empty() && std::filesystem::is_regular_file(overridePath)) {
+    std::ifstream in(overridePath);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    text = buffer.str();
+    fromOverride = true;
+  } else {
+    const auto& files = embeddedFiles();
+    const auto found = files.find(path);
+    if (found == files.end()) return Error{ErrorCode::ShaderError, "no built-in shader " + path};
+    text = found->second;
+  }
+  std::istringstream in(text);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    const std::string directive = "#include \"";
+    if (line.rfind(directive, 0) == 0) {
+      const size_t close = line.find('"', directive.size());
+      const std::string included = line.substr(directive.size(), close - directive.size());
+      Result<std::string> nested = source(included, allowOverride, fromOverride, depth + 1);
+      if (!nested) return nested.error();
+      out += nested.value();
+    } else {
+      out += line + "\n";
+    }
+  }
+  return out;
+}
+
+Result<GlProgram> ShaderLibrary::link(const std::string& vertexPath, const std::string& fragmentPath,
+                                      const std::string& defines, bool allowOverride, bool& usedOverride) {
+  const std::pair<GLenum, const std::string*> stages[] = {{GL_VERTEX_SHADER, &vertexPath},
+                                                          {GL_FRAGMENT_SHADER, &fragmentPath}};
+  GLuint shaders[2] = {};
+  for (int i = 0; i < 2; ++i) {
+    Result<std::string> text = source(*stages[i].second, allowOverride, usedOverride);
+    std::string log;
+    if (text) shaders[i] = compile(stages[i].first, withDefines(text.value(), defines), log);
+    if (!shaders[i]) {
+      if (i == 1) glDeleteShader(shaders[0]);
+      return Error{ErrorCode::ShaderError,
+                   text ? *stages[i].second + " does not compile: " + log : text.error().message};
+    }
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shaders[0]);
+  glAttachShader(program, shaders[1]);
+  glLinkProgram(program);
+  glDeleteShader(shaders[0]);
+  glDeleteShader(shaders[1]);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    glGetProgramInfoLog(program, sizeof log, nullptr, log);
+    glDeleteProgram(program);
+    return Error{ErrorCode::ShaderError, vertexPath + " + " + fragmentPath + " do not link: " + log};
+  }
+  const std::string label = "retroaa." + fragmentPath;
+  glObjectLabel(GL_PROGRAM, program, -1, label.c_str());
+  return GlProgram(counter_, program);
+}
+
+Result<GlProgram> ShaderLibrary::program(const std::string& vertexPath, const std::string& fragmentPath,
+                                         const std::string& defines) {
+  bool usedOverride = false;
+  Result<GlProgram> program = link(vertexPath, fragmentPath, defines, true, usedOverride);
+  if (program || !usedOverride) return program;
+  warn_("shader override in '" + overrideDirectory_ + "' failed, using the built-in " + fragmentPath +
+        " instead: " + program.error().message);
+  return link(vertexPath, fragmentPath, defines, false, usedOverride);
+}
+
+}  // namespace retroaa
