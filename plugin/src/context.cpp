@@ -1,5 +1,6 @@
 #include "context.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace retroaa {
@@ -63,7 +64,7 @@ uint64_t bytesPerTexel(GLenum internalFormat) {
 GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, int height, int samples,
                       const char* label, uint64_t& bytes) {
   GLuint name = 0;
-  if (samples > 1) {
+  if (samples > 0) {
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);
     glTextureStorage2DMultisample(name, samples, internalFormat, width, height, GL_TRUE);
   } else {
@@ -76,7 +77,10 @@ GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, 
   }
   const std::string fullLabel = std::string("retroaa.") + label;
   glObjectLabel(GL_TEXTURE, name, -1, fullLabel.c_str());
-  bytes += bytesPerTexel(internalFormat) * uint64_t(width) * uint64_t(height) * uint64_t(samples > 1 ? samples : 1);
+  // Count what the driver allocated: llvmpipe, for one, backs 1x and 2x requests with 4 samples.
+  GLint allocated = 1;
+  if (samples > 0) glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_SAMPLES, &allocated);
+  bytes += bytesPerTexel(internalFormat) * uint64_t(width) * uint64_t(height) * uint64_t(std::max(allocated, 1));
   return GlTexture(context.objects, name);
 }
 

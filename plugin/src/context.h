@@ -49,8 +49,8 @@ class ScopedPass {
 
 Status checkFramebuffer(GLuint framebuffer, const char* label);
 
-// A texture with immutable storage; `samples` > 1 makes it GL_TEXTURE_2D_MULTISAMPLE. Adds its size
-// to the frame's bytesHeld accounting through `bytes`.
+// A texture with immutable storage: GL_TEXTURE_2D for `samples` = 0, GL_TEXTURE_2D_MULTISAMPLE with
+// that many samples otherwise (1 included, so N = 1 runs the same multisample path). Adds its size to `bytes`.
 GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, int height, int samples,
                       const char* label, uint64_t& bytes);
 GlFramebuffer makeFramebuffer(PluginContext& context, const char* label);

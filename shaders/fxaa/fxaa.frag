@@ -15,7 +15,8 @@ uniform float uSubpixel;          // sub-pixel aliasing removal, 0 .. 1
 out vec4 outColour;
 
 float luma(vec2 uv) { return dot(textureLod(uInput, uv, 0.0).rgb, vec3(0.299, 0.587, 0.114)); }
-float lumaAt(vec2 uv, ivec2 offset) { return dot(textureLodOffset(uInput, uv, 0.0, offset).rgb, vec3(0.299, 0.587, 0.114)); }
+// textureLodOffset needs a constant offset, hence a macro rather than a function.
+#define lumaAt(uv, offset) dot(textureLodOffset(uInput, uv, 0.0, offset).rgb, vec3(0.299, 0.587, 0.114))
 
 // Search step lengths (in texels) of the quality presets: short steps first, then longer strides.
 float searchStep(int i) {

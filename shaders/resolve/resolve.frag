@@ -8,12 +8,19 @@
 // together (intra-model aliasing); samples of other surfaces never mix in, so no pixel is lit at a
 // position between two surfaces.
 //
-// The plugin prepends: SAMPLES, ATTACHMENT_COUNT, POSITION_ATTACHMENT, NORMAL_ATTACHMENT (-1 if none),
+// The plugin prepends: SAMPLES, MULTISAMPLED (0 for N = 1: plain textures), ATTACHMENT_COUNT, POSITION_ATTACHMENT, NORMAL_ATTACHMENT (-1 if none),
 // DEPTH_CHANNEL, DEPTH_ENCODING, the outputs out0..outK and STORE_OUTPUTS(values).
 #include "common/depth.glsl"
 
-layout(binding = 0) uniform sampler2DMS uAttachments[ATTACHMENT_COUNT];
-layout(binding = 15) uniform sampler2DMS uDepthBuffer;  // the MSAA depth buffer (encoding-agnostic)
+#if MULTISAMPLED
+#define GBUFFER_SAMPLER sampler2DMS
+#define FETCH(textureName, pixel, s) texelFetch(textureName, pixel, s)
+#else
+#define GBUFFER_SAMPLER sampler2D
+#define FETCH(textureName, pixel, s) texelFetch(textureName, pixel, 0)
+#endif
+layout(binding = 0) uniform GBUFFER_SAMPLER uAttachments[ATTACHMENT_COUNT];
+layout(binding = 15) uniform GBUFFER_SAMPLER uDepthBuffer;  // the MSAA depth buffer (encoding-agnostic)
 
 uniform int uWeighting;          // 0 median, 1 front, 2 back, 3 fso, 4 mean
 uniform float uFootprintTan;     // tan(hfov / width): Eq. 1's pixel footprint per metre
@@ -38,9 +45,9 @@ void main() {
   int order[SAMPLES];       // usable samples sorted near to far
   int usableCount = 0;
   for (int s = 0; s < SAMPLES; ++s) {
-    float stored = texelFetch(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL];
+    float stored = FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL];
     bool finite = true;
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) finite = finite && isFiniteValue(texelFetch(uAttachments[a], pixel, s));
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) finite = finite && isFiniteValue(FETCH(uAttachments[a], pixel, s));
     float d = isBackground(stored) ? kInfinity : decodeDepth(stored);
     usable[s] = finite;
     distance[s] = d > 0.0 ? d : kInfinity;
@@ -96,15 +103,24 @@ void main() {
     weightSum += w;
   }
 
+  int contributors = 0;
+  for (int s = 0; s < SAMPLES; ++s) contributors += weight[s] > 0.0 ? 1 : 0;
+  if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, reference);
+    STORE_OUTPUTS(values);
+    gl_FragDepth = FETCH(uDepthBuffer, pixel, reference).r;
+    return;
+  }
+
   float depthSum = 0.0;
   float depthBuffer = 0.0;
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
   for (int s = 0; s < SAMPLES; ++s) {
     float w = weight[s] / weightSum;
     if (w <= 0.0) continue;
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += w * texelFetch(uAttachments[a], pixel, s);
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += w * FETCH(uAttachments[a], pixel, s);
     if (!referenceIsBackground) depthSum += w * distance[s];
-    if (referenceIsBackground) depthBuffer = max(depthBuffer, texelFetch(uDepthBuffer, pixel, s).r);
+    if (referenceIsBackground) depthBuffer = max(depthBuffer, FETCH(uDepthBuffer, pixel, s).r);
   }
 
   // Depth is averaged in metres and re-encoded: the encoding is not linear above its knee.
@@ -113,7 +129,7 @@ void main() {
   vec3 normal = values[NORMAL_ATTACHMENT].xyz;
   float len = length(normal);
   if (!(len > 1e-4)) {  // opposing or zero-length normals: fall back to the reference's, then the view
-    normal = texelFetch(uAttachments[NORMAL_ATTACHMENT], pixel, reference).xyz;
+    normal = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, reference).xyz;
     len = length(normal);
     if (!(len > 1e-4)) normal = vec3(0.0, 0.0, 1.0), len = 1.0;
   }
@@ -122,5 +138,5 @@ void main() {
   STORE_OUTPUTS(values);
   // The reference sample's depth-buffer value (encoding-agnostic), so forward passes after lighting
   // depth-test against the surface that was lit.
-  gl_FragDepth = referenceIsBackground ? depthBuffer : texelFetch(uDepthBuffer, pixel, reference).r;
+  gl_FragDepth = referenceIsBackground ? depthBuffer : FETCH(uDepthBuffer, pixel, reference).r;
 }

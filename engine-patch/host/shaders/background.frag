@@ -20,12 +20,12 @@ void main() {
   vec3 dir = normalize(uViewToWorld * normalize(view.xyz / view.w));
   vec3 sky = uSkyColor * (0.6 + 0.4 * dir.y);
   // Soft stars (wider than a pixel at test sizes) so the background itself does not alias.
-  const float cells = 150.0;
+  const float cells = 60.0;
   vec3 cell = floor(dir * cells);
-  if (hash(cell) < 0.004 * uStarDensity) {
+  if (hash(cell) < 0.03 * uStarDensity) {
     vec3 centre = (cell + 0.25 + 0.5 * vec3(hash(cell + 1.0), hash(cell + 2.0), hash(cell + 3.0))) / cells;
     float distance = length(dir - normalize(centre));
-    sky += vec3(0.9, 0.9, 1.0) * 4.0 * hash(cell + 4.0) * exp(-distance * distance / (2.0 * 0.0015 * 0.0015));
+    sky += vec3(0.9, 0.9, 1.0) * 4.0 * hash(cell + 4.0) * exp(-distance * distance / (2.0 * 0.0035 * 0.0035));
   }
   outColor = vec4(0.0);
   outPosition = vec4(0.0, 0.0, kBackgroundMarker, 0.0);

@@ -32,7 +32,7 @@ Result<std::unique_ptr<FxaaPass>> FxaaPass::create(PluginContext& context) {
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   pass->linear_ = GlSampler(context.objects, sampler);
-  pass->output_ = makeTexture(context, GL_RGBA8, layout.width, layout.height, 1, "fxaa.output", pass->bytes_);
+  pass->output_ = makeTexture(context, GL_RGBA8, layout.width, layout.height, 0, "fxaa.output", pass->bytes_);
   pass->outputFramebuffer_ = makeFramebuffer(context, "fxaa.output");
   glNamedFramebufferTexture(pass->outputFramebuffer_.get(), GL_COLOR_ATTACHMENT0, pass->output_.get(), 0);
   if (Status status = checkFramebuffer(pass->outputFramebuffer_.get(), "fxaa.output"); !status) return status.error();

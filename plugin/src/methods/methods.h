@@ -7,14 +7,17 @@
 namespace retroaa {
 
 // The multisampled mirror of the host's G-buffer: same attachments and formats, N samples, plus a
-// multisampled depth-stencil. The host's model pass renders into it unchanged.
+// multisampled depth-stencil. The host's model pass renders into it unchanged. N = 1 allocates plain
+// single-sample textures (a "multisample" texture of one sample may rasterise at a corner sample
+// position, or be backed by more samples), so the resolve at N = 1 sees exactly what `off` sees.
 class MsaaGBuffer {
  public:
   static Result<std::unique_ptr<MsaaGBuffer>> create(PluginContext& context, int samples);
   GLuint framebuffer() const { return framebuffer_.get(); }
   GLuint attachment(size_t i) const { return attachments_[i].get(); }
   GLuint depthStencil() const { return depthStencil_.get(); }
-  int samples() const { return samples_; }
+  int samples() const { return samples_; }  // as allocated by the driver (may exceed the request)
+  bool multisampled() const { return samples_ > 1 || multisampledStorage_; }
   uint64_t bytes() const { return bytes_; }
 
  private:
@@ -22,6 +25,7 @@ class MsaaGBuffer {
   GlTexture depthStencil_;
   GlFramebuffer framebuffer_;
   int samples_ = 1;
+  bool multisampledStorage_ = false;
   uint64_t bytes_ = 0;
 };
 

@@ -1,5 +1,6 @@
 #include "methods.h"
 
+#include <algorithm>
 #include <string>
 
 namespace retroaa {
@@ -7,22 +8,29 @@ namespace retroaa {
 Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context, int samples) {
   auto gbuffer = std::make_unique<MsaaGBuffer>();
   const GBufferLayout& layout = context.layout;
-  gbuffer->samples_ = samples;
+  const int storageSamples = samples > 1 ? samples : 0;
   gbuffer->framebuffer_ = makeFramebuffer(context, "msaa_gbuffer");
   std::vector<GLenum> drawBuffers;
   for (size_t i = 0; i < layout.attachments.size(); ++i) {
     const std::string label = "msaa_gbuffer." + std::to_string(i);
     gbuffer->attachments_.push_back(makeTexture(context, layout.attachments[i].internalFormat, layout.width,
-                                                layout.height, samples, label.c_str(), gbuffer->bytes_));
+                                                layout.height, storageSamples, label.c_str(), gbuffer->bytes_));
     glNamedFramebufferTexture(gbuffer->framebuffer(), GLenum(GL_COLOR_ATTACHMENT0 + i),
                               gbuffer->attachments_.back().get(), 0);
     drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
   }
   glNamedFramebufferDrawBuffers(gbuffer->framebuffer(), GLsizei(drawBuffers.size()), drawBuffers.data());
-  gbuffer->depthStencil_ = makeTexture(context, GL_DEPTH24_STENCIL8, layout.width, layout.height, samples,
+  gbuffer->depthStencil_ = makeTexture(context, GL_DEPTH24_STENCIL8, layout.width, layout.height, storageSamples,
                                        "msaa_gbuffer.depth_stencil", gbuffer->bytes_);
   glNamedFramebufferTexture(gbuffer->framebuffer(), GL_DEPTH_STENCIL_ATTACHMENT, gbuffer->depthStencil(), 0);
   if (Status status = checkFramebuffer(gbuffer->framebuffer(), "msaa_gbuffer"); !status) return status.error();
+  GLint allocated = 1;
+  if (storageSamples > 0) glGetTextureLevelParameteriv(gbuffer->depthStencil(), 0, GL_TEXTURE_SAMPLES, &allocated);
+  gbuffer->samples_ = std::max(allocated, 1);
+  gbuffer->multisampledStorage_ = storageSamples > 0;
+  if (gbuffer->samples_ != samples)
+    context.warn("samples=" + std::to_string(samples) + " requested, the driver allocated " +
+                 std::to_string(gbuffer->samples_) + " per pixel; resolving all " + std::to_string(gbuffer->samples_));
   return gbuffer;
 }
 

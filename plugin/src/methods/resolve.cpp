@@ -9,10 +9,11 @@ namespace retroaa {
 namespace {
 
 // The layout-specific part of the resolve shader: sample count, roles and one output per attachment.
-std::string resolveDefines(const GBufferLayout& layout, int samples, int positionIndex, int normalIndex) {
+std::string resolveDefines(const GBufferLayout& layout, const MsaaGBuffer& source, int positionIndex, int normalIndex) {
   const size_t count = layout.attachments.size();
   std::string d;
-  d += "#define SAMPLES " + std::to_string(samples) + "\n";
+  d += "#define SAMPLES " + std::to_string(source.samples()) + "\n";
+  d += "#define MULTISAMPLED " + std::string(source.multisampled() ? "1" : "0") + "\n";
   d += "#define ATTACHMENT_COUNT " + std::to_string(count) + "\n";
   d += "#define POSITION_ATTACHMENT " + std::to_string(positionIndex) + "\n";
   d += "#define NORMAL_ATTACHMENT " + std::to_string(normalIndex) + "\n";
@@ -41,7 +42,7 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   const int position = findRole(layout, AttachmentRole::ViewPosition);
   const int normal = findRole(layout, AttachmentRole::NormalGloss);
   Result<GlProgram> program = context.shaders->program(
-      "common/fullscreen.vert", "resolve/resolve.frag", resolveDefines(layout, source.samples(), position, normal));
+      "common/fullscreen.vert", "resolve/resolve.frag", resolveDefines(layout, source, position, normal));
   if (!program) return program.error();
   pass->program_ = std::move(program.value());
 

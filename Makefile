@@ -1,0 +1,37 @@
+# The README's two commands: `make demo` (every method on the built-in demo scene, speed-vs-error
+# report under out/) and `make test` (every test through CTest). Each installs what it needs first.
+BUILD ?= build
+JOBS ?= $(shell nproc)
+RETROAA = $(BUILD)/engine-patch/retroaa
+
+# Debian 12 packages: toolchain, headless GL (EGL + Mesa's llvmpipe), and the chosen libraries.
+APT_PACKAGES = cmake g++ make pkg-config git \
+  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev libglfw3-dev libglm-dev \
+  libopenimageio-dev openimageio-tools nlohmann-json3-dev libcli11-dev libassimp-dev libgtest-dev
+
+.PHONY: deps build demo test clean
+
+deps:
+	@missing=$$(for p in $(APT_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q "install ok installed" || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:" $$missing; \
+	  if [ "$$(id -u)" != 0 ]; then echo "error: apt-get needs root for:" $$missing; exit 1; fi; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build $(BUILD) -j$(JOBS)
+
+# llvmpipe's thread count is pinned so images are byte-stable from run to run.
+demo: build
+	LP_NUM_THREADS=2 $(RETROAA) bench --scene default --methods all --width 320 --height 240 --gt-samples 16 \
+	  --json out/report.json --csv out/report.csv --report out/report.md --images out/images
+	@echo "report: out/report.md (JSON: out/report.json, CSV: out/report.csv, images: out/images/)"
+
+test: build
+	cd $(BUILD) && LP_NUM_THREADS=2 ctest --output-on-failure -j2
+
+clean:
+	rm -rf $(BUILD) out

@@ -1,0 +1,206 @@
+// The resolve on hand-written multisampled G-buffers: each pixel one hard case (all background,
+// NaN/Inf samples, zero-length and opposing normals, 0.1 m beside 1e6 m, even-N medians, FSO's
+// reference choice). Every sample's attachments are written exactly by a per-sample shader.
+#include "depth_codec.h"
+#include "test_support.h"
+
+#include <cmath>
+#include <limits>
+
+using namespace testing_support;
+namespace codec = host::depth_codec;
+
+namespace {
+
+constexpr int kWidth = 64, kHeight = 48;
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// One sample of the FSO layout: albedo, position, normal+gloss, specular, emissive, depth buffer.
+struct Sample {
+  glm::vec4 attachments[5];
+  glm::vec4 depthBuffer;
+};
+
+Sample background() {
+  return {{glm::vec4(0), glm::vec4(0, 0, codec::kBackgroundMarker, 0), glm::vec4(0), glm::vec4(0), glm::vec4(0.1f, 0.2f, 0.3f, 1)},
+          glm::vec4(1.0f)};
+}
+Sample surface(float depth, glm::vec3 normal = {0, 0, 1}) {
+  return {{glm::vec4(0.5f, 0.5f, 0.5f, 1), glm::vec4(0.01f, -0.02f, codec::encode(depth), 1), glm::vec4(normal, 0.5f),
+           glm::vec4(0.2f, 0.2f, 0.2f, 1), glm::vec4(0, 0, 0, 1)},
+          glm::vec4(std::log2(depth / 0.1f) / std::log2(2e7f))};
+}
+
+const char* kFillShader = R"(#version 450 core
+layout(std430, binding = 0) readonly buffer Samples { vec4 data[]; };
+uniform int uSamples;
+layout(location = 0) out vec4 out0;
+layout(location = 1) out vec4 out1;
+layout(location = 2) out vec4 out2;
+layout(location = 3) out vec4 out3;
+layout(location = 4) out vec4 out4;
+void main() {  // reading gl_SampleID runs this once per sample
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  int base = ((p.y * 64 + p.x) * uSamples + gl_SampleID) * 6;  // 64 = kWidth
+  out0 = data[base]; out1 = data[base + 1]; out2 = data[base + 2]; out3 = data[base + 3]; out4 = data[base + 4];
+  gl_FragDepth = data[base + 5].x;
+})";
+
+class ResolveHardCases : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    context();
+    scene_ = host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
+      "materials": [{"name": "m"}], "objects": []})", "empty", ".");
+    renderer_ = std::make_unique<host::Renderer>(scene_, kWidth, kHeight);
+  }
+
+  // Resolves `pixels` (each a list of samples, at x = 0, 1, ... of row 0) and reads the host G-buffer.
+  void resolve(const std::vector<std::vector<Sample>>& pixels, int samples, retroaa::ResolveWeighting weighting) {
+    retroaa::Config config;
+    config.method = retroaa::Method::Resolve;
+    config.samples = samples;
+    config.resolveWeighting = weighting;
+    auto hooks = patch::RetroaaHooks::create(renderer_->targets(), config);
+    ASSERT_TRUE(hooks) << hooks.error().message;
+    retroaa::Plugin& plugin = hooks.value()->plugin();
+    // The driver may back a request with more samples (llvmpipe: 4 for 1x and 2x); each pixel's list
+    // is then stretched over what was allocated, keeping its proportions.
+    granted_ = plugin.stats().samples;
+    const int n = granted_;
+
+    std::vector<Sample> data(size_t(kWidth) * kHeight * n, background());
+    for (size_t x = 0; x < pixels.size(); ++x)
+      for (int s = 0; s < n; ++s) data[x * n + s] = pixels[x][s * pixels[x].size() / n];
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    glNamedBufferStorage(buffer, data.size() * sizeof(Sample), data.data(), 0);
+    const std::string fragment = kFillShader;
+    const char* vertex = "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
+                         " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
+    const char* fragmentText = fragment.c_str();
+    const GLuint program = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertex);
+    const GLuint fill = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentText);
+    GLint linked = 0;
+    glGetProgramiv(fill, GL_LINK_STATUS, &linked);
+    ASSERT_TRUE(linked);
+    GLuint pipeline = 0, vao = 0;
+    glCreateProgramPipelines(1, &pipeline);
+    glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, program);
+    glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fill);
+    glProgramUniform1i(fill, glGetUniformLocation(fill, "uSamples"), n);
+    glCreateVertexArrays(1, &vao);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, plugin.geometryFramebuffer());
+    glViewport(0, 0, kWidth, kHeight);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glBindProgramPipeline(pipeline);
+    glBindVertexArray(vao);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindProgramPipeline(0);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+
+    retroaa::FrameInfo frame;
+    frame.horizontalFovRadians = 1.0f;
+    ASSERT_TRUE(plugin.resolve(frame));
+    for (int a = 0; a < 5; ++a) {
+      const GLuint textures[] = {renderer_->targets().color, renderer_->targets().position, renderer_->targets().normal,
+                                 renderer_->targets().specular, renderer_->targets().emissive};
+      out_[a].resize(size_t(kWidth) * kHeight);
+      glGetTextureImage(textures[a], 0, GL_RGBA, GL_FLOAT, GLsizei(out_[a].size() * sizeof(glm::vec4)), out_[a].data());
+    }
+    depth_.resize(size_t(kWidth) * kHeight);
+    glGetTextureImage(renderer_->targets().depthStencil, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth_.size() * 4), depth_.data());
+    glDeleteProgramPipelines(1, &pipeline);
+    glDeleteProgram(program);
+    glDeleteProgram(fill);
+    glDeleteVertexArrays(1, &vao);
+    glDeleteBuffers(1, &buffer);
+  }
+
+  glm::vec4 attachment(int a, int x) const { return out_[a][x]; }
+  float depthMetres(int x) const { return codec::decode(out_[1][x].z); }
+  bool isBackground(int x) const { return codec::isBackground(out_[1][x].z); }
+  void expectFinite(int x) const {
+    for (int a = 0; a < 5; ++a)
+      for (int c = 0; c < 4; ++c) EXPECT_TRUE(std::isfinite(out_[a][x][c])) << "pixel " << x << " attachment " << a;
+    EXPECT_TRUE(std::isfinite(depth_[x]));
+  }
+
+  host::Scene scene_;
+  std::unique_ptr<host::Renderer> renderer_;
+  std::vector<glm::vec4> out_[5];
+  std::vector<float> depth_;
+  int granted_ = 0;
+};
+
+}  // namespace
+
+TEST_F(ResolveHardCases, EveryHardCaseGivesAFiniteSensibleResult) {
+  Sample nanNormal = surface(10), infPosition = surface(10), nanAll = surface(10);
+  nanNormal.attachments[2] = glm::vec4(kNaN, 0, 1, 0.5f);
+  infPosition.attachments[1].x = kInf;
+  for (glm::vec4& a : nanAll.attachments) a = glm::vec4(kNaN);
+  const std::vector<std::vector<Sample>> pixels = {
+      /*0 all background*/ {background(), background(), background(), background()},
+      /*1 NaN normal    */ {surface(10), nanNormal, surface(10), surface(10)},
+      /*2 Inf position  */ {surface(10), surface(10), infPosition, surface(10)},
+      /*3 zero normals  */ {surface(5, glm::vec3(0)), surface(5, glm::vec3(0)), surface(5, glm::vec3(0)), surface(5, glm::vec3(0))},
+      /*4 0.1 m & 1e6 m */ {surface(0.1f), surface(0.1f), surface(1e6f), surface(1e6f)},
+      /*5 opposing      */ {surface(10, {0, 0, 1}), surface(10, {0, 0, -1}), surface(10, {0, 0, 1}), surface(10, {0, 0, -1})},
+      /*6 depth step    */ {surface(10), surface(10.001f), surface(20), surface(30)},
+      /*7 silhouette    */ {surface(10), background(), surface(10), background()},
+      /*8 all NaN       */ {nanAll, nanAll, nanAll, nanAll},
+  };
+  resolve(pixels, 4, retroaa::ResolveWeighting::Median);
+  for (int x = 0; x < int(pixels.size()); ++x) expectFinite(x);
+
+  EXPECT_TRUE(isBackground(0));
+  EXPECT_NEAR(attachment(4, 0).b, 0.3f, 1e-3f);  // the sky survives in emissive
+  EXPECT_EQ(depth_[0], 1.0f);
+
+  for (int x : {1, 2}) {
+    EXPECT_NEAR(depthMetres(x), 10.0f, 0.01f) << x;
+    EXPECT_NEAR(glm::length(glm::vec3(attachment(2, x))), 1.0f, 1e-3f) << x;
+  }
+  EXPECT_NEAR(glm::length(glm::vec3(attachment(2, 3))), 1.0f, 1e-3f);  // zero normals: a unit fallback
+  EXPECT_NEAR(depthMetres(4), 0.1f, 1e-4f);  // a real sample's depth, not the 5e5 m mean
+  EXPECT_NEAR(glm::length(glm::vec3(attachment(2, 5))), 1.0f, 1e-3f);  // opposing normals cancel: fallback
+  EXPECT_NEAR(depthMetres(6), 10.0005f, 0.01f);  // 10 and 10.001 merge; 20 and 30 stay out
+  EXPECT_FLOAT_EQ(depth_[6], surface(10.001f).depthBuffer.x);  // reference sample's depth-buffer value
+  EXPECT_FALSE(isBackground(7));  // median of {10, 10, bg, bg} is the nearer middle: the object
+  EXPECT_NEAR(attachment(4, 7).b, 0.0f, 1e-3f);  // no sky mixed into the object's emissive
+  EXPECT_TRUE(isBackground(8));
+}
+
+TEST_F(ResolveHardCases, FsoReferenceIsTheFartherMiddleSample) {
+  resolve({{surface(10), surface(10.001f), surface(20), surface(30)}, {surface(10), background(), surface(10), background()}},
+          4, retroaa::ResolveWeighting::Fso);
+  expectFinite(0);
+  EXPECT_NEAR(depthMetres(0), 20.0f, 0.05f);
+  EXPECT_TRUE(isBackground(1));  // silhouettes become all-object or all-background
+}
+
+TEST_F(ResolveHardCases, EvenSampleCountMedianIsARealSample) {
+  // Half the samples at 10 m, half at 30 m, at every even count the context grants.
+  for (int samples : {2, 4, 8}) {
+    if (samples > context().info().maxSamples) break;
+    std::vector<Sample> pixel;
+    for (int s = 0; s < samples; ++s) pixel.push_back(surface(s < samples / 2 ? 10.0f : 30.0f));
+    resolve({pixel}, samples, retroaa::ResolveWeighting::Median);
+    if (HasFatalFailure()) return;
+    EXPECT_NEAR(depthMetres(0), 10.0f, 0.01f) << samples << " samples requested, " << granted_ << " allocated";
+  }
+}
+
+TEST_F(ResolveHardCases, FrontAndBackPickTheExtremes) {
+  resolve({{surface(10), surface(20), surface(30), surface(40)}}, 4, retroaa::ResolveWeighting::Front);
+  EXPECT_NEAR(depthMetres(0), 10.0f, 0.01f);
+  resolve({{surface(10), surface(20), surface(30), surface(40)}}, 4, retroaa::ResolveWeighting::Back);
+  EXPECT_NEAR(depthMetres(0), 40.0f, 0.05f);
+}

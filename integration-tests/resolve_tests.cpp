@@ -1,0 +1,176 @@
+// The depth-aware resolve and FXAA through the engine patch, on the demo scenes, against ground truth.
+#include "gl_state.h"
+#include "test_support.h"
+
+#include <filesystem>
+#include <fstream>
+
+using namespace testing_support;
+
+namespace {
+int countBrighterThanTruth(const app::DisplayImage& image, const app::DisplayImage& truth, float threshold) {
+  int count = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) count += image.luma(x, y) - truth.luma(x, y) > threshold;
+  return count;
+}
+retroaa::Config withSamples(int samples) {
+  retroaa::Config config;
+  config.samples = samples;
+  return config;
+}
+}  // namespace
+
+TEST(Resolve, OneSampleEqualsOffExactly) {
+  PatchedHost host("default", 160, 120);
+  const app::DisplayImage off = host.render("off");
+  const app::DisplayImage resolved = host.render("resolve", withSamples(1));
+  EXPECT_EQ(host.hooks->plugin().stats().samples, 1);
+  EXPECT_EQ(off.rgb, resolved.rgb);
+}
+
+TEST(Resolve, MedianDoesNotLightSilhouettesFromBehind) {
+  // An orange light sits just behind the hull's left silhouette (the demo scene has the same light).
+  // Averaging the G-buffer samples of hull and wall puts a lit point in mid-air near the light.
+  PatchedHost host(testDataPath("scenes/light_behind_silhouette.json"), 320, 240);
+  const auto truth = app::DisplayImage::fromRgba8(320, 240, host.groundTruth(8).display);
+  const int naive = countBrighterThanTruth(host.render("resolve/mean"), truth, 0.12f);
+  const int median = countBrighterThanTruth(host.render("resolve"), truth, 0.12f);
+  const int off = countBrighterThanTruth(host.render("off"), truth, 0.12f);
+  std::printf("pixels brighter than ground truth by > 0.12: naive mean %d, median %d, off %d\n", naive, median, off);
+  EXPECT_GT(naive, median + 20);
+  EXPECT_LE(median, off + 5);  // the median resolve adds no such pixels over the stock path
+}
+
+TEST(Resolve, ImprovesEdgePsnrOnIntraModelAliasing) {
+  PatchedHost host(testDataPath("scenes/intra_model.json"), 240, 180);
+  const host::GroundTruth gt = host.groundTruth(8);
+  const auto truth = app::DisplayImage::fromRgba8(240, 180, gt.display);
+  const auto edges = app::edgeMaskFromSpread(gt.lumaStdDev);
+  const app::ErrorMetrics off = app::compare(host.render("off"), truth, edges);
+  const app::ErrorMetrics resolved = app::compare(host.render("resolve"), truth, edges);
+  std::printf("intra-model edge PSNR: off %.2f dB, resolve %.2f dB (%d edge pixels)\n", off.edgePsnrDb,
+              resolved.edgePsnrDb, off.edgePixels);
+  EXPECT_GT(resolved.edgePsnrDb, off.edgePsnrDb + 1.0);  // stated margin: 1 dB
+  EXPECT_GT(resolved.ssim, off.ssim);
+}
+
+TEST(Resolve, StackedWithFxaaIsNoWorseThanFxaaAlone) {
+  PatchedHost host("default", 240, 180);
+  const host::GroundTruth gt = host.groundTruth(8);
+  const auto truth = app::DisplayImage::fromRgba8(240, 180, gt.display);
+  const auto edges = app::edgeMaskFromSpread(gt.lumaStdDev);
+  const app::ErrorMetrics fxaa = app::compare(host.render("fxaa"), truth, edges);
+  const app::ErrorMetrics stacked = app::compare(host.render("resolve+fxaa"), truth, edges);
+  const app::ErrorMetrics off = app::compare(host.render("off"), truth, edges);
+  std::printf("edge PSNR: off %.2f, fxaa %.2f, resolve+fxaa %.2f dB\n", off.edgePsnrDb, fxaa.edgePsnrDb, stacked.edgePsnrDb);
+  EXPECT_GT(fxaa.edgePsnrDb, off.edgePsnrDb + 0.5);
+  EXPECT_GE(stacked.edgePsnrDb, fxaa.edgePsnrDb - 0.05);
+}
+
+TEST(Plugin, AllocatesOnlyWhatTheMethodNeeds) {
+  PatchedHost host("default", 64, 48);
+  host.render("off");
+  EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, 0u);
+  EXPECT_EQ(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
+  host.render("fxaa");
+  EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, 64u * 48u * 4u);  // one RGBA8 copy, no MSAA
+  host.render("resolve", withSamples(4));
+  const int samples = host.hooks->plugin().stats().samples;
+  // Five attachments (8+8+8+4+8 bytes) and D24S8 (4 bytes), per sample.
+  EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, uint64_t(64 * 48) * samples * 40u);
+  EXPECT_NE(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
+  EXPECT_EQ(host.hooks->plugin().stats().evaluationsPerPixel(), 1.0);
+}
+
+TEST(Plugin, ClampsSamplesWithAWarningNamingBothCounts) {
+  PatchedHost host("default", 32, 24);
+  host.render("resolve", withSamples(16));
+  const int granted = host.hooks->plugin().stats().samples;
+  EXPECT_EQ(granted, context().info().maxSamples);
+  const auto warnings = host.hooks->plugin().warnings();
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_NE(warnings.back().find("samples=16 requested, the context grants " + std::to_string(granted)), std::string::npos);
+}
+
+TEST(Plugin, Toggling100TimesLeaksNoGlObjectsAndRaisesNoGlError) {
+  PatchedHost host("default", 48, 32);
+  const int errorsBefore = context().debugErrorCount();
+  host.render("off");
+  const int objectsAtStart = host.hooks->plugin().stats().glObjectsHeld;
+  const char* methods[] = {"resolve", "fxaa", "resolve+fxaa", "resolve/fso", "off"};
+  for (int i = 0; i < 100; ++i) {
+    retroaa::Config config;
+    config.samples = (i % 2) ? 2 : 4;
+    config.fxaaQuality = (i % 3) ? retroaa::FxaaQuality::High : retroaa::FxaaQuality::Low;
+    host.render(methods[i % 5], config);
+    if (i % 25 == 0) host.renderer->resize(48 + i % 7, 32 + i % 5);
+  }
+  host.render("off");
+  EXPECT_EQ(host.hooks->plugin().stats().glObjectsHeld, objectsAtStart);
+  EXPECT_EQ(context().debugErrorCount(), errorsBefore);
+  EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();
+}
+
+TEST(Plugin, EveryCallRestoresTheHostsGlState) {
+  PatchedHost host("default", 64, 48);
+  retroaa::Plugin& plugin = host.hooks->plugin();
+  retroaa::Config config;
+  config.method = retroaa::Method::Resolve;
+  config.fxaa = true;
+  ASSERT_TRUE(plugin.reconfigure(config));
+  // Unusual host state, as a state-caching engine might leave it.
+  glViewport(3, 4, 20, 10);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(1, 2, 3, 4);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 3, 0x0F);
+  glDepthFunc(GL_GEQUAL);
+  glBindTextureUnit(0, host.renderer->targets().color);
+  glBindTextureUnit(7, host.renderer->targets().normal);
+  glActiveTexture(GL_TEXTURE5);
+  const retroaa::GlStateSnapshot before = retroaa::GlStateSnapshot::capture();
+  auto expectUnchanged = [&](const char* call) {
+    EXPECT_TRUE(retroaa::GlStateSnapshot::capture() == before) << "GL state changed by " << call;
+  };
+  glBindFramebuffer(GL_FRAMEBUFFER, plugin.geometryFramebuffer());
+  glBindFramebuffer(GL_FRAMEBUFFER, before.drawFramebuffer);
+  retroaa::FrameInfo frame;
+  ASSERT_TRUE(plugin.resolve(frame));
+  expectUnchanged("resolve");
+  ASSERT_TRUE(plugin.shade([](retroaa::GLuintHandle target) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);  // the host's lighting changes state as it likes
+    glDisable(GL_BLEND);
+  }));
+  expectUnchanged("shade");
+  ASSERT_TRUE(plugin.post());
+  expectUnchanged("post");
+  config.method = retroaa::Method::Off;
+  ASSERT_TRUE(plugin.reconfigure(config));
+  expectUnchanged("reconfigure");
+  ASSERT_TRUE(plugin.resize(patch::describeHostGBuffer(host.renderer->targets())));
+  expectUnchanged("resize");
+  before.restore();
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_BLEND);
+  glDepthFunc(GL_LESS);
+}
+
+TEST(Plugin, BrokenShaderOverrideFallsBackToTheBuiltInAndSaysWhere) {
+  const auto dir = std::filesystem::temp_directory_path() / "retroaa_override_test";
+  std::filesystem::create_directories(dir / "resolve");
+  std::ofstream(dir / "resolve" / "resolve.frag") << "#version 450 core\nvoid main() {\n  this is not glsl;\n}\n";
+  PatchedHost host("default", 64, 48);
+  const app::DisplayImage builtIn = host.render("resolve");
+  retroaa::Config config;
+  config.shaderOverrideDirectory = dir.string();
+  const app::DisplayImage overridden = host.render("resolve", config);
+  EXPECT_EQ(builtIn.rgb, overridden.rgb);
+  const auto warnings = host.hooks->plugin().warnings();
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_NE(warnings.back().find("resolve/resolve.frag does not compile"), std::string::npos) << warnings.back();
+  EXPECT_NE(warnings.back().find("0:"), std::string::npos) << "the compiler's line is missing: " << warnings.back();
+}

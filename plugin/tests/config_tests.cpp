@@ -1,0 +1,89 @@
+// Config parsing: every bad input names the key, the value and what is allowed; nothing half-applies.
+#include "retroaa/config.h"
+
+#include <gtest/gtest.h>
+
+using namespace retroaa;
+
+TEST(Config, DefaultsAreDocumentedOnce) {
+  const Config defaults;
+  Config parsed;
+  for (const ConfigKey& key : configKeys())
+    ASSERT_TRUE(applySetting(parsed, key.name, key.defaultValue)) << key.name;
+  EXPECT_EQ(toConfigText(parsed), toConfigText(defaults));
+}
+
+TEST(Config, UnknownKeyNamesKnownKeys) {
+  Config config;
+  const Status status = applySetting(config, "metod", "resolve");
+  ASSERT_FALSE(status);
+  EXPECT_EQ(status.error().code, ErrorCode::InvalidConfig);
+  EXPECT_NE(status.error().message.find("unknown config key 'metod'"), std::string::npos);
+  EXPECT_NE(status.error().message.find("method"), std::string::npos);
+}
+
+TEST(Config, BadValuesNameKeyValueAndAllowedSet) {
+  Config config;
+  Status s = applySetting(config, "method", "taa");
+  EXPECT_NE(s.error().message.find("'method': unknown value 'taa' (allowed: off, fxaa, resolve"), std::string::npos) << s.error().message;
+  s = applySetting(config, "samples", "3");
+  EXPECT_NE(s.error().message.find("unsupported sample count '3' (allowed: 1, 2, 4, 8, 16)"), std::string::npos);
+  s = applySetting(config, "closeness", "1e9");
+  EXPECT_NE(s.error().message.find("'closeness': value '1e9' is not a number in [0, 100]"), std::string::npos);
+  s = applySetting(config, "closeness", "nan");
+  EXPECT_FALSE(s);
+  s = applySetting(config, "fxaa", "maybe");
+  EXPECT_NE(s.error().message.find("(allowed: on, off)"), std::string::npos);
+}
+
+TEST(Config, TextNamesTheLineAndLeavesTheConfigUntouchedOnError) {
+  Config config;
+  config.closeness = 7;
+  const Status s = applyConfigText(config, "# comment\nmethod = resolve\nsamples=5\n", "my.cfg");
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().message.find("my.cfg:3:"), std::string::npos) << s.error().message;
+  EXPECT_EQ(config.method, Method::Off);
+  EXPECT_EQ(config.closeness, 7);
+  EXPECT_NE(applyConfigText(config, "just words", "x.cfg").error().message.find("x.cfg:1: expected 'key=value'"),
+            std::string::npos);
+}
+
+TEST(Config, RoundTripsThroughText) {
+  Config config;
+  ASSERT_TRUE(applySettingsList(config, "method=resolve, samples=2; resolve_weighting=fso,closeness=2.5,fxaa=on", "env"));
+  Config reread;
+  ASSERT_TRUE(applyConfigText(reread, toConfigText(config), "roundtrip"));
+  EXPECT_EQ(toConfigText(reread), toConfigText(config));
+  EXPECT_EQ(reread.resolveWeighting, ResolveWeighting::Fso);
+  EXPECT_EQ(reread.samples, 2);
+  EXPECT_TRUE(reread.fxaa);
+}
+
+TEST(Config, FreeSpaceOpenFlags) {
+  Config config;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(applyFsoFlag(config, "-msaa", "8", warnings));
+  EXPECT_EQ(config.method, Method::Resolve);
+  EXPECT_EQ(config.samples, 8);
+  ASSERT_TRUE(applyFsoFlag(config, "-aa_preset", "1", warnings));
+  EXPECT_TRUE(config.fxaa);
+  EXPECT_EQ(config.fxaaQuality, FxaaQuality::Medium);
+  EXPECT_TRUE(warnings.empty());
+
+  Config other;  // preset first, then msaa: both survive
+  ASSERT_TRUE(applyFsoFlag(other, "-aa_preset", "2", warnings));
+  EXPECT_EQ(other.method, Method::Fxaa);
+  ASSERT_TRUE(applyFsoFlag(other, "-msaa", "4", warnings));
+  EXPECT_EQ(other.method, Method::Resolve);
+  EXPECT_TRUE(other.fxaa);
+
+  ASSERT_TRUE(applyFsoFlag(config, "-msaa", "6", warnings));  // FSO: warn and use 0
+  EXPECT_EQ(config.method, Method::Off);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("-msaa 6"), std::string::npos);
+  ASSERT_TRUE(applyFsoFlag(config, "-aa_preset", "5", warnings));  // SMAA in FSO
+  EXPECT_EQ(warnings.size(), 2u);
+  EXPECT_FALSE(applyFsoFlag(config, "-aa_preset", "9", warnings));
+  EXPECT_FALSE(applyFsoFlag(config, "-msaa", "four", warnings));
+  EXPECT_FALSE(applyFsoFlag(config, "-smaa", "1", warnings));
+}
