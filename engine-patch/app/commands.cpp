@@ -289,4 +289,17 @@ int runBench(const BenchOptions& options) {
   return kExitOk;
 }
 
+std::string configReference(bool markdown) {
+  std::ostringstream out;
+  if (markdown) out << "| key | default | allowed | effect |\n|---|---|---|---|\n";
+  for (const retroaa::ConfigKey& key : retroaa::configKeys()) {
+    const std::string defaultValue = *key.defaultValue ? key.defaultValue : "(empty)";
+    if (markdown)
+      out << "| `" << key.name << "` | `" << defaultValue << "` | " << key.allowed << " | " << key.effect << " |\n";
+    else
+      out << key.name << " = " << defaultValue << "  [" << key.allowed << "]  " << key.effect << "\n";
+  }
+  return out.str();
+}
+
 }  // namespace app

@@ -49,4 +49,7 @@ struct BenchOptions {
 };
 int runBench(const BenchOptions& options);
 
+// Every config key with default, allowed values and effect: plain text, or docs/config.md's table.
+std::string configReference(bool markdown);
+
 }  // namespace app

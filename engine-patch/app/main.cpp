@@ -75,6 +75,10 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--images", bench.imagesDirectory, "write each method's image and error heat map here");
   addConfigOptions(benchCmd);
 
+  bool markdown = false;
+  CLI::App* configCmd = cli.add_subcommand("config", "list every config key with its default, range and effect");
+  configCmd->add_flag("--markdown", markdown, "as the Markdown table of docs/config.md");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -84,6 +88,10 @@ int main(int argc, char** argv) {
   try {
     if (!samples.empty()) sets.insert(sets.begin(), "samples=" + samples);
     const retroaa::Config config = buildConfig(configFile, sets, msaa, aaPreset);
+    if (configCmd->parsed()) {
+      std::printf("%s", app::configReference(markdown).c_str());
+      return app::kExitOk;
+    }
     if (renderCmd->parsed()) {
       render.base = config;
       return app::runRender(render);
