@@ -114,6 +114,7 @@ TEST(Plugin, Toggling100TimesLeaksNoGlObjectsAndRaisesNoGlError) {
 
 TEST(Plugin, EveryCallRestoresTheHostsGlState) {
   PatchedHost host("default", 64, 48);
+  host.render("off");  // leaves one of the host's (live) programs current
   retroaa::Plugin& plugin = host.hooks->plugin();
   retroaa::Config config;
   config.method = retroaa::Method::Resolve;

@@ -72,10 +72,13 @@ GlStateSnapshot GlStateSnapshot::capture() {
 }
 
 void GlStateSnapshot::restore() const {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, drawFramebuffer);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, readFramebuffer);
-  glUseProgram(program);
-  glBindVertexArray(vertexArray);
+  // A host may leave a program (or framebuffer, VAO) current that it already deleted: GL keeps it
+  // alive only while bound, so once a pass unbinds it the name is gone and binding it again would
+  // raise GL_INVALID_VALUE. Such names restore to 0.
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, drawFramebuffer == 0 || glIsFramebuffer(drawFramebuffer) ? drawFramebuffer : 0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, readFramebuffer == 0 || glIsFramebuffer(readFramebuffer) ? readFramebuffer : 0);
+  glUseProgram(program == 0 || glIsProgram(program) ? program : 0);
+  glBindVertexArray(vertexArray == 0 || glIsVertexArray(vertexArray) ? vertexArray : 0);
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
   setEnabled(GL_BLEND, blend);

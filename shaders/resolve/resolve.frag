@@ -8,19 +8,7 @@
 // together (intra-model aliasing); samples of other surfaces never mix in, so no pixel is lit at a
 // position between two surfaces.
 //
-// The plugin prepends: SAMPLES, MULTISAMPLED (0 for N = 1: plain textures), ATTACHMENT_COUNT, POSITION_ATTACHMENT, NORMAL_ATTACHMENT (-1 if none),
-// DEPTH_CHANNEL, DEPTH_ENCODING, the outputs out0..outK and STORE_OUTPUTS(values).
-#include "common/depth.glsl"
-
-#if MULTISAMPLED
-#define GBUFFER_SAMPLER sampler2DMS
-#define FETCH(textureName, pixel, s) texelFetch(textureName, pixel, s)
-#else
-#define GBUFFER_SAMPLER sampler2D
-#define FETCH(textureName, pixel, s) texelFetch(textureName, pixel, 0)
-#endif
-layout(binding = 0) uniform GBUFFER_SAMPLER uAttachments[ATTACHMENT_COUNT];
-layout(binding = 15) uniform GBUFFER_SAMPLER uDepthBuffer;  // the MSAA depth buffer (encoding-agnostic)
+#include "common/gbuffer.glsl"
 
 uniform int uWeighting;          // 0 median, 1 front, 2 back, 3 fso, 4 mean
 uniform float uFootprintTan;     // tan(hfov / width): Eq. 1's pixel footprint per metre
@@ -45,12 +33,8 @@ void main() {
   int order[SAMPLES];       // usable samples sorted near to far
   int usableCount = 0;
   for (int s = 0; s < SAMPLES; ++s) {
-    float stored = FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL];
-    bool finite = true;
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) finite = finite && isFiniteValue(FETCH(uAttachments[a], pixel, s));
-    float d = isBackground(stored) ? kInfinity : decodeDepth(stored);
-    usable[s] = finite;
-    distance[s] = d > 0.0 ? d : kInfinity;
+    usable[s] = sampleIsFinite(pixel, s);
+    distance[s] = sampleDistance(pixel, s);
     if (!usable[s]) continue;
     int i = usableCount++;
     while (i > 0 && distance[order[i - 1]] > distance[s]) {  // insertion sort, N <= 16

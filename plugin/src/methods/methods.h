@@ -18,6 +18,11 @@ class MsaaGBuffer {
   GLuint depthStencil() const { return depthStencil_.get(); }
   int samples() const { return samples_; }  // as allocated by the driver (may exceed the request)
   bool multisampled() const { return samples_ > 1 || multisampledStorage_; }
+  // The #defines shaders reading this G-buffer need (shaders/common/gbuffer.glsl): sample count,
+  // attachment roles, depth encoding, and one output per host attachment with STORE_OUTPUTS(values).
+  std::string shaderDefines(const GBufferLayout& layout) const;
+  // Binds attachment i to texture unit i and the depth-stencil to unit 15.
+  void bind(const GBufferLayout& layout) const;
   uint64_t bytes() const { return bytes_; }
 
  private:
@@ -28,6 +33,8 @@ class MsaaGBuffer {
   bool multisampledStorage_ = false;
   uint64_t bytes_ = 0;
 };
+
+void setDepthEncodingUniforms(GLuint program, const GBufferLayout& layout);
 
 // `resolve`: the depth-aware resolve of Magnussen (and FreeSpace Open's variant) from the MSAA
 // G-buffer into the host's single-sample G-buffer and depth.

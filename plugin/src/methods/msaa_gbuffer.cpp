@@ -34,4 +34,43 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   return gbuffer;
 }
 
+namespace {
+int findRole(const GBufferLayout& layout, AttachmentRole role) {
+  for (size_t i = 0; i < layout.attachments.size(); ++i)
+    if (layout.attachments[i].role == role) return static_cast<int>(i);
+  return -1;
+}
+}  // namespace
+
+std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout) const {
+  const size_t count = layout.attachments.size();
+  std::string d;
+  d += "#define SAMPLES " + std::to_string(samples_) + "\n";
+  d += "#define MULTISAMPLED " + std::string(multisampled() ? "1" : "0") + "\n";
+  d += "#define ATTACHMENT_COUNT " + std::to_string(count) + "\n";
+  d += "#define POSITION_ATTACHMENT " + std::to_string(findRole(layout, AttachmentRole::ViewPosition)) + "\n";
+  d += "#define NORMAL_ATTACHMENT " + std::to_string(findRole(layout, AttachmentRole::NormalGloss)) + "\n";
+  d += "#define ALBEDO_ATTACHMENT " + std::to_string(findRole(layout, AttachmentRole::Albedo)) + "\n";
+  d += "#define SPECULAR_ATTACHMENT " + std::to_string(findRole(layout, AttachmentRole::Specular)) + "\n";
+  d += "#define DEPTH_CHANNEL " + std::to_string(layout.depthChannel) + "\n";
+  d += "#define DEPTH_ENCODING " +
+       std::string(layout.depthEncoding.kind == DepthEncoding::Kind::LogAboveKnee ? "1" : "0") + "\n";
+  std::string store = "#define STORE_OUTPUTS(v)";
+  for (size_t i = 0; i < count; ++i) {
+    d += "layout(location = " + std::to_string(i) + ") out vec4 out" + std::to_string(i) + ";\n";
+    store += " out" + std::to_string(i) + " = v[" + std::to_string(i) + "];";
+  }
+  return d + store + "\n";
+}
+
+void MsaaGBuffer::bind(const GBufferLayout& layout) const {
+  for (size_t i = 0; i < layout.attachments.size(); ++i) glBindTextureUnit(GLuint(i), attachment(i));
+  glBindTextureUnit(15, depthStencil());
+}
+
+void setDepthEncodingUniforms(GLuint program, const GBufferLayout& layout) {
+  glUniform1f(glGetUniformLocation(program, "uDepthKnee"), layout.depthEncoding.knee);
+  glUniform1f(glGetUniformLocation(program, "uBackgroundAbove"), layout.depthEncoding.backgroundAbove);
+}
+
 }  // namespace retroaa

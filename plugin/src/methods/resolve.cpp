@@ -1,48 +1,16 @@
 // `resolve`: MSAA G-buffer → host G-buffer through a depth-aware weighting (shaders/resolve/).
 #include <cmath>
-#include <string>
 
 #include "methods.h"
 
 namespace retroaa {
 
-namespace {
-
-// The layout-specific part of the resolve shader: sample count, roles and one output per attachment.
-std::string resolveDefines(const GBufferLayout& layout, const MsaaGBuffer& source, int positionIndex, int normalIndex) {
-  const size_t count = layout.attachments.size();
-  std::string d;
-  d += "#define SAMPLES " + std::to_string(source.samples()) + "\n";
-  d += "#define MULTISAMPLED " + std::string(source.multisampled() ? "1" : "0") + "\n";
-  d += "#define ATTACHMENT_COUNT " + std::to_string(count) + "\n";
-  d += "#define POSITION_ATTACHMENT " + std::to_string(positionIndex) + "\n";
-  d += "#define NORMAL_ATTACHMENT " + std::to_string(normalIndex) + "\n";
-  d += "#define DEPTH_CHANNEL " + std::to_string(layout.depthChannel) + "\n";
-  d += "#define DEPTH_ENCODING " +
-       std::string(layout.depthEncoding.kind == DepthEncoding::Kind::LogAboveKnee ? "1" : "0") + "\n";
-  std::string store = "#define STORE_OUTPUTS(v)";
-  for (size_t i = 0; i < count; ++i) {
-    d += "layout(location = " + std::to_string(i) + ") out vec4 out" + std::to_string(i) + ";\n";
-    store += " out" + std::to_string(i) + " = v[" + std::to_string(i) + "];";
-  }
-  return d + store + "\n";
-}
-
-int findRole(const GBufferLayout& layout, AttachmentRole role) {
-  for (size_t i = 0; i < layout.attachments.size(); ++i)
-    if (layout.attachments[i].role == role) return static_cast<int>(i);
-  return -1;
-}
-
-}  // namespace
 
 Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context, const MsaaGBuffer& source) {
   auto pass = std::make_unique<ResolvePass>();
   const GBufferLayout& layout = context.layout;
-  const int position = findRole(layout, AttachmentRole::ViewPosition);
-  const int normal = findRole(layout, AttachmentRole::NormalGloss);
-  Result<GlProgram> program = context.shaders->program(
-      "common/fullscreen.vert", "resolve/resolve.frag", resolveDefines(layout, source, position, normal));
+  Result<GlProgram> program =
+      context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag", source.shaderDefines(layout));
   if (!program) return program.error();
   pass->program_ = std::move(program.value());
 
@@ -76,16 +44,14 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
   glUseProgram(program);
-  for (size_t i = 0; i < layout.attachments.size(); ++i) glBindTextureUnit(GLuint(i), source.attachment(i));
-  glBindTextureUnit(15, source.depthStencil());
+  source.bind(layout);
   glUniform1i(glGetUniformLocation(program, "uWeighting"), int(context.config.resolveWeighting));
   glUniform1f(glGetUniformLocation(program, "uFootprintTan"),
               std::tan(frame.horizontalFovRadians / float(layout.width)));
   glUniform1f(glGetUniformLocation(program, "uFsoFootprintTan"),
               std::tan(frame.horizontalFovRadians / float(layout.height)));
   glUniform1f(glGetUniformLocation(program, "uCloseness"), context.config.closeness);
-  glUniform1f(glGetUniformLocation(program, "uDepthKnee"), layout.depthEncoding.knee);
-  glUniform1f(glGetUniformLocation(program, "uBackgroundAbove"), layout.depthEncoding.backgroundAbove);
+  setDepthEncodingUniforms(program, layout);
   context.drawFullscreen();
   return Status::ok();
 }

@@ -1,0 +1,28 @@
+// Access to the plugin's multisampled copy of the host G-buffer. The plugin prepends the layout's
+// #defines (MsaaGBuffer::shaderDefines): SAMPLES, MULTISAMPLED, ATTACHMENT_COUNT, the attachment
+// indices by role, DEPTH_CHANNEL, DEPTH_ENCODING, the outputs out0..outK and STORE_OUTPUTS(values).
+#include "common/depth.glsl"
+
+#if MULTISAMPLED
+#define GBUFFER_SAMPLER sampler2DMS
+#define FETCH(textureName, pixel, s) texelFetch(textureName, pixel, s)
+#else  // N = 1 uses plain textures
+#define GBUFFER_SAMPLER sampler2D
+#define FETCH(textureName, pixel, s) texelFetch(textureName, pixel, 0)
+#endif
+layout(binding = 0) uniform GBUFFER_SAMPLER uAttachments[ATTACHMENT_COUNT];
+layout(binding = 15) uniform GBUFFER_SAMPLER uDepthBuffer;  // the MSAA depth buffer (encoding-agnostic)
+
+// View depth of sample s in metres; +inf for background (and for NaN, which reads as background).
+float sampleDistance(ivec2 pixel, int s) {
+  float stored = FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL];
+  if (isBackground(stored)) return 1.0 / 0.0;
+  float d = decodeDepth(stored);
+  return d > 0.0 ? d : 1.0 / 0.0;
+}
+
+bool sampleIsFinite(ivec2 pixel, int s) {
+  bool finite = true;
+  for (int a = 0; a < ATTACHMENT_COUNT; ++a) finite = finite && isFiniteValue(FETCH(uAttachments[a], pixel, s));
+  return finite;
+}
