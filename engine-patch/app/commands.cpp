@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -69,6 +70,27 @@ double median(std::vector<double> values) {
 
 }  // namespace
 
+std::vector<uint8_t> visualiseCounts(const std::string& view, const std::vector<uint8_t>& countsBottomUp,
+                                     const std::vector<uint8_t>& displayTopDown, int width, int height, int maxCount) {
+  std::vector<uint8_t> out(size_t(width) * height * 4, 255);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const size_t top = size_t(y) * width + x;
+      const int count = countsBottomUp[size_t(height - 1 - y) * width + x];
+      uint8_t* p = &out[top * 4];
+      if (view == "edges") {
+        for (int c = 0; c < 3; ++c) p[c] = uint8_t(displayTopDown[top * 4 + c] * 0.35f);
+        if (count > 1) p[0] = 255, p[1] = 0, p[2] = 255;
+      } else {
+        const float t = maxCount > 1 ? float(count - 1) / float(maxCount - 1) : 0.0f;  // 0 → blue, 1 → red
+        p[0] = uint8_t(255 * std::clamp(2.0f * t - 1.0f, 0.0f, 1.0f));
+        p[1] = uint8_t(255 * (1.0f - std::fabs(2.0f * t - 1.0f)));
+        p[2] = uint8_t(255 * std::clamp(1.0f - 2.0f * t, 0.0f, 1.0f));
+      }
+    }
+  return out;
+}
+
 MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base) {
   MethodSpec out{spec, base};
   std::string rest = spec;
@@ -97,7 +119,7 @@ std::vector<std::string> expandMethodList(const std::string& list) {
   while (std::getline(in, item, ',')) {
     if (item == "all") {
       for (const char* m : {"off", "fxaa", "resolve", "resolve/front", "resolve/back", "resolve/fso",
-                            "resolve/mean", "resolve+fxaa"})
+                            "resolve/mean", "resolve+fxaa", "edge", "per-sample"})
         out.push_back(m);
     } else if (!item.empty()) {
       out.push_back(item);
@@ -126,6 +148,14 @@ int runRender(const RenderOptions& options) {
     radiance = session.renderer->readLight();
   }
   auto meta = metadata(session, options.method);
+  if (!options.show.empty()) {
+    if (options.show != "edges" && options.show != "samples")
+      throw std::invalid_argument("--show must be edges or samples, got '" + options.show + "'");
+    const retroaa::Stats stats = session.hooks->plugin().stats();
+    display = visualiseCounts(options.show, session.hooks->plugin().readSliceCounts(), display, options.width,
+                              options.height, std::max(stats.samples, 1));
+    std::printf("%s: %.3f lighting evaluations per pixel\n", options.show.c_str(), stats.evaluationsPerPixel());
+  }
   if (ext == ".exr")
     writeImageFloat(options.out, options.width, options.height, radiance, meta);
   else
@@ -167,8 +197,16 @@ int runBench(const BenchOptions& options) {
     writeImage8(options.imagesDirectory + "/edge-mask.png", w, h, mask);
   }
 
+  // The per-sample reference at the run's sample count: every row's error against it.
+  retroaa::Config referenceConfig = options.base;
+  referenceConfig.method = retroaa::Method::PerSample;
+  referenceConfig.fxaa = false;
+  session.configure(referenceConfig);
+  session.renderer->renderFrame(camera);
+  const DisplayImage perSampleReference = DisplayImage::fromRgba8(w, h, session.renderer->readDisplay());
+
   nlohmann::json rows = nlohmann::json::array();
-  double offFrameMs = 0;
+  double offFrameMs = 0, perSampleFrameMs = 0;
   for (const MethodSpec& spec : specs) {
     std::fprintf(stderr, "bench: %s\n", spec.name.c_str());
     retroaa::Config config = spec.config;
@@ -193,6 +231,7 @@ int runBench(const BenchOptions& options) {
     const DisplayImage image = DisplayImage::fromRgba8(w, h, display);
     const ErrorMetrics m = compare(image, reference, edges);
     if (spec.name == "off") offFrameMs = median(frameMs);
+    if (spec.name == "per-sample") perSampleFrameMs = median(frameMs);
 
     nlohmann::json passes = {{"model_pass", median(modelMs)}, {"lighting", median(lightingMs)}, {"tonemap_post", median(tonemapMs)}};
     for (const auto& [name, values] : pluginMs) passes["plugin." + name] = median(values);
@@ -209,7 +248,8 @@ int runBench(const BenchOptions& options) {
         {"edge_psnr_db", m.edgePsnrDb},
         {"ssim", m.ssim},
         {"max_abs_error", m.maxAbsError},
-        {"psnr_vs_per_sample_db", nullptr},  // filled once `per-sample` exists in this build
+        {"psnr_vs_per_sample_db", compare(image, perSampleReference, {}).psnrDb},
+        {"slices", stats.slices},
     };
     rows.push_back(row);
     if (!options.imagesDirectory.empty()) {
@@ -219,7 +259,12 @@ int runBench(const BenchOptions& options) {
       writeImage8(options.imagesDirectory + "/" + file + "-error.png", w, h, errorHeatmap(image, reference));
     }
   }
-  for (auto& row : rows) row["time_vs_off"] = offFrameMs > 0 ? nlohmann::json(row["gpu_ms"].get<double>() / offFrameMs) : nlohmann::json(nullptr);
+  // Ratios of times measured in this one run (null where the baseline method was not run).
+  for (auto& row : rows) {
+    const double ms = row["gpu_ms"].get<double>();
+    row["time_vs_off"] = offFrameMs > 0 ? nlohmann::json(ms / offFrameMs) : nlohmann::json(nullptr);
+    row["time_vs_per_sample"] = perSampleFrameMs > 0 ? nlohmann::json(ms / perSampleFrameMs) : nlohmann::json(nullptr);
+  }
 
   nlohmann::json document = {
       {"scene", session.scene.name},
@@ -238,16 +283,24 @@ int runBench(const BenchOptions& options) {
 
   // A table for the terminal, and for the Markdown report.
   std::ostringstream table;
-  table << "| method | samples | evals/px | GPU ms | time vs off | plugin B/px | PSNR dB | edge PSNR dB | SSIM | max err |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|\n";
+  table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | plugin B/px | PSNR dB | edge PSNR dB | "
+           "SSIM | max err | PSNR vs per-sample |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  auto ratio = [](const nlohmann::json& value) {
+    if (value.is_null()) return std::string("-");
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(2) << value.get<double>();
+    return s.str();
+  };
   for (const auto& row : rows) {
     table << std::fixed << "| " << row["method"].get<std::string>() << " | " << row["samples"].get<int>() << " | "
           << std::setprecision(3) << row["evals_per_pixel"].get<double>() << " | " << std::setprecision(2)
           << row["gpu_ms"].get<double>() << " | "
-          << (row["time_vs_off"].is_null() ? std::string("-") : [&] { std::ostringstream s; s << std::fixed << std::setprecision(2) << row["time_vs_off"].get<double>(); return s.str(); }())
-          << " | " << std::setprecision(1) << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
-          << row["psnr_db"].get<double>() << " | " << row["edge_psnr_db"].get<double>() << " | " << std::setprecision(4)
-          << row["ssim"].get<double>() << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " |\n";
+          << ratio(row["time_vs_off"]) << " | " << ratio(row["time_vs_per_sample"]) << " | " << std::setprecision(1)
+          << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2) << row["psnr_db"].get<double>()
+          << " | " << row["edge_psnr_db"].get<double>() << " | " << std::setprecision(4) << row["ssim"].get<double>()
+          << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " | " << std::setprecision(2)
+          << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
   }
   std::printf("%s", table.str().c_str());
   std::printf("renderer: %s\n", session.context.info().summary().c_str());
@@ -259,11 +312,14 @@ int runBench(const BenchOptions& options) {
   if (!options.csv.empty()) {
     ensureParent(options.csv);
     std::ofstream csv(options.csv);
-    csv << "method,samples,evals_per_pixel,gpu_ms,time_vs_off,plugin_bytes_per_pixel,psnr_db,edge_psnr_db,ssim,max_abs_error\n";
+    const char* columns[] = {"method", "samples", "evals_per_pixel", "gpu_ms", "time_vs_off", "time_vs_per_sample",
+                             "plugin_bytes_per_pixel", "psnr_db", "edge_psnr_db", "ssim", "max_abs_error",
+                             "psnr_vs_per_sample_db"};
+    for (const char* column : columns) csv << column << (column == columns[11] ? "\n" : ",");
     for (const auto& row : rows)
-      csv << row["method"].get<std::string>() << "," << row["samples"] << "," << row["evals_per_pixel"] << ","
-          << row["gpu_ms"] << "," << row["time_vs_off"] << "," << row["plugin_bytes_per_pixel"] << "," << row["psnr_db"]
-          << "," << row["edge_psnr_db"] << "," << row["ssim"] << "," << row["max_abs_error"] << "\n";
+      for (const char* column : columns)
+        csv << (row[column].is_string() ? row[column].get<std::string>() : row[column].dump())
+            << (column == columns[11] ? "\n" : ",");
   }
   if (!options.report.empty()) {
     ensureParent(options.report);

@@ -33,7 +33,14 @@ struct RenderOptions {
   int groundTruthSamples = 8;  // per axis, for --method ground-truth and --heatmap
   std::string out;             // .png or .exr (.exr writes linear radiance)
   std::string heatmap;         // optional: error heat map against ground truth
+  std::string show;            // "" (the image), "edges" or "samples": visualise the slice counts
 };
+
+// Visualisations of per-pixel lighting evaluation counts (bottom-up counts, top-down RGBA8 image):
+// "edges" dims the image and marks pixels lit more than once in magenta; "samples" maps the count
+// 1 … maxCount onto a blue → green → red ramp.
+std::vector<uint8_t> visualiseCounts(const std::string& view, const std::vector<uint8_t>& countsBottomUp,
+                                     const std::vector<uint8_t>& displayTopDown, int width, int height, int maxCount);
 int runRender(const RenderOptions& options);
 
 struct BenchOptions {

@@ -5,8 +5,6 @@
 
 namespace host {
 
-const std::map<std::string, std::string>& embeddedFiles();
-
 namespace {
 
 std::string expandIncludes(const std::string& file, int depth = 0) {

@@ -4,12 +4,16 @@
 
 #include <epoxy/gl.h>
 
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace host {
+
+// The host's shaders/ and scenes/ files, embedded at build time, keyed by path ("shaders/model.frag").
+const std::map<std::string, std::string>& embeddedFiles();
 
 // Owns one GL name; `Deleter` is a function like glDeleteTextures(count, names).
 template <void (*Deleter)(GLsizei, const GLuint*)>

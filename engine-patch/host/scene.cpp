@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include "gl_objects.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -9,7 +11,6 @@
 
 namespace host {
 
-const std::map<std::string, std::string>& embeddedFiles();  // generated: scenes/*.json
 
 namespace {
 

@@ -23,6 +23,7 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
   layout.gbufferFramebuffer = targets.gbufferFramebuffer;
   layout.depthStencilTexture = targets.depthStencil;
   layout.lightFramebuffer = targets.lightFramebuffer;
+  layout.lightTexture = targets.lightTexture;
   layout.displayFramebuffer = targets.displayFramebuffer;
   layout.displayTexture = targets.displayTexture;
   return layout;

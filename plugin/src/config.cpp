@@ -50,7 +50,9 @@ Status parseBool(const std::string& key, const std::string& value, bool& out) {
   return invalid("config key '" + key + "': value '" + value + "' is not a switch (allowed: on, off)");
 }
 
-constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve};
+constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve, Method::Edge, Method::PerSample};
+constexpr EdgeDetector kEdgeDetectors[] = {EdgeDetector::Depth,    EdgeDetector::Plane,    EdgeDetector::Normal,
+                                           EdgeDetector::Material, EdgeDetector::Coverage, EdgeDetector::EveryPixel};
 constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
                                             ResolveWeighting::Back, ResolveWeighting::Fso,
                                             ResolveWeighting::Mean};
@@ -70,7 +72,7 @@ std::string formatFloat(float v) {
 
 const std::vector<Setter>& setters() {
   static const std::vector<Setter> table = {
-      {{"method", "off", "off, fxaa, resolve", "which AA method runs; changing it reallocates only what it needs"},
+      {{"method", "off", "off, fxaa, resolve, edge, per-sample", "which AA method runs; changing it reallocates only what it needs"},
        [](Config& c, const std::string& v) { return parseEnum("method", v, kMethods, c.method); },
        [](const Config& c) { return std::string(toString(c.method)); }},
       {{"samples", "4", "1, 2, 4, 8, 16", "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
@@ -86,6 +88,15 @@ const std::vector<Setter>& setters() {
       {{"closeness", "5", "0 .. 100", "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"},
        [](Config& c, const std::string& v) { return parseFloat("closeness", v, 0.0f, 100.0f, c.closeness); },
        [](const Config& c) { return formatFloat(c.closeness); }},
+      {{"edge_detector", "coverage", "depth, plane, normal, material, coverage, every_pixel", "how `edge` finds pixels to light per sample; free per frame"},
+       [](Config& c, const std::string& v) { return parseEnum("edge_detector", v, kEdgeDetectors, c.edgeDetector); },
+       [](const Config& c) { return std::string(toString(c.edgeDetector)); }},
+      {{"edge_depth_closeness", "1", "0 .. 100", "c of the depth detector; smaller marks more pixels (slower, closer to per-sample)"},
+       [](Config& c, const std::string& v) { return parseFloat("edge_depth_closeness", v, 0.0f, 100.0f, c.edgeDepthCloseness); },
+       [](const Config& c) { return formatFloat(c.edgeDepthCloseness); }},
+      {{"edge_normal_angle_deg", "25", "0 .. 180", "angle of the normal detector; smaller marks more pixels"},
+       [](Config& c, const std::string& v) { return parseFloat("edge_normal_angle_deg", v, 0.0f, 180.0f, c.edgeNormalAngleDegrees); },
+       [](const Config& c) { return formatFloat(c.edgeNormalAngleDegrees); }},
       {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
        [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
        [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},
@@ -107,11 +118,15 @@ const std::vector<Setter>& setters() {
 
 }  // namespace
 
+bool usesMsaa(Method method) { return method == Method::Resolve || method == Method::Edge || method == Method::PerSample; }
+
 const char* toString(Method method) {
   switch (method) {
     case Method::Off: return "off";
     case Method::Fxaa: return "fxaa";
     case Method::Resolve: return "resolve";
+    case Method::Edge: return "edge";
+    case Method::PerSample: return "per-sample";
   }
   return "?";
 }
@@ -132,6 +147,18 @@ const char* toString(FxaaQuality quality) {
     case FxaaQuality::Low: return "low";
     case FxaaQuality::Medium: return "medium";
     case FxaaQuality::High: return "high";
+  }
+  return "?";
+}
+
+const char* toString(EdgeDetector detector) {
+  switch (detector) {
+    case EdgeDetector::Depth: return "depth";
+    case EdgeDetector::Plane: return "plane";
+    case EdgeDetector::Normal: return "normal";
+    case EdgeDetector::Material: return "material";
+    case EdgeDetector::Coverage: return "coverage";
+    case EdgeDetector::EveryPixel: return "every_pixel";
   }
   return "?";
 }
@@ -196,15 +223,15 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
     if (n != 0 && n != 4 && n != 8 && n != 16) {
       warnings.push_back("-msaa " + value + " is not one of 0, 4, 8, 16; using 0 as FreeSpace Open does");
       config.samples = 4;
-      if (config.method == Method::Resolve) config.method = Method::Off;
+      if (usesMsaa(config.method)) config.method = Method::Off;
       return Status::ok();
     }
     if (n == 0) {
-      if (config.method == Method::Resolve) config.method = Method::Off;
+      if (usesMsaa(config.method)) config.method = Method::Off;
     } else {
       config.samples = static_cast<int>(n);
       if (config.method == Method::Fxaa) config.fxaa = true;  // -aa_preset came first: keep FXAA
-      config.method = Method::Resolve;
+      if (!usesMsaa(config.method)) config.method = Method::Resolve;  // FSO's MSAA is the resolve
     }
     return Status::ok();
   }

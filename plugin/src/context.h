@@ -15,6 +15,7 @@ namespace retroaa {
 struct ContextCapabilities {
   int maxSamples = 1;          // min of GL_MAX_SAMPLES and the texture sample limits
   bool timerQuery = false;     // GL_TIME_ELAPSED
+  bool stencilExport = false;  // ARB_shader_stencil_export
 };
 
 struct PluginContext {

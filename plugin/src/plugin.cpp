@@ -8,7 +8,11 @@ namespace retroaa {
 
 namespace {
 
-bool needsMultisampledGBuffer(Method method) { return method == Method::Resolve; }
+bool needsMultisampledGBuffer(Method method) { return usesMsaa(method); }
+bool needsSlices(Method method) { return method == Method::Edge || method == Method::PerSample; }
+EdgeDetector detectorFor(const Config& config) {
+  return config.method == Method::PerSample ? EdgeDetector::EveryPixel : config.edgeDetector;
+}
 bool needsFxaa(const Config& config) { return config.method == Method::Fxaa || config.fxaa; }
 
 Status validateLayout(const GBufferLayout& layout) {
@@ -24,20 +28,23 @@ Status validateLayout(const GBufferLayout& layout) {
   }
   if (positions != 1) return invalid("layout needs exactly one ViewPosition attachment (has " + std::to_string(positions) + ")");
   if (layout.depthChannel < 0 || layout.depthChannel > 3) return invalid("depthChannel must be 0..3");
-  if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer ||
+  if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer || !layout.lightTexture ||
       !layout.displayFramebuffer || !layout.displayTexture)
     return invalid("layout is missing a host framebuffer or texture (gbuffer, depth-stencil, light, display)");
   return Status::ok();
 }
 
-ContextCapabilities queryCapabilities() {
+ContextCapabilities queryCapabilities(uint32_t disabledFeatures) {
   ContextCapabilities caps;
   GLint samples = 1, colorSamples = 1, depthSamples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &samples);
   glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &colorSamples);
   glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depthSamples);
   caps.maxSamples = std::max(1, std::min({samples, colorSamples, depthSamples}));
-  caps.timerQuery = epoxy_gl_version() >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query");
+  caps.timerQuery = (epoxy_gl_version() >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query")) &&
+                    !(disabledFeatures & kFeatureTimerQuery);
+  caps.stencilExport =
+      epoxy_has_gl_extension("GL_ARB_shader_stencil_export") && !(disabledFeatures & kFeatureStencilExport);
   return caps;
 }
 
@@ -47,6 +54,8 @@ struct Plugin::Impl {
   PluginContext context;
   std::unique_ptr<MsaaGBuffer> msaa;
   std::unique_ptr<ResolvePass> resolvePass;
+  std::unique_ptr<SliceRenderer> slices;
+  std::unique_ptr<EdgeMask> edgeMask;
   std::unique_ptr<FxaaPass> fxaaPass;
   bool resolvedThisFrame = false;
 
@@ -64,20 +73,34 @@ struct Plugin::Impl {
   // Holds exactly what the configured method needs: frees the rest, creates what is missing.
   Status allocate(bool rebuildAll) {
     const Config& config = context.config;
-    if (rebuildAll || !needsMultisampledGBuffer(config.method) || (msaa && msaa->samples() != config.samples)) {
+    if (rebuildAll || !needsMultisampledGBuffer(config.method) || (msaa && msaa->requestedSamples() != config.samples)) {
+      edgeMask.reset();
+      slices.reset();
       resolvePass.reset();
       msaa.reset();
     }
+    if (!needsSlices(config.method) || (edgeMask && edgeMask->detector() != detectorFor(config))) edgeMask.reset();
+    if (!needsSlices(config.method)) slices.reset();
     if (rebuildAll || !needsFxaa(config)) fxaaPass.reset();
     if (needsMultisampledGBuffer(config.method) && !msaa) {
       auto created = MsaaGBuffer::create(context, config.samples);
       if (!created) return created.error();
       msaa = std::move(created.value());
     }
-    if (config.method == Method::Resolve && !resolvePass) {
+    if (needsMultisampledGBuffer(config.method) && !resolvePass) {  // the resolved G-buffer is slice 0's base
       auto created = ResolvePass::create(context, *msaa);
       if (!created) return created.error();
       resolvePass = std::move(created.value());
+    }
+    if (needsSlices(config.method) && !slices) {
+      auto created = SliceRenderer::create(context, *msaa);
+      if (!created) return created.error();
+      slices = std::move(created.value());
+    }
+    if (needsSlices(config.method) && !edgeMask) {
+      auto created = EdgeMask::create(context, *msaa, detectorFor(config), context.capabilities.stencilExport);
+      if (!created) return created.error();
+      edgeMask = std::move(created.value());
     }
     if (needsFxaa(config) && !fxaaPass) {
       auto created = FxaaPass::create(context);
@@ -88,7 +111,7 @@ struct Plugin::Impl {
   }
 
   uint64_t bytesHeld() const {
-    return (msaa ? msaa->bytes() : 0) + (fxaaPass ? fxaaPass->bytes() : 0);
+    return (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (fxaaPass ? fxaaPass->bytes() : 0);
   }
 };
 
@@ -106,7 +129,9 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   PluginContext& context = impl->context;
   context.layout = description.layout;
   context.log = description.log;
-  context.capabilities = queryCapabilities();
+  context.capabilities = queryCapabilities(description.disabledFeatures);
+  if (!context.capabilities.stencilExport)
+    context.warn("no ARB_shader_stencil_export: slice counts reach the stencil mask in N passes instead of one");
   context.config = impl->grant(description.config);
   context.shaders = std::make_unique<ShaderLibrary>(context.objects, context.config.shaderOverrideDirectory,
                                                     [&context](const std::string& m) { context.warn(m); });
@@ -128,7 +153,9 @@ Status Plugin::resolve(const FrameInfo& frame) {
   impl_->resolvedThisFrame = true;
   if (!impl_->resolvePass) return Status::ok();
   GlStateGuard guard;
-  return impl_->resolvePass->run(context, *impl_->msaa, frame);
+  if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
+  if (impl_->edgeMask) return impl_->edgeMask->run(context, *impl_->msaa, *impl_->slices, frame);
+  return Status::ok();
 }
 
 Status Plugin::shade(const LightingFunction& lighting) {
@@ -138,7 +165,12 @@ Status Plugin::shade(const LightingFunction& lighting) {
     context.frameStats.lightingEvaluations = 0;
   }
   impl_->resolvedThisFrame = false;
-  // Every current method lights one slice covering every pixel, in the host's own target.
+  if (impl_->slices) {
+    GlStateGuard guard;
+    return impl_->slices->shade(context, *impl_->msaa, lighting);
+  }
+  // Single-slice methods light once, every pixel, in the host's own target.
+  context.frameStats.slices = 1;
   {
     GlStateGuard guard;
     lighting(context.layout.lightFramebuffer);
@@ -189,6 +221,11 @@ Stats Plugin::stats() const {
   stats.bytesHeld = impl_->bytesHeld();
   stats.glObjectsHeld = context.objects.live;
   return stats;
+}
+
+std::vector<uint8_t> Plugin::readSliceCounts() const {
+  if (impl_->slices) return impl_->slices->readCounts();
+  return std::vector<uint8_t>(impl_->context.pixelCount(), 1);
 }
 
 std::vector<std::string> Plugin::warnings() const { return impl_->context.warnings; }

@@ -17,6 +17,19 @@ enum class Method : uint8_t {
   Off,      // the host's stock single-sample path; the plugin holds nothing (1 lighting eval/pixel)
   Fxaa,     // Lottes' FXAA after tonemapping (1 eval/pixel)
   Resolve,  // MSAA G-buffer + depth-aware resolve into the host's G-buffer (1 eval/pixel)
+  Edge,       // Thibieroz: edge pixels lit once per sample, the rest once (1 + (N-1)·edge fraction)
+  PerSample,  // every sample of every pixel lit: the quality reference at rate N (N evals/pixel)
+};
+
+// How `edge` decides that a pixel's samples see more than one surface.
+enum class EdgeDetector : uint8_t {
+  Depth,       // any sample's depth off sample 0's by more than Eq. 1 with c = edge_depth_closeness
+  Plane,       // Lauritzen: off sample 0's depth plane by more than |dz/dx|+|dz/dy|, or normals < 0.99
+  Normal,      // any sample's normal more than edge_normal_angle_deg from sample 0's
+  Material,    // any sample's albedo, specular or gloss differs from sample 0's
+  Coverage,    // samples not all written by one primitive (any attribute differs bit for bit):
+               // the centroid trick without touching the host's shaders; exact, so the default
+  EveryPixel,  // marks every pixel (diagnostic: equals per-sample)
 };
 
 enum class ResolveWeighting : uint8_t {
@@ -45,6 +58,12 @@ struct Config {
   // surface. Range [0, 100]; 0 keeps only the reference sample's depth, larger merges more (and,
   // past ~20, blends across real depth steps). Free to change every frame.
   float closeness = 5.0f;
+  // Edge detector of `edge`. Free to change every frame (recompiles one small shader).
+  EdgeDetector edgeDetector = EdgeDetector::Coverage;
+  // c of the `depth` detector, [0, 100]: smaller marks more pixels (slower, closer to per-sample).
+  float edgeDepthCloseness = 1.0f;
+  // Angle of the `normal` detector in degrees, [0, 180]: smaller marks more pixels.
+  float edgeNormalAngleDegrees = 25.0f;
   // FXAA after tonemapping, stacked on any method (FreeSpace Open users combine -msaa and FXAA).
   bool fxaa = false;
   FxaaQuality fxaaQuality = FxaaQuality::High;
@@ -67,9 +86,13 @@ struct ConfigKey {
 };
 const std::vector<ConfigKey>& configKeys();
 
+// Whether the method renders the model pass into a multisampled G-buffer.
+bool usesMsaa(Method method);
+
 const char* toString(Method method);
 const char* toString(ResolveWeighting weighting);
 const char* toString(FxaaQuality quality);
+const char* toString(EdgeDetector detector);
 
 // Sets one key; unknown keys and bad values are errors naming the key, the value and what is allowed.
 Status applySetting(Config& config, const std::string& key, const std::string& value);
@@ -78,7 +101,8 @@ Status applyConfigText(Config& config, const std::string& text, const std::strin
 Status applyConfigFile(Config& config, const std::string& path);
 // Comma- or semicolon-separated key=value pairs, as in RETROAA_SETTINGS.
 Status applySettingsList(Config& config, const std::string& list, const std::string& sourceName);
-// FreeSpace Open's flags: `-msaa 0|4|8|16` (others warn and mean 0; N>0 selects `resolve`) and
+// FreeSpace Open's flags: `-msaa 0|4|8|16` (others warn and mean 0; N>0 selects `resolve` unless a
+// multi-sample method is already chosen) and
 // `-aa_preset 0..6` (0-2 FXAA low/medium/high; 3-6 are SMAA in FSO, which retroaa maps to FXAA high
 // with a warning). `warnings` receives what was adjusted.
 Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,

@@ -65,16 +65,25 @@ struct GBufferLayout {
   GLuintHandle depthStencilTexture = 0;  // DEPTH24_STENCIL8
   uint8_t hostStencilBits = 0x00;       // stencil bits the host owns; retroaa leaves them alone
   GLuintHandle lightFramebuffer = 0;    // where the host's lighting accumulates (RGBA16F)
+  GLuintHandle lightTexture = 0;        // its colour texture (slices composite into it)
   GLuintHandle displayFramebuffer = 0, displayTexture = 0;  // tonemapped RGBA8, for post()
 };
 
 enum class LogLevel : uint8_t { Info, Warning, Error };
 using LogCallback = std::function<void(LogLevel, const std::string&)>;
 
+// Context features the plugin uses when present. Masking one off makes the plugin behave as on a
+// context without it (for testing fallbacks, or to work around a driver bug).
+enum Feature : uint32_t {
+  kFeatureStencilExport = 1u << 0,  // ARB_shader_stencil_export: slice counts in one pass (else N passes)
+  kFeatureTimerQuery = 1u << 1,     // GL_TIME_ELAPSED: per-pass GPU times (else none reported)
+};
+
 struct Description {
   Config config;
   GBufferLayout layout;
   LogCallback log;  // receives every warning (clamps, fallbacks); may be empty
+  uint32_t disabledFeatures = 0;  // Feature bits to treat as missing
 };
 
 // Per-frame camera facts for the closeness test.
@@ -96,6 +105,7 @@ struct Stats {
   std::vector<PassTime> passes;       // plugin passes of the last frame (measureGpuTime)
   uint64_t bytesHeld = 0;             // GPU memory of the plugin's own targets
   int glObjectsHeld = 0;              // live GL objects owned by the plugin
+  int slices = 1;                     // lighting passes of the last frame
 };
 
 // The host's lighting pass, rendering into `target` from the host's single-sample G-buffer.
@@ -120,6 +130,10 @@ class Plugin {
   Status shade(const LightingFunction& lighting);
   // After the host's tonemap: FXAA (when configured) on the display target.
   Status post();
+
+  // Diagnostics: the per-pixel lighting evaluation count of the last frame (slice count; 1 for
+  // single-slice methods), rows bottom-up as GL stores them. Reads back from the GPU.
+  std::vector<uint8_t> readSliceCounts() const;
 
   // Applies a new config; reallocates only what the new method needs. Errors: InvalidConfig.
   Status reconfigure(const Config& config);

@@ -17,10 +17,11 @@ class MsaaGBuffer {
   GLuint attachment(size_t i) const { return attachments_[i].get(); }
   GLuint depthStencil() const { return depthStencil_.get(); }
   int samples() const { return samples_; }  // as allocated by the driver (may exceed the request)
+  int requestedSamples() const { return requested_; }
   bool multisampled() const { return samples_ > 1 || multisampledStorage_; }
   // The #defines shaders reading this G-buffer need (shaders/common/gbuffer.glsl): sample count,
   // attachment roles, depth encoding, and one output per host attachment with STORE_OUTPUTS(values).
-  std::string shaderDefines(const GBufferLayout& layout) const;
+  std::string shaderDefines(const GBufferLayout& layout, bool withOutputs = true) const;
   // Binds attachment i to texture unit i and the depth-stencil to unit 15.
   void bind(const GBufferLayout& layout) const;
   uint64_t bytes() const { return bytes_; }
@@ -30,6 +31,7 @@ class MsaaGBuffer {
   GlTexture depthStencil_;
   GlFramebuffer framebuffer_;
   int samples_ = 1;
+  int requested_ = 1;
   bool multisampledStorage_ = false;
   uint64_t bytes_ = 0;
 };
@@ -46,6 +48,45 @@ class ResolvePass {
  private:
   GlProgram program_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
+};
+
+// The slice mechanism (DESIGN.md), shared by every multi-slice method: a per-pixel slice count in a
+// stencil mask, then per slice s: sample s written into the host's G-buffer where count > s, the
+// host's unchanged lighting run under the stencil test into a plugin target, and weight × light
+// composited into the host's light target (weight = 1 / count). Never touches the host's stencil.
+class SliceRenderer {
+ public:
+  static Result<std::unique_ptr<SliceRenderer>> create(PluginContext& context, const MsaaGBuffer& source);
+  // Runs `maskProgram` (a full-screen shader writing the count to location 0, and to
+  // gl_FragStencilRefARB when `stencilExport`) to fill the counts and the stencil mask.
+  Status writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport);
+  // Lights every slice through `lighting` and composites; the host's G-buffer holds the resolved
+  // values on entry (slice 0 of single-count pixels). Counts evaluations with occlusion queries.
+  Status shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting);
+  std::vector<uint8_t> readCounts() const;
+  uint64_t bytes() const { return bytes_; }
+
+ private:
+  GlTexture light_, mask_, counts_;
+  GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
+  GlProgram writeSlice_, composite_, markPixels_;
+  GlQuery pixelsQuery_;
+  int maxCount_ = 1;
+  uint64_t bytes_ = 0;
+};
+
+// The edge mask of `edge` and `per-sample` (the latter marks every pixel).
+class EdgeMask {
+ public:
+  static Result<std::unique_ptr<EdgeMask>> create(PluginContext& context, const MsaaGBuffer& source,
+                                                  EdgeDetector detector, bool stencilExport);
+  Status run(PluginContext& context, const MsaaGBuffer& source, SliceRenderer& slices, const FrameInfo& frame);
+  EdgeDetector detector() const { return detector_; }
+
+ private:
+  GlProgram program_;
+  EdgeDetector detector_ = EdgeDetector::Coverage;
+  bool stencilExport_ = false;
 };
 
 // `fxaa`: Lottes' FXAA 3.11 (quality variant) on the tonemapped display target.

@@ -9,6 +9,7 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   auto gbuffer = std::make_unique<MsaaGBuffer>();
   const GBufferLayout& layout = context.layout;
   const int storageSamples = samples > 1 ? samples : 0;
+  gbuffer->requested_ = samples;
   gbuffer->framebuffer_ = makeFramebuffer(context, "msaa_gbuffer");
   std::vector<GLenum> drawBuffers;
   for (size_t i = 0; i < layout.attachments.size(); ++i) {
@@ -42,7 +43,7 @@ int findRole(const GBufferLayout& layout, AttachmentRole role) {
 }
 }  // namespace
 
-std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout) const {
+std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOutputs) const {
   const size_t count = layout.attachments.size();
   std::string d;
   d += "#define SAMPLES " + std::to_string(samples_) + "\n";
@@ -56,7 +57,7 @@ std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout) const {
   d += "#define DEPTH_ENCODING " +
        std::string(layout.depthEncoding.kind == DepthEncoding::Kind::LogAboveKnee ? "1" : "0") + "\n";
   std::string store = "#define STORE_OUTPUTS(v)";
-  for (size_t i = 0; i < count; ++i) {
+  for (size_t i = 0; i < count && withOutputs; ++i) {
     d += "layout(location = " + std::to_string(i) + ") out vec4 out" + std::to_string(i) + ";\n";
     store += " out" + std::to_string(i) + " = v[" + std::to_string(i) + "];";
   }

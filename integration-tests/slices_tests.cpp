@@ -1,0 +1,140 @@
+// Slices: `edge` and `per-sample` light extra samples through the host's unchanged lighting.
+#include "test_support.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+using namespace testing_support;
+
+namespace {
+retroaa::Config edgeWith(retroaa::EdgeDetector detector) {
+  retroaa::Config config;
+  config.edgeDetector = detector;
+  return config;
+}
+double maxChannelDifference(const app::DisplayImage& a, const app::DisplayImage& b) {
+  double worst = 0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) worst = std::max<double>(worst, std::fabs(a.rgb[i] - b.rgb[i]));
+  return worst;
+}
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+}  // namespace
+
+TEST(Slices, EdgeMarkingEveryPixelEqualsPerSample) {
+  PatchedHost host("default", 160, 120);
+  const app::DisplayImage perSample = host.render("per-sample");
+  const app::DisplayImage everyPixel = host.render("edge", edgeWith(retroaa::EdgeDetector::EveryPixel));
+  EXPECT_LE(maxChannelDifference(perSample, everyPixel), 1.0 / 255.0 + 1e-6);
+  EXPECT_EQ(host.hooks->plugin().stats().evaluationsPerPixel(), double(host.hooks->plugin().stats().samples));
+}
+
+TEST(Slices, EdgeMatchesPerSampleAndCountsEvaluationsExactly) {
+  PatchedHost host("default", 320, 240);
+  const app::DisplayImage reference = host.render("per-sample");
+  const int n = host.hooks->plugin().stats().samples;
+  EXPECT_EQ(host.hooks->plugin().stats().lightingEvaluations, uint64_t(320 * 240) * n);
+  for (auto detector : {retroaa::EdgeDetector::Coverage, retroaa::EdgeDetector::Plane, retroaa::EdgeDetector::Depth}) {
+    const app::DisplayImage edge = host.render("edge", edgeWith(detector));
+    const retroaa::Stats stats = host.hooks->plugin().stats();
+    const std::vector<uint8_t> counts = host.hooks->plugin().readSliceCounts();
+    const uint64_t edgePixels = std::count_if(counts.begin(), counts.end(), [](uint8_t c) { return c > 1; });
+    const double edgeFraction = double(edgePixels) / counts.size();
+    const double psnr = app::compare(edge, reference, {}).psnrDb;
+    std::printf("edge/%s vs per-sample: PSNR %.2f dB, %.3f evaluations/pixel, edge fraction %.4f\n",
+                retroaa::toString(detector), psnr, stats.evaluationsPerPixel(), edgeFraction);
+    // Counts are either 1 or N, and the occlusion-query total is exactly their sum.
+    for (uint8_t c : counts) ASSERT_TRUE(c == 1 || c == n) << int(c);
+    EXPECT_EQ(stats.lightingEvaluations, std::accumulate(counts.begin(), counts.end(), uint64_t(0)));
+    EXPECT_NEAR(stats.evaluationsPerPixel(), 1.0 + (n - 1) * edgeFraction, 1e-9);
+    EXPECT_GT(edgeFraction, 0.01);
+    EXPECT_LT(edgeFraction, 0.5);
+    EXPECT_GE(psnr, detector == retroaa::EdgeDetector::Coverage ? 60.0 : 38.0);
+  }
+}
+
+TEST(Slices, PerSampleBeatsResolveAndFxaaOnSilhouettes) {
+  PatchedHost host(testDataPath("scenes/light_behind_silhouette.json"), 240, 180);
+  const host::GroundTruth gt = host.groundTruth(8);
+  const auto truth = app::DisplayImage::fromRgba8(240, 180, gt.display);
+  const auto edges = app::edgeMaskFromSpread(gt.lumaStdDev);
+  std::map<std::string, double> edgePsnr;
+  for (const char* method : {"per-sample", "resolve", "fxaa", "off"})
+    edgePsnr[method] = app::compare(host.render(method), truth, edges).edgePsnrDb;
+  std::printf("silhouette edge PSNR: per-sample %.2f, resolve %.2f, fxaa %.2f, off %.2f dB\n", edgePsnr["per-sample"],
+              edgePsnr["resolve"], edgePsnr["fxaa"], edgePsnr["off"]);
+  EXPECT_GT(edgePsnr["per-sample"], edgePsnr["resolve"] + 3.0);
+  EXPECT_GT(edgePsnr["per-sample"], edgePsnr["fxaa"] + 3.0);
+}
+
+TEST(Slices, HostStencilBitsAreLeftAlone) {
+  PatchedHost host("default", 96, 72);
+  host.render("edge");
+  // The host's depth-stencil holds a pattern of its own; a whole frame of `edge` must keep it.
+  const GLuint depthStencil = host.renderer->targets().depthStencil;
+  std::vector<uint32_t> pattern(96 * 72);
+  for (size_t i = 0; i < pattern.size(); ++i) pattern[i] = 0x5Au | (uint32_t(i % 977) << 8);
+  glTextureSubImage2D(depthStencil, 0, 0, 0, 96, 72, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, pattern.data());
+  retroaa::Plugin& plugin = host.hooks->plugin();
+  ASSERT_TRUE(plugin.resolve({0.9f}));
+  ASSERT_TRUE(plugin.shade([](retroaa::GLuintHandle) {}));
+  std::vector<uint32_t> after(pattern.size());
+  glGetTextureImage(depthStencil, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, GLsizei(after.size() * 4), after.data());
+  for (size_t i = 0; i < after.size(); ++i) ASSERT_EQ(after[i] & 0xFFu, 0x5Au) << "stencil changed at " << i;
+}
+
+TEST(Slices, WithoutStencilExportTheResultIsTheSame) {
+  PatchedHost host("default", 128, 96);
+  const app::DisplayImage withExport = host.render("edge");
+  const uint64_t evaluations = host.hooks->plugin().stats().lightingEvaluations;
+  retroaa::Config config;
+  config.method = retroaa::Method::Edge;
+  retroaa::Description description;
+  description.config = config;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  description.disabledFeatures = retroaa::kFeatureStencilExport;
+  auto plugin = retroaa::Plugin::create(description);
+  ASSERT_TRUE(plugin) << plugin.error().message;
+  EXPECT_NE(plugin.value()->warnings().front().find("no ARB_shader_stencil_export"), std::string::npos);
+  // Render one frame by hand through the second plugin with the host's own lighting.
+  host.renderer->setHooks(nullptr);
+  struct Hooks : host::FrameHooks {
+    retroaa::Plugin* plugin;
+    GLuint modelPassFramebuffer(GLuint) override { return plugin->geometryFramebuffer(); }
+    void modelPassEnd(const host::FrameView& v) override { plugin->resolve({v.horizontalFovRadians}); }
+    void lighting(const host::LightingPass& pass, GLuint) override { plugin->shade([&](GLuint t) { pass(t); }); }
+  } hooks;
+  hooks.plugin = plugin.value().get();
+  host.renderer->setHooks(&hooks);
+  host.renderer->renderFrame(host.scene.camera);
+  const auto withoutExport = app::DisplayImage::fromRgba8(128, 96, host.renderer->readDisplay());
+  EXPECT_EQ(withExport.rgb, withoutExport.rgb);
+  EXPECT_EQ(plugin.value()->stats().lightingEvaluations, evaluations);
+  host.renderer->setHooks(host.hooks.get());
+}
+
+TEST(Slices, TheHostCompilesItsStockLightingShadersUnchanged) {
+  // The binary that ran the patched frames embeds the host's shader files byte for byte as they are in
+  // engine-patch/host/shaders, and neither the patch nor the plugin carries a lighting shader.
+  const std::string root = std::string(RETROAA_SOURCE_DIR);
+  const auto& embedded = host::embeddedFiles();
+  for (const char* file : {"light_ambient_directional.frag", "light_point.frag", "lighting_common.glsl", "emissive.frag",
+                           "model.frag", "model.vert"}) {
+    const auto found = embedded.find(std::string("shaders/") + file);
+    ASSERT_NE(found, embedded.end()) << file;
+    EXPECT_EQ(found->second, readFile(root + "/engine-patch/host/shaders/" + file)) << file;
+  }
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root + "/shaders")) {
+    if (!entry.is_regular_file()) continue;
+    EXPECT_EQ(readFile(entry.path().string()).find("lighting_common"), std::string::npos) << entry.path();
+  }
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root + "/engine-patch/patch"))
+    EXPECT_NE(entry.path().extension(), ".frag") << entry.path();
+}

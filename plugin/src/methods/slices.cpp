@@ -1,0 +1,169 @@
+// The slice mechanism: lets the host's unchanged lighting light several samples per pixel.
+#include <algorithm>
+
+#include "../gl_state.h"
+#include "methods.h"
+
+namespace retroaa {
+
+namespace {
+void stencilPassWhereCountAbove(int slice) {
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_LESS, slice, 0xFF);  // passes where slice < count
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(0x00);
+}
+
+void fullscreenState(const GBufferLayout& layout) {
+  glViewport(0, 0, layout.width, layout.height);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+}  // namespace
+
+Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& context, const MsaaGBuffer& source) {
+  auto slices = std::make_unique<SliceRenderer>();
+  const GBufferLayout& layout = context.layout;
+  const int w = layout.width, h = layout.height;
+  slices->maxCount_ = source.samples();
+  slices->light_ = makeTexture(context, GL_RGBA16F, w, h, 0, "slices.light", slices->bytes_);
+  slices->mask_ = makeTexture(context, GL_DEPTH24_STENCIL8, w, h, 0, "slices.mask", slices->bytes_);
+  slices->counts_ = makeTexture(context, GL_R8UI, w, h, 0, "slices.counts", slices->bytes_);
+
+  slices->maskTarget_ = makeFramebuffer(context, "slices.mask");
+  glNamedFramebufferTexture(slices->maskTarget_.get(), GL_COLOR_ATTACHMENT0, slices->counts_.get(), 0);
+  glNamedFramebufferTexture(slices->maskTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
+  slices->lightTarget_ = makeFramebuffer(context, "slices.light");
+  glNamedFramebufferTexture(slices->lightTarget_.get(), GL_COLOR_ATTACHMENT0, slices->light_.get(), 0);
+  glNamedFramebufferTexture(slices->lightTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
+  slices->compositeTarget_ = makeFramebuffer(context, "slices.composite");
+  glNamedFramebufferTexture(slices->compositeTarget_.get(), GL_COLOR_ATTACHMENT0, layout.lightTexture, 0);
+  glNamedFramebufferTexture(slices->compositeTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
+  slices->sliceWriter_ = makeFramebuffer(context, "slices.writer");
+  std::vector<GLenum> drawBuffers;
+  for (size_t i = 0; i < layout.attachments.size(); ++i) {
+    glNamedFramebufferTexture(slices->sliceWriter_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i), layout.attachments[i].texture, 0);
+    drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+  }
+  glNamedFramebufferDrawBuffers(slices->sliceWriter_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
+  glNamedFramebufferTexture(slices->sliceWriter_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
+  for (const auto& [fbo, label] : {std::pair{slices->maskTarget_.get(), "slices.mask"}, {slices->lightTarget_.get(), "slices.light"},
+                                   {slices->compositeTarget_.get(), "slices.composite"}, {slices->sliceWriter_.get(), "slices.writer"}})
+    if (Status status = checkFramebuffer(fbo, label); !status) return status.error();
+
+  auto writeSlice = context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag", source.shaderDefines(layout));
+  if (!writeSlice) return writeSlice.error();
+  slices->writeSlice_ = std::move(writeSlice.value());
+  auto composite = context.shaders->program("common/fullscreen.vert", "slices/composite.frag");
+  if (!composite) return composite.error();
+  slices->composite_ = std::move(composite.value());
+  auto mark = context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag");
+  if (!mark) return mark.error();
+  slices->markPixels_ = std::move(mark.value());
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  slices->pixelsQuery_ = GlQuery(context.objects, query);
+  return slices;
+}
+
+Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport) {
+  const GBufferLayout& layout = context.layout;
+  glBindFramebuffer(GL_FRAMEBUFFER, maskTarget_.get());
+  fullscreenState(layout);
+  const GLuint zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferuiv(maskTarget_.get(), GL_COLOR, 0, zero);
+  glClearNamedFramebufferfi(maskTarget_.get(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(0xFF);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // the shader's gl_FragStencilRefARB replaces the reference
+  glUseProgram(maskProgram);
+  context.drawFullscreen();
+  if (!stencilExport) {
+    // Without stencil export, raise the stencil to the count one step at a time: pass j increments
+    // every pixel whose count is at least j. Each pass reads one byte per pixel.
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glUseProgram(markPixels_.get());
+    glBindTextureUnit(1, counts_.get());
+    for (int j = 1; j <= maxCount_; ++j) {
+      glUniform1i(glGetUniformLocation(markPixels_.get(), "uAtLeast"), j);
+      context.drawFullscreen();
+    }
+  }
+  return Status::ok();
+}
+
+Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting) {
+  const GBufferLayout& layout = context.layout;
+  context.frameStats.slices = maxCount_;
+  for (int slice = 0; slice < maxCount_; ++slice) {
+    {
+      ScopedPass timed(context, "slices.write");
+      // Slice 0 of single-count pixels is the resolved G-buffer already there; the rest take sample s.
+      glBindFramebuffer(GL_FRAMEBUFFER, sliceWriter_.get());
+      fullscreenState(layout);
+      stencilPassWhereCountAbove(std::max(slice, 1));
+      glUseProgram(writeSlice_.get());
+      source.bind(layout);
+      setDepthEncodingUniforms(writeSlice_.get(), layout);
+      glUniform1i(glGetUniformLocation(writeSlice_.get(), "uSample"), slice);
+      context.drawFullscreen();
+
+      // Count this slice's lighting evaluations exactly: the pixels its stencil test passes.
+      glBindFramebuffer(GL_FRAMEBUFFER, lightTarget_.get());
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      if (slice == 0) glDisable(GL_STENCIL_TEST); else stencilPassWhereCountAbove(slice);
+      glUseProgram(markPixels_.get());
+      glBindTextureUnit(1, counts_.get());
+      glUniform1i(glGetUniformLocation(markPixels_.get(), "uAtLeast"), 0);
+      glBeginQuery(GL_SAMPLES_PASSED, pixelsQuery_.get());
+      context.drawFullscreen();
+      glEndQuery(GL_SAMPLES_PASSED);
+      GLuint64 pixels = 0;
+      glGetQueryObjectui64v(pixelsQuery_.get(), GL_QUERY_RESULT, &pixels);
+      context.frameStats.lightingEvaluations += pixels;
+    }
+    {
+      ScopedPass timed(context, "slices.lighting");
+      GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
+      glBindFramebuffer(GL_FRAMEBUFFER, lightTarget_.get());
+      fullscreenState(layout);
+      if (slice == 0) glDisable(GL_STENCIL_TEST); else stencilPassWhereCountAbove(slice);
+      lighting(lightTarget_.get());
+    }
+    {
+      ScopedPass timed(context, "slices.composite");
+      glBindFramebuffer(GL_FRAMEBUFFER, compositeTarget_.get());
+      fullscreenState(layout);
+      if (slice == 0) {
+        glDisable(GL_STENCIL_TEST);  // slice 0 covers every pixel and overwrites the target
+      } else {
+        stencilPassWhereCountAbove(slice);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+      }
+      glUseProgram(composite_.get());
+      glBindTextureUnit(0, light_.get());
+      glBindTextureUnit(1, counts_.get());
+      context.drawFullscreen();
+    }
+  }
+  return Status::ok();
+}
+
+std::vector<uint8_t> SliceRenderer::readCounts() const {
+  GLint width = 0, height = 0;
+  glGetTextureLevelParameteriv(counts_.get(), 0, GL_TEXTURE_WIDTH, &width);
+  glGetTextureLevelParameteriv(counts_.get(), 0, GL_TEXTURE_HEIGHT, &height);
+  std::vector<uint8_t> counts(size_t(width) * height);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(counts_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, GLsizei(counts.size()), counts.data());
+  return counts;
+}
+
+}  // namespace retroaa

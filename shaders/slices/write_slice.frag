@@ -1,0 +1,13 @@
+#version 450 core
+// Slice s: sample s of each pixel, copied verbatim into the host's single-sample G-buffer so the host's
+// unchanged lighting can light it. The stencil test (count > s) keeps other pixels untouched. A sample
+// with NaN or Inf anywhere is skipped: the pixel keeps the previous slice's (finite) values.
+#include "common/gbuffer.glsl"
+uniform int uSample;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  if (!sampleIsFinite(pixel, uSample)) discard;
+  vec4 values[ATTACHMENT_COUNT];
+  for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, uSample);
+  STORE_OUTPUTS(values);
+}
