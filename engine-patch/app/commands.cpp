@@ -223,7 +223,9 @@ int runBench(const BenchOptions& options) {
       modelMs.push_back(t.modelPassMs);
       lightingMs.push_back(t.lightingMs);
       tonemapMs.push_back(t.tonemapMs);
-      for (const retroaa::PassTime& pass : session.hooks->plugin().stats().passes) pluginMs[pass.name].push_back(pass.ms);
+      std::map<std::string, double> frameTotals;  // a pass runs once per slice: sum them per frame
+      for (const retroaa::PassTime& pass : session.hooks->plugin().stats().passes) frameTotals[pass.name] += pass.ms;
+      for (const auto& [name, ms] : frameTotals) pluginMs[name].push_back(ms);
     }
     session.renderer->measureTime = false;
     const retroaa::Stats stats = session.hooks->plugin().stats();
