@@ -16,36 +16,9 @@ constexpr int kWidth = 64, kHeight = 48;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// One sample of the FSO layout: albedo, position, normal+gloss, specular, emissive, depth buffer.
-struct Sample {
-  glm::vec4 attachments[5];
-  glm::vec4 depthBuffer;
-};
-
-Sample background() {
-  return {{glm::vec4(0), glm::vec4(0, 0, codec::kBackgroundMarker, 0), glm::vec4(0), glm::vec4(0), glm::vec4(0.1f, 0.2f, 0.3f, 1)},
-          glm::vec4(1.0f)};
-}
-Sample surface(float depth, glm::vec3 normal = {0, 0, 1}) {
-  return {{glm::vec4(0.5f, 0.5f, 0.5f, 1), glm::vec4(0.01f, -0.02f, codec::encode(depth), 1), glm::vec4(normal, 0.5f),
-           glm::vec4(0.2f, 0.2f, 0.2f, 1), glm::vec4(0, 0, 0, 1)},
-          glm::vec4(std::log2(depth / 0.1f) / std::log2(2e7f))};
-}
-
-const char* kFillShader = R"(#version 450 core
-layout(std430, binding = 0) readonly buffer Samples { vec4 data[]; };
-uniform int uSamples;
-layout(location = 0) out vec4 out0;
-layout(location = 1) out vec4 out1;
-layout(location = 2) out vec4 out2;
-layout(location = 3) out vec4 out3;
-layout(location = 4) out vec4 out4;
-void main() {  // reading gl_SampleID runs this once per sample
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  int base = ((p.y * 64 + p.x) * uSamples + gl_SampleID) * 6;  // 64 = kWidth
-  out0 = data[base]; out1 = data[base + 1]; out2 = data[base + 2]; out3 = data[base + 3]; out4 = data[base + 4];
-  gl_FragDepth = data[base + 5].x;
-})";
+using Sample = SyntheticSample;
+Sample background() { return backgroundSample(); }
+Sample surface(float depth, glm::vec3 normal = {0, 0, 1}) { return surfaceSample(depth, normal); }
 
 class ResolveHardCases : public ::testing::Test {
  protected:
@@ -67,43 +40,8 @@ class ResolveHardCases : public ::testing::Test {
     retroaa::Plugin& plugin = hooks.value()->plugin();
     // The driver may back a request with more samples (llvmpipe: 4 for 1x and 2x); each pixel's list
     // is then stretched over what was allocated, keeping its proportions.
-    granted_ = plugin.stats().samples;
-    const int n = granted_;
-
-    std::vector<Sample> data(size_t(kWidth) * kHeight * n, background());
-    for (size_t x = 0; x < pixels.size(); ++x)
-      for (int s = 0; s < n; ++s) data[x * n + s] = pixels[x][s * pixels[x].size() / n];
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    glNamedBufferStorage(buffer, data.size() * sizeof(Sample), data.data(), 0);
-    const std::string fragment = kFillShader;
-    const char* vertex = "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
-                         " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
-    const char* fragmentText = fragment.c_str();
-    const GLuint program = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertex);
-    const GLuint fill = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentText);
-    GLint linked = 0;
-    glGetProgramiv(fill, GL_LINK_STATUS, &linked);
-    ASSERT_TRUE(linked);
-    GLuint pipeline = 0, vao = 0;
-    glCreateProgramPipelines(1, &pipeline);
-    glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, program);
-    glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fill);
-    glProgramUniform1i(fill, glGetUniformLocation(fill, "uSamples"), n);
-    glCreateVertexArrays(1, &vao);
-
-    glBindFramebuffer(GL_FRAMEBUFFER, plugin.geometryFramebuffer());
-    glViewport(0, 0, kWidth, kHeight);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glBindProgramPipeline(pipeline);
-    glBindVertexArray(vao);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindProgramPipeline(0);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
+    std::vector<std::vector<Sample>> grid(pixels.begin(), pixels.end());
+    granted_ = fillGeometry(plugin, kWidth, kHeight, grid);
 
     retroaa::FrameInfo frame;
     frame.horizontalFovRadians = 1.0f;
@@ -116,11 +54,6 @@ class ResolveHardCases : public ::testing::Test {
     }
     depth_.resize(size_t(kWidth) * kHeight);
     glGetTextureImage(renderer_->targets().depthStencil, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth_.size() * 4), depth_.data());
-    glDeleteProgramPipelines(1, &pipeline);
-    glDeleteProgram(program);
-    glDeleteProgram(fill);
-    glDeleteVertexArrays(1, &vao);
-    glDeleteBuffers(1, &buffer);
   }
 
   glm::vec4 attachment(int a, int x) const { return out_[a][x]; }

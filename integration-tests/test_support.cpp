@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include "commands.h"
+#include "depth_codec.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -39,6 +40,107 @@ glm::ivec2 projectToPixel(const host::Camera& camera, glm::vec3 world, int width
   const int x = static_cast<int>((ndc.x * 0.5f + 0.5f) * width);
   const int yUp = static_cast<int>((ndc.y * 0.5f + 0.5f) * height);
   return {x, height - 1 - yUp};
+}
+
+SyntheticSample backgroundSample() {
+  return {{glm::vec4(0), glm::vec4(0, 0, host::depth_codec::kBackgroundMarker, 0), glm::vec4(0), glm::vec4(0),
+           glm::vec4(0.1f, 0.2f, 0.3f, 1)},
+          glm::vec4(1.0f)};
+}
+
+SyntheticSample surfaceSample(float depth, glm::vec3 normal, glm::vec3 albedo) {
+  return {{glm::vec4(albedo, 1), glm::vec4(0.01f, -0.02f, host::depth_codec::encode(depth), 1), glm::vec4(normal, 0.5f),
+           glm::vec4(0.2f, 0.2f, 0.2f, 1), glm::vec4(0, 0, 0, 1)},
+          glm::vec4(std::log2(depth / 0.1f) / std::log2(2e7f))};
+}
+
+namespace {
+GLuint fullscreenVertexProgram() {
+  const char* vertex = "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
+                       " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
+  return glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertex);
+}
+
+// Draws one full-screen triangle with a separable fragment program; deletes what it made.
+void drawWithFragment(const char* fragmentSource, const std::function<void(GLuint)>& setUniforms) {
+  const GLuint vertex = fullscreenVertexProgram();
+  const GLuint fragment = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentSource);
+  GLint linked = 0;
+  glGetProgramiv(fragment, GL_LINK_STATUS, &linked);
+  if (!linked) {
+    char log[2048] = {};
+    glGetProgramInfoLog(fragment, sizeof log, nullptr, log);
+    ADD_FAILURE() << "test shader does not link: " << log;
+  }
+  GLuint pipeline = 0, vao = 0;
+  glCreateProgramPipelines(1, &pipeline);
+  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex);
+  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fragment);
+  glCreateVertexArrays(1, &vao);
+  setUniforms(fragment);
+  glUseProgram(0);
+  glBindProgramPipeline(pipeline);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindProgramPipeline(0);
+  glDeleteProgramPipelines(1, &pipeline);
+  glDeleteProgram(vertex);
+  glDeleteProgram(fragment);
+  glDeleteVertexArrays(1, &vao);
+}
+}  // namespace
+
+int fillGeometry(retroaa::Plugin& plugin, int width, int height, const std::vector<std::vector<SyntheticSample>>& pixels) {
+  const int n = plugin.stats().samples;
+  std::vector<SyntheticSample> data(size_t(width) * height * n, backgroundSample());
+  for (size_t p = 0; p < pixels.size() && p < size_t(width) * height; ++p)
+    if (!pixels[p].empty())
+      for (int s = 0; s < n; ++s) data[p * n + s] = pixels[p][s * pixels[p].size() / n];
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferStorage(buffer, data.size() * sizeof(SyntheticSample), data.data(), 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, plugin.geometryFramebuffer());
+  glViewport(0, 0, width, height);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+  drawWithFragment(R"(#version 450 core
+layout(std430, binding = 0) readonly buffer Samples { vec4 data[]; };
+uniform int uSamples;
+uniform int uWidth;
+layout(location = 0) out vec4 out0;
+layout(location = 1) out vec4 out1;
+layout(location = 2) out vec4 out2;
+layout(location = 3) out vec4 out3;
+layout(location = 4) out vec4 out4;
+void main() {  // reading gl_SampleID runs this once per sample
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  int base = ((p.y * uWidth + p.x) * uSamples + gl_SampleID) * 6;
+  out0 = data[base]; out1 = data[base + 1]; out2 = data[base + 2]; out3 = data[base + 3]; out4 = data[base + 4];
+  gl_FragDepth = data[base + 5].x;
+})",
+                   [&](GLuint program) {
+                     glProgramUniform1i(program, glGetUniformLocation(program, "uSamples"), n);
+                     glProgramUniform1i(program, glGetUniformLocation(program, "uWidth"), width);
+                   });
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+  glDeleteBuffers(1, &buffer);
+  return n;
+}
+
+void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height) {
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, width, height);
+  glBindTextureUnit(0, colorTexture);
+  drawWithFragment(R"(#version 450 core
+layout(binding = 0) uniform sampler2D uColor;
+out vec4 outLight;
+void main() { outLight = vec4(texelFetch(uColor, ivec2(gl_FragCoord.xy), 0).rgb, 1.0); })",
+                   [](GLuint) {});
 }
 
 }  // namespace testing_support

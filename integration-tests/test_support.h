@@ -33,6 +33,24 @@ struct PatchedHost {
   host::GroundTruth groundTruth(int samplesPerAxis);
 };
 
+// One sample of the FSO layout written by hand: albedo, position, normal+gloss, specular, emissive,
+// and the depth-buffer value (x).
+struct SyntheticSample {
+  glm::vec4 attachments[5];
+  glm::vec4 depthBuffer;
+};
+SyntheticSample backgroundSample();  // the sky (0.1, 0.2, 0.3) in emissive, position = far marker
+SyntheticSample surfaceSample(float depthMetres, glm::vec3 normal = {0, 0, 1}, glm::vec3 albedo = glm::vec3(0.5f));
+
+// Writes every sample of every pixel of `plugin`'s geometry framebuffer (a per-sample shader reads
+// them from a buffer). `pixels[y * width + x]` lists one pixel's samples (GL's bottom-up rows); pixels
+// past the list are background. A list shorter or longer than the allocated sample count is stretched
+// over it, keeping its proportions. Returns the allocated sample count.
+int fillGeometry(retroaa::Plugin& plugin, int width, int height, const std::vector<std::vector<SyntheticSample>>& pixels);
+
+// A stand-in for a host lighting pass: light = albedo, read from the host's colour attachment.
+void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height);
+
 // The pixel (top-down image coordinates) where a world point lands for the scene camera.
 glm::ivec2 projectToPixel(const host::Camera& camera, glm::vec3 world, int width, int height);
 

@@ -94,6 +94,16 @@ std::vector<uint8_t> visualiseCounts(const std::string& view, const std::vector<
 MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base) {
   MethodSpec out{spec, base};
   std::string rest = spec;
+  // Settings after '@' apply to this row only: adaptive@adaptive_shading_scale=4@adaptive_depth_scale=1
+  for (size_t at = rest.rfind('@'); at != std::string::npos; at = rest.rfind('@')) {
+    const std::string setting = rest.substr(at + 1);
+    const size_t equals = setting.find('=');
+    if (equals == std::string::npos)
+      throw std::invalid_argument("method '" + spec + "': expected key=value after '@', got '" + setting + "'");
+    const retroaa::Status status = retroaa::applySetting(out.config, setting.substr(0, equals), setting.substr(equals + 1));
+    if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
+    rest = rest.substr(0, at);
+  }
   const size_t plus = rest.find('+');
   if (plus != std::string::npos) {
     if (rest.substr(plus + 1) != "fxaa")
@@ -119,7 +129,7 @@ std::vector<std::string> expandMethodList(const std::string& list) {
   while (std::getline(in, item, ',')) {
     if (item == "all") {
       for (const char* m : {"off", "fxaa", "resolve", "resolve/front", "resolve/back", "resolve/fso",
-                            "resolve/mean", "resolve+fxaa", "edge", "per-sample"})
+                            "resolve/mean", "resolve+fxaa", "edge", "adaptive", "per-sample"})
         out.push_back(m);
     } else if (!item.empty()) {
       out.push_back(item);

@@ -13,8 +13,9 @@ constexpr int kExitOk = 0;
 constexpr int kExitCheckFailed = 1;
 constexpr int kExitBadInput = 2;
 
-// A method as named in reports and on the command line: `method[/weighting][+fxaa]`,
-// e.g. `off`, `fxaa`, `resolve`, `resolve/fso`, `resolve+fxaa`. Settings (--set, --config) apply first.
+// A method as named in reports and on the command line: `method[/weighting][+fxaa][@key=value]...`,
+// e.g. `off`, `fxaa`, `resolve`, `resolve/fso`, `resolve+fxaa`, `adaptive@adaptive_shading_scale=4`.
+// Settings (--set, --config) apply first, then the spec's own.
 struct MethodSpec {
   std::string name;
   retroaa::Config config;

@@ -50,7 +50,7 @@ Status parseBool(const std::string& key, const std::string& value, bool& out) {
   return invalid("config key '" + key + "': value '" + value + "' is not a switch (allowed: on, off)");
 }
 
-constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve, Method::Edge, Method::PerSample};
+constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve, Method::Edge, Method::PerSample, Method::Adaptive};
 constexpr EdgeDetector kEdgeDetectors[] = {EdgeDetector::Depth,    EdgeDetector::Plane,    EdgeDetector::Normal,
                                            EdgeDetector::Material, EdgeDetector::Coverage, EdgeDetector::EveryPixel};
 constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
@@ -72,7 +72,7 @@ std::string formatFloat(float v) {
 
 const std::vector<Setter>& setters() {
   static const std::vector<Setter> table = {
-      {{"method", "off", "off, fxaa, resolve, edge, per-sample", "which AA method runs; changing it reallocates only what it needs"},
+      {{"method", "off", "off, fxaa, resolve, edge, per-sample, adaptive", "which AA method runs; changing it reallocates only what it needs"},
        [](Config& c, const std::string& v) { return parseEnum("method", v, kMethods, c.method); },
        [](const Config& c) { return std::string(toString(c.method)); }},
       {{"samples", "4", "1, 2, 4, 8, 16", "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
@@ -97,6 +97,29 @@ const std::vector<Setter>& setters() {
       {{"edge_normal_angle_deg", "25", "0 .. 180", "angle of the normal detector; smaller marks more pixels"},
        [](Config& c, const std::string& v) { return parseFloat("edge_normal_angle_deg", v, 0.0f, 180.0f, c.edgeNormalAngleDegrees); },
        [](const Config& c) { return formatFloat(c.edgeNormalAngleDegrees); }},
+      {{"adaptive_depth_scale", "0.5", "0 .. 1000", "adaptive: k_d per unit of depth variance (in pixel footprints²); larger refines more"},
+       [](Config& c, const std::string& v) { return parseFloat("adaptive_depth_scale", v, 0.0f, 1000.0f, c.adaptiveDepthScale); },
+       [](const Config& c) { return formatFloat(c.adaptiveDepthScale); }},
+      {{"adaptive_normal_scale", "8", "0 .. 1000", "adaptive: k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"},
+       [](Config& c, const std::string& v) { return parseFloat("adaptive_normal_scale", v, 0.0f, 1000.0f, c.adaptiveNormalScale); },
+       [](const Config& c) { return formatFloat(c.adaptiveNormalScale); }},
+      {{"adaptive_shading_scale", "2", "0 .. 1000", "adaptive: k_s = scale * N * luma range of the first lit sample; larger refines more"},
+       [](Config& c, const std::string& v) { return parseFloat("adaptive_shading_scale", v, 0.0f, 1000.0f, c.adaptiveShadingScale); },
+       [](const Config& c) { return formatFloat(c.adaptiveShadingScale); }},
+      {{"adaptive_threshold_min", "0.0312", "0 .. 1", "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"},
+       [](Config& c, const std::string& v) { return parseFloat("adaptive_threshold_min", v, 0.0f, 1.0f, c.adaptiveThresholdMin); },
+       [](const Config& c) { return formatFloat(c.adaptiveThresholdMin); }},
+      {{"adaptive_threshold_edge", "0.125", "0 .. 1", "adaptive: luma ranges below this fraction of the local maximum never refine"},
+       [](Config& c, const std::string& v) { return parseFloat("adaptive_threshold_edge", v, 0.0f, 1.0f, c.adaptiveThresholdEdge); },
+       [](const Config& c) { return formatFloat(c.adaptiveThresholdEdge); }},
+      {{"adaptive_min_samples", "1", "1 .. 16", "adaptive: floor of the per-pixel sample count; N lights every sample"},
+       [](Config& c, const std::string& v) -> Status {
+         float value = 0;
+         if (Status s = parseFloat("adaptive_min_samples", v, 1.0f, 16.0f, value); !s) return s;
+         if (value != std::floor(value)) return invalid("config key 'adaptive_min_samples': value '" + v + "' is not an integer in [1, 16]");
+         return c.adaptiveMinSamples = int(value), Status::ok();
+       },
+       [](const Config& c) { return std::to_string(c.adaptiveMinSamples); }},
       {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
        [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
        [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},
@@ -118,7 +141,7 @@ const std::vector<Setter>& setters() {
 
 }  // namespace
 
-bool usesMsaa(Method method) { return method == Method::Resolve || method == Method::Edge || method == Method::PerSample; }
+bool usesMsaa(Method method) { return method != Method::Off && method != Method::Fxaa; }
 
 const char* toString(Method method) {
   switch (method) {
@@ -127,6 +150,7 @@ const char* toString(Method method) {
     case Method::Resolve: return "resolve";
     case Method::Edge: return "edge";
     case Method::PerSample: return "per-sample";
+    case Method::Adaptive: return "adaptive";
   }
   return "?";
 }

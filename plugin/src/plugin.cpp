@@ -9,7 +9,8 @@ namespace retroaa {
 namespace {
 
 bool needsMultisampledGBuffer(Method method) { return usesMsaa(method); }
-bool needsSlices(Method method) { return method == Method::Edge || method == Method::PerSample; }
+bool needsSlices(Method method) { return method == Method::Edge || method == Method::PerSample || method == Method::Adaptive; }
+bool needsEdgeMask(Method method) { return method == Method::Edge || method == Method::PerSample; }
 EdgeDetector detectorFor(const Config& config) {
   return config.method == Method::PerSample ? EdgeDetector::EveryPixel : config.edgeDetector;
 }
@@ -56,6 +57,7 @@ struct Plugin::Impl {
   std::unique_ptr<ResolvePass> resolvePass;
   std::unique_ptr<SliceRenderer> slices;
   std::unique_ptr<EdgeMask> edgeMask;
+  std::unique_ptr<AdaptivePass> adaptive;
   std::unique_ptr<FxaaPass> fxaaPass;
   bool resolvedThisFrame = false;
 
@@ -75,11 +77,13 @@ struct Plugin::Impl {
     const Config& config = context.config;
     if (rebuildAll || !needsMultisampledGBuffer(config.method) || (msaa && msaa->requestedSamples() != config.samples)) {
       edgeMask.reset();
+      adaptive.reset();
       slices.reset();
       resolvePass.reset();
       msaa.reset();
     }
-    if (!needsSlices(config.method) || (edgeMask && edgeMask->detector() != detectorFor(config))) edgeMask.reset();
+    if (!needsEdgeMask(config.method) || (edgeMask && edgeMask->detector() != detectorFor(config))) edgeMask.reset();
+    if (config.method != Method::Adaptive) adaptive.reset();
     if (!needsSlices(config.method)) slices.reset();
     if (rebuildAll || !needsFxaa(config)) fxaaPass.reset();
     if (needsMultisampledGBuffer(config.method) && !msaa) {
@@ -97,7 +101,12 @@ struct Plugin::Impl {
       if (!created) return created.error();
       slices = std::move(created.value());
     }
-    if (needsSlices(config.method) && !edgeMask) {
+    if (config.method == Method::Adaptive && !adaptive) {
+      auto created = AdaptivePass::create(context, *msaa, context.capabilities.stencilExport);
+      if (!created) return created.error();
+      adaptive = std::move(created.value());
+    }
+    if (needsEdgeMask(config.method) && !edgeMask) {
       auto created = EdgeMask::create(context, *msaa, detectorFor(config), context.capabilities.stencilExport);
       if (!created) return created.error();
       edgeMask = std::move(created.value());
@@ -111,7 +120,8 @@ struct Plugin::Impl {
   }
 
   uint64_t bytesHeld() const {
-    return (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (fxaaPass ? fxaaPass->bytes() : 0);
+    return (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (adaptive ? adaptive->bytes() : 0) +
+           (fxaaPass ? fxaaPass->bytes() : 0);
   }
 };
 
@@ -155,6 +165,7 @@ Status Plugin::resolve(const FrameInfo& frame) {
   GlStateGuard guard;
   if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
   if (impl_->edgeMask) return impl_->edgeMask->run(context, *impl_->msaa, *impl_->slices, frame);
+  if (impl_->adaptive) return impl_->adaptive->measureGeometry(context, *impl_->msaa, frame);
   return Status::ok();
 }
 
@@ -167,7 +178,9 @@ Status Plugin::shade(const LightingFunction& lighting) {
   impl_->resolvedThisFrame = false;
   if (impl_->slices) {
     GlStateGuard guard;
-    return impl_->slices->shade(context, *impl_->msaa, lighting);
+    const SliceRenderer::Plan plan =
+        impl_->adaptive ? impl_->adaptive->plan(context, *impl_->slices) : SliceRenderer::Plan{};
+    return impl_->slices->shade(context, *impl_->msaa, lighting, plan);
   }
   // Single-slice methods light once, every pixel, in the host's own target.
   context.frameStats.slices = 1;

@@ -4,6 +4,8 @@
 
 #include "../context.h"
 
+#include <functional>
+
 namespace retroaa {
 
 // The multisampled mirror of the host's G-buffer: same attachments and formats, N samples, plus a
@@ -60,10 +62,21 @@ class SliceRenderer {
   // Runs `maskProgram` (a full-screen shader writing the count to location 0, and to
   // gl_FragStencilRefARB when `stencilExport`) to fill the counts and the stencil mask.
   Status writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport);
-  // Lights every slice through `lighting` and composites; the host's G-buffer holds the resolved
-  // values on entry (slice 0 of single-count pixels). Counts evaluations with occlusion queries.
-  Status shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting);
+  // How a method uses the slices.
+  struct Plan {
+    std::vector<int> sampleOrder;  // slice s lights sample sampleOrder[s] (identity when empty)
+    // false: slice 0 writes sample 0 only where count > 1 (single-count pixels keep the resolved
+    // G-buffer); true: slice 0 writes sampleOrder[0] everywhere.
+    bool firstSliceEverywhere = false;
+    // Runs after slice 0 is lit, before anything is composited: a method that needs the lit first
+    // sample to choose its counts writes the mask here (writeMask). Empty: the mask is already there.
+    std::function<Status()> maskAfterFirstSlice;
+  };
+  // Lights every slice through `lighting` and composites (weight 1 / count). Counts evaluations with
+  // occlusion queries.
+  Status shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting, const Plan& plan);
   std::vector<uint8_t> readCounts() const;
+  GLuint firstSliceLight() const { return light_.get(); }  // slice 0's light, inside maskAfterFirstSlice
   uint64_t bytes() const { return bytes_; }
 
  private:
@@ -88,6 +101,31 @@ class EdgeMask {
   EdgeDetector detector_ = EdgeDetector::Coverage;
   bool stencilExport_ = false;
 };
+
+// `adaptive` (Holländer et al.): a geometry metric before lighting, a shading metric on the lit first
+// sample, k samples per pixel taken in an order that spreads them over the pixel.
+class AdaptivePass {
+ public:
+  static Result<std::unique_ptr<AdaptivePass>> create(PluginContext& context, const MsaaGBuffer& source,
+                                                      bool stencilExport);
+  // The geometry metric, after the model pass.
+  Status measureGeometry(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
+  SliceRenderer::Plan plan(PluginContext& context, SliceRenderer& slices);
+  const std::vector<int>& sampleOrder() const { return order_; }
+  uint64_t bytes() const { return bytes_; }
+
+ private:
+  GlProgram geometryProgram_, shadingProgram_;
+  GlTexture geometryK_;
+  GlFramebuffer geometryTarget_;
+  std::vector<int> order_;
+  bool stencilExport_ = false;
+  uint64_t bytes_ = 0;
+};
+
+// The order that spreads the first k of N samples over the pixel for every k: the sample nearest the
+// centre first, then each time the one farthest from those already taken. `positions` in [0, 1)².
+std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY);
 
 // `fxaa`: Lottes' FXAA 3.11 (quality variant) on the tonemapped display target.
 class FxaaPass {

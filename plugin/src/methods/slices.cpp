@@ -98,26 +98,32 @@ Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool
   return Status::ok();
 }
 
-Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting) {
+Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting,
+                            const Plan& plan) {
   const GBufferLayout& layout = context.layout;
   context.frameStats.slices = maxCount_;
+  auto sampleOf = [&](int slice) { return plan.sampleOrder.empty() ? slice : plan.sampleOrder[slice]; };
+  // Stencil for slice s: count > s; slice 0 covers every pixel (or, when it keeps the resolved
+  // G-buffer of single-count pixels, writes only where count > 1).
+  auto sliceStencil = [](int slice) {
+    if (slice == 0) glDisable(GL_STENCIL_TEST); else stencilPassWhereCountAbove(slice);
+  };
   for (int slice = 0; slice < maxCount_; ++slice) {
     {
       ScopedPass timed(context, "slices.write");
-      // Slice 0 of single-count pixels is the resolved G-buffer already there; the rest take sample s.
       glBindFramebuffer(GL_FRAMEBUFFER, sliceWriter_.get());
       fullscreenState(layout);
-      stencilPassWhereCountAbove(std::max(slice, 1));
+      if (slice == 0 && !plan.firstSliceEverywhere) stencilPassWhereCountAbove(1); else sliceStencil(slice);
       glUseProgram(writeSlice_.get());
       source.bind(layout);
       setDepthEncodingUniforms(writeSlice_.get(), layout);
-      glUniform1i(glGetUniformLocation(writeSlice_.get(), "uSample"), slice);
+      glUniform1i(glGetUniformLocation(writeSlice_.get(), "uSample"), sampleOf(slice));
       context.drawFullscreen();
 
       // Count this slice's lighting evaluations exactly: the pixels its stencil test passes.
       glBindFramebuffer(GL_FRAMEBUFFER, lightTarget_.get());
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      if (slice == 0) glDisable(GL_STENCIL_TEST); else stencilPassWhereCountAbove(slice);
+      sliceStencil(slice);
       glUseProgram(markPixels_.get());
       glBindTextureUnit(1, counts_.get());
       glUniform1i(glGetUniformLocation(markPixels_.get(), "uAtLeast"), 0);
@@ -133,17 +139,18 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
       glBindFramebuffer(GL_FRAMEBUFFER, lightTarget_.get());
       fullscreenState(layout);
-      if (slice == 0) glDisable(GL_STENCIL_TEST); else stencilPassWhereCountAbove(slice);
+      sliceStencil(slice);
       lighting(lightTarget_.get());
+    }
+    if (slice == 0 && plan.maskAfterFirstSlice) {
+      if (Status status = plan.maskAfterFirstSlice(); !status) return status;
     }
     {
       ScopedPass timed(context, "slices.composite");
       glBindFramebuffer(GL_FRAMEBUFFER, compositeTarget_.get());
       fullscreenState(layout);
-      if (slice == 0) {
-        glDisable(GL_STENCIL_TEST);  // slice 0 covers every pixel and overwrites the target
-      } else {
-        stencilPassWhereCountAbove(slice);
+      sliceStencil(slice);  // slice 0 overwrites the whole target, later slices add
+      if (slice > 0) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
       }

@@ -1,0 +1,139 @@
+// `adaptive` (Holländer et al.): each metric on hand-written G-buffers, the forced case against
+// per-sample, and the evaluation budget on the demo scene.
+#include "methods/methods.h"
+#include "test_support.h"
+
+#include <numeric>
+
+using namespace testing_support;
+
+namespace {
+
+constexpr int kWidth = 64, kHeight = 16;
+
+class AdaptiveMetrics : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    context();
+    scene_ = host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
+      "materials": [{"name": "m"}], "objects": []})", "empty", ".");
+    renderer_ = std::make_unique<host::Renderer>(scene_, kWidth, kHeight);
+  }
+  // Resolves and shades `pixels` (bottom-up rows) with light = albedo; returns the per-pixel k.
+  std::vector<uint8_t> sampleCounts(const std::vector<std::vector<SyntheticSample>>& pixels) {
+    retroaa::Config config;
+    config.method = retroaa::Method::Adaptive;
+    config.samples = 4;
+    auto hooks = patch::RetroaaHooks::create(renderer_->targets(), config);
+    EXPECT_TRUE(hooks) << hooks.error().message;
+    retroaa::Plugin& plugin = hooks.value()->plugin();
+    samples_ = fillGeometry(plugin, kWidth, kHeight, pixels);
+    EXPECT_TRUE(plugin.resolve({1.0f}));
+    const GLuint color = renderer_->targets().color;
+    EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, kWidth, kHeight); }));
+    evaluations_ = plugin.stats().lightingEvaluations;
+    return plugin.readSliceCounts();
+  }
+  std::vector<std::vector<SyntheticSample>> uniform(const std::vector<SyntheticSample>& pixel) {
+    return std::vector<std::vector<SyntheticSample>>(kWidth * kHeight, pixel);
+  }
+  host::Scene scene_;
+  std::unique_ptr<host::Renderer> renderer_;
+  int samples_ = 0;
+  uint64_t evaluations_ = 0;
+};
+
+}  // namespace
+
+TEST_F(AdaptiveMetrics, FlatPlaneNeedsOneSample) {
+  const auto counts = sampleCounts(uniform({surfaceSample(10), surfaceSample(10), surfaceSample(10), surfaceSample(10)}));
+  for (uint8_t k : counts) ASSERT_EQ(k, 1);
+  EXPECT_EQ(evaluations_, uint64_t(kWidth * kHeight));
+}
+
+TEST_F(AdaptiveMetrics, DepthStepNeedsEverySample) {
+  // Far and near ships alike: the depth metric is measured in pixel footprints.
+  for (float near : {10.0f, 10000.0f}) {
+    const auto counts = sampleCounts(uniform({surfaceSample(near), surfaceSample(near), surfaceSample(near * 2), surfaceSample(near * 2)}));
+    for (uint8_t k : counts) ASSERT_EQ(k, samples_) << "at " << near << " m";
+  }
+}
+
+TEST_F(AdaptiveMetrics, SmallDepthSlopeIsScaleInvariant) {
+  // A gently sloped plane: depths spread by a tenth of a footprint. k must not depend on distance.
+  std::vector<uint8_t> reference;
+  for (float d : {10.0f, 1000.0f, 100000.0f}) {
+    const float footprint = d * std::tan(1.0f / kWidth);
+    const auto counts = sampleCounts(uniform({surfaceSample(d), surfaceSample(d + 0.1f * footprint),
+                                              surfaceSample(d + 0.2f * footprint), surfaceSample(d + 0.3f * footprint)}));
+    if (reference.empty()) reference = counts;
+    EXPECT_EQ(counts, reference) << "at " << d << " m";
+    EXPECT_EQ(counts[0], 1);
+  }
+}
+
+TEST_F(AdaptiveMetrics, NormalCreaseRefines) {
+  const glm::vec3 tilted = glm::normalize(glm::vec3(0.7f, 0.0f, 0.7f));
+  const auto counts = sampleCounts(uniform({surfaceSample(10), surfaceSample(10), surfaceSample(10, tilted), surfaceSample(10, tilted)}));
+  for (uint8_t k : counts) ASSERT_GT(k, 1);
+}
+
+TEST_F(AdaptiveMetrics, LuminanceEdgeOnAFlatPlaneRefinesOnlyThere) {
+  // One flat plane, dark left half and bright right half: geometry says 1, shading says more, and
+  // only at the columns beside the change.
+  std::vector<std::vector<SyntheticSample>> pixels(kWidth * kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const SyntheticSample s = surfaceSample(10, {0, 0, 1}, glm::vec3(x < kWidth / 2 ? 0.05f : 0.9f));
+      pixels[y * kWidth + x] = {s, s, s, s};
+    }
+  const auto counts = sampleCounts(pixels);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const bool besideEdge = x == kWidth / 2 - 1 || x == kWidth / 2;
+      if (besideEdge)
+        EXPECT_GT(counts[y * kWidth + x], 1) << x << "," << y;
+      else
+        EXPECT_EQ(counts[y * kWidth + x], 1) << x << "," << y;
+    }
+}
+
+TEST(Adaptive, SampleOrderSpreadsOverThePixel) {
+  // The standard 4× pattern: nearest the centre first, then the farthest from it, and so on.
+  const std::vector<float> positions = {0.375f, 0.125f, 0.875f, 0.375f, 0.125f, 0.625f, 0.625f, 0.875f};
+  const std::vector<int> order = retroaa::spreadingSampleOrder(positions);
+  ASSERT_EQ(order.size(), 4u);
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(sorted, (std::vector<int>{0, 1, 2, 3}));
+  // The first two are on opposite sides of the centre.
+  const glm::vec2 a(positions[2 * order[0]], positions[2 * order[0] + 1]), b(positions[2 * order[1]], positions[2 * order[1] + 1]);
+  EXPECT_LT(glm::dot(a - glm::vec2(0.5f), b - glm::vec2(0.5f)), 0.0f);
+}
+
+TEST(Adaptive, ForcedToEverySampleEqualsPerSample) {
+  PatchedHost host("default", 160, 120);
+  const app::DisplayImage perSample = host.render("per-sample");
+  retroaa::Config config;
+  config.adaptiveMinSamples = 16;  // clamped to N in the shader: every pixel takes every sample
+  const app::DisplayImage forced = host.render("adaptive", config);
+  double worst = 0;
+  for (size_t i = 0; i < forced.rgb.size(); ++i) worst = std::max<double>(worst, std::fabs(forced.rgb[i] - perSample.rgb[i]));
+  EXPECT_LE(worst, 1.0 / 255.0 + 1e-6);
+  EXPECT_EQ(host.hooks->plugin().stats().evaluationsPerPixel(), double(host.hooks->plugin().stats().samples));
+}
+
+TEST(Adaptive, DemoSceneWithinTheBudgetNearPerSampleQuality) {
+  PatchedHost host("default", 320, 240);
+  const app::DisplayImage perSample = host.render("per-sample");
+  const double perSampleEvaluations = host.hooks->plugin().stats().evaluationsPerPixel();
+  const app::DisplayImage adaptive = host.render("adaptive");
+  const retroaa::Stats stats = host.hooks->plugin().stats();
+  const std::vector<uint8_t> counts = host.hooks->plugin().readSliceCounts();
+  const double psnr = app::compare(adaptive, perSample, {}).psnrDb;
+  std::printf("adaptive: %.3f evaluations/pixel (%.1f %% of per-sample), PSNR vs per-sample %.2f dB\n",
+              stats.evaluationsPerPixel(), 100.0 * stats.evaluationsPerPixel() / perSampleEvaluations, psnr);
+  EXPECT_EQ(stats.lightingEvaluations, std::accumulate(counts.begin(), counts.end(), uint64_t(0)));
+  EXPECT_LE(stats.evaluationsPerPixel(), 0.6 * perSampleEvaluations);
+  EXPECT_GE(psnr, 40.0);
+}
