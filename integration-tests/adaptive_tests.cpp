@@ -13,32 +13,19 @@ constexpr int kWidth = 64, kHeight = 16;
 
 class AdaptiveMetrics : public ::testing::Test {
  protected:
-  void SetUp() override {
-    context();
-    scene_ = host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
-      "materials": [{"name": "m"}], "objects": []})", "empty", ".");
-    renderer_ = std::make_unique<host::Renderer>(scene_, kWidth, kHeight);
-  }
-  // Resolves and shades `pixels` (bottom-up rows) with light = albedo; returns the per-pixel k.
+  // The per-pixel k of `adaptive` on `pixels` (bottom-up rows), lit with light = albedo.
   std::vector<uint8_t> sampleCounts(const std::vector<std::vector<SyntheticSample>>& pixels) {
     retroaa::Config config;
     config.method = retroaa::Method::Adaptive;
-    config.samples = 4;
-    auto hooks = patch::RetroaaHooks::create(renderer_->targets(), config);
-    EXPECT_TRUE(hooks) << hooks.error().message;
-    retroaa::Plugin& plugin = hooks.value()->plugin();
-    samples_ = fillGeometry(plugin, kWidth, kHeight, pixels);
-    EXPECT_TRUE(plugin.resolve({1.0f}));
-    const GLuint color = renderer_->targets().color;
-    EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, kWidth, kHeight); }));
-    evaluations_ = plugin.stats().lightingEvaluations;
-    return plugin.readSliceCounts();
+    auto hooks = frame_.run(config, pixels);
+    samples_ = frame_.samples;
+    evaluations_ = hooks->plugin().stats().lightingEvaluations;
+    return hooks->plugin().readSliceCounts();
   }
   std::vector<std::vector<SyntheticSample>> uniform(const std::vector<SyntheticSample>& pixel) {
     return std::vector<std::vector<SyntheticSample>>(kWidth * kHeight, pixel);
   }
-  host::Scene scene_;
-  std::unique_ptr<host::Renderer> renderer_;
+  SyntheticFrame frame_{kWidth, kHeight};
   int samples_ = 0;
   uint64_t evaluations_ = 0;
 };

@@ -143,4 +143,32 @@ void main() { outLight = vec4(texelFetch(uColor, ivec2(gl_FragCoord.xy), 0).rgb,
                    [](GLuint) {});
 }
 
+SyntheticFrame::SyntheticFrame(int w, int h) : width(w), height(h) {
+  context();
+  scene = host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
+    "materials": [{"name": "m"}], "objects": []})", "empty", ".");
+  renderer = std::make_unique<host::Renderer>(scene, width, height);
+}
+
+std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::run(const retroaa::Config& config,
+                                                         const std::vector<std::vector<SyntheticSample>>& pixels) {
+  auto hooks = patch::RetroaaHooks::create(renderer->targets(), config);
+  if (!hooks) {
+    ADD_FAILURE() << hooks.error().message;
+    return nullptr;
+  }
+  retroaa::Plugin& plugin = hooks.value()->plugin();
+  samples = fillGeometry(plugin, width, height, pixels);
+  EXPECT_TRUE(plugin.resolve({1.0f}));
+  const GLuint color = renderer->targets().color;
+  EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, width, height); }));
+  return std::move(hooks.value());
+}
+
+std::vector<glm::vec4> SyntheticFrame::read(GLuint texture) const {
+  std::vector<glm::vec4> pixels(size_t(width) * height);
+  glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(glm::vec4)), pixels.data());
+  return pixels;
+}
+
 }  // namespace testing_support

@@ -51,6 +51,20 @@ int fillGeometry(retroaa::Plugin& plugin, int width, int height, const std::vect
 // A stand-in for a host lighting pass: light = albedo, read from the host's colour attachment.
 void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height);
 
+// A host with no scene objects whose G-buffer the tests write by hand: runs one frame of a method on
+// hand-written samples, lit by `albedoAsLight`.
+struct SyntheticFrame {
+  host::Scene scene;
+  std::unique_ptr<host::Renderer> renderer;
+  int width, height;
+  int samples = 0;  // allocated by the last run
+  SyntheticFrame(int width, int height);
+  // Resolves and shades `pixels` (see fillGeometry) with `config`; the returned hooks own the plugin.
+  std::unique_ptr<patch::RetroaaHooks> run(const retroaa::Config& config,
+                                           const std::vector<std::vector<SyntheticSample>>& pixels);
+  std::vector<glm::vec4> read(GLuint texture) const;  // RGBA float, GL's bottom-up rows
+};
+
 // The pixel (top-down image coordinates) where a world point lands for the scene camera.
 glm::ivec2 projectToPixel(const host::Camera& camera, glm::vec3 world, int width, int height);
 

@@ -82,7 +82,8 @@ std::vector<uint8_t> visualiseCounts(const std::string& view, const std::vector<
         for (int c = 0; c < 3; ++c) p[c] = uint8_t(displayTopDown[top * 4 + c] * 0.35f);
         if (count > 1) p[0] = 255, p[1] = 0, p[2] = 255;
       } else {
-        const float t = maxCount > 1 ? float(count - 1) / float(maxCount - 1) : 0.0f;  // 0 → blue, 1 → red
+        // samples / aggregates: the count 1 … maxCount, blue → green → red
+        const float t = maxCount > 1 ? std::min(float(count - 1) / float(maxCount - 1), 1.0f) : 0.0f;
         p[0] = uint8_t(255 * std::clamp(2.0f * t - 1.0f, 0.0f, 1.0f));
         p[1] = uint8_t(255 * (1.0f - std::fabs(2.0f * t - 1.0f)));
         p[2] = uint8_t(255 * std::clamp(1.0f - 2.0f * t, 0.0f, 1.0f));
@@ -129,7 +130,7 @@ std::vector<std::string> expandMethodList(const std::string& list) {
   while (std::getline(in, item, ',')) {
     if (item == "all") {
       for (const char* m : {"off", "fxaa", "resolve", "resolve/front", "resolve/back", "resolve/fso",
-                            "resolve/mean", "resolve+fxaa", "edge", "adaptive", "per-sample"})
+                            "resolve/mean", "resolve+fxaa", "edge", "adaptive", "aggregate", "per-sample"})
         out.push_back(m);
     } else if (!item.empty()) {
       out.push_back(item);
@@ -159,8 +160,8 @@ int runRender(const RenderOptions& options) {
   }
   auto meta = metadata(session, options.method);
   if (!options.show.empty()) {
-    if (options.show != "edges" && options.show != "samples")
-      throw std::invalid_argument("--show must be edges or samples, got '" + options.show + "'");
+    if (options.show != "edges" && options.show != "samples" && options.show != "aggregates")
+      throw std::invalid_argument("--show must be edges, samples or aggregates, got '" + options.show + "'");
     const retroaa::Stats stats = session.hooks->plugin().stats();
     display = visualiseCounts(options.show, session.hooks->plugin().readSliceCounts(), display, options.width,
                               options.height, std::max(stats.samples, 1));

@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--gt-samples", render.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
   renderCmd->add_option("--out", render.out, "output image (.png display, .exr linear radiance)")->required();
   renderCmd->add_option("--heatmap", render.heatmap, "also write the error against ground truth as a heat map");
-  renderCmd->add_option("--show", render.show, "write a visualisation instead: edges | samples (lighting evaluations per pixel)");
+  renderCmd->add_option("--show", render.show, "write a visualisation instead: edges | samples | aggregates (lighting evaluations per pixel)");
   addConfigOptions(renderCmd);
 
   app::BenchOptions bench;

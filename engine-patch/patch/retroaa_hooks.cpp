@@ -20,6 +20,8 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
   layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::LogAboveKnee;
   layout.depthEncoding.knee = host::depth_codec::kKnee;
   layout.depthEncoding.backgroundAbove = host::depth_codec::kBackgroundThreshold;
+  // The host's Blinn-Phong exponent is exp2(gloss · 10 + 1) (lighting_common.glsl).
+  layout.glossEncoding = {true, 10.0f, 1.0f};
   layout.gbufferFramebuffer = targets.gbufferFramebuffer;
   layout.depthStencilTexture = targets.depthStencil;
   layout.lightFramebuffer = targets.lightFramebuffer;

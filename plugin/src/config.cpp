@@ -50,7 +50,7 @@ Status parseBool(const std::string& key, const std::string& value, bool& out) {
   return invalid("config key '" + key + "': value '" + value + "' is not a switch (allowed: on, off)");
 }
 
-constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve, Method::Edge, Method::PerSample, Method::Adaptive};
+constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve, Method::Edge, Method::PerSample, Method::Adaptive, Method::Aggregate};
 constexpr EdgeDetector kEdgeDetectors[] = {EdgeDetector::Depth,    EdgeDetector::Plane,    EdgeDetector::Normal,
                                            EdgeDetector::Material, EdgeDetector::Coverage, EdgeDetector::EveryPixel};
 constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
@@ -72,7 +72,7 @@ std::string formatFloat(float v) {
 
 const std::vector<Setter>& setters() {
   static const std::vector<Setter> table = {
-      {{"method", "off", "off, fxaa, resolve, edge, per-sample, adaptive", "which AA method runs; changing it reallocates only what it needs"},
+      {{"method", "off", "off, fxaa, resolve, edge, per-sample, adaptive, aggregate", "which AA method runs; changing it reallocates only what it needs"},
        [](Config& c, const std::string& v) { return parseEnum("method", v, kMethods, c.method); },
        [](const Config& c) { return std::string(toString(c.method)); }},
       {{"samples", "4", "1, 2, 4, 8, 16", "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
@@ -120,6 +120,19 @@ const std::vector<Setter>& setters() {
          return c.adaptiveMinSamples = int(value), Status::ok();
        },
        [](const Config& c) { return std::to_string(c.adaptiveMinSamples); }},
+      {{"aggregate_count", "2", "1 .. 4", "aggregate: at most this many aggregates per pixel (plus background); more is closer to per-sample"},
+       [](Config& c, const std::string& v) -> Status {
+         for (int allowed : {1, 2, 3, 4})
+           if (v == std::to_string(allowed)) return c.aggregateCount = allowed, Status::ok();
+         return invalid("config key 'aggregate_count': value '" + v + "' is not one of 1, 2, 3, 4");
+       },
+       [](const Config& c) { return std::to_string(c.aggregateCount); }},
+      {{"aggregate_threshold", "0.1", "0 .. 10", "aggregate: t, the distance beyond which a sample seeds a new aggregate; 0 splits every distinct sample"},
+       [](Config& c, const std::string& v) { return parseFloat("aggregate_threshold", v, 0.0f, 10.0f, c.aggregateThreshold); },
+       [](const Config& c) { return formatFloat(c.aggregateThreshold); }},
+      {{"aggregate_length", "4", "0.01 .. 1000", "aggregate: k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"},
+       [](Config& c, const std::string& v) { return parseFloat("aggregate_length", v, 0.01f, 1000.0f, c.aggregateLength); },
+       [](const Config& c) { return formatFloat(c.aggregateLength); }},
       {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
        [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
        [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},
@@ -151,6 +164,7 @@ const char* toString(Method method) {
     case Method::Edge: return "edge";
     case Method::PerSample: return "per-sample";
     case Method::Adaptive: return "adaptive";
+    case Method::Aggregate: return "aggregate";
   }
   return "?";
 }

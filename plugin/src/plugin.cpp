@@ -9,7 +9,9 @@ namespace retroaa {
 namespace {
 
 bool needsMultisampledGBuffer(Method method) { return usesMsaa(method); }
-bool needsSlices(Method method) { return method == Method::Edge || method == Method::PerSample || method == Method::Adaptive; }
+bool needsSlices(Method method) {
+  return method == Method::Edge || method == Method::PerSample || method == Method::Adaptive || method == Method::Aggregate;
+}
 bool needsEdgeMask(Method method) { return method == Method::Edge || method == Method::PerSample; }
 EdgeDetector detectorFor(const Config& config) {
   return config.method == Method::PerSample ? EdgeDetector::EveryPixel : config.edgeDetector;
@@ -58,8 +60,10 @@ struct Plugin::Impl {
   std::unique_ptr<SliceRenderer> slices;
   std::unique_ptr<EdgeMask> edgeMask;
   std::unique_ptr<AdaptivePass> adaptive;
+  std::unique_ptr<AggregatePass> aggregate;
   std::unique_ptr<FxaaPass> fxaaPass;
   bool resolvedThisFrame = false;
+  int aggregateCount_ = 0;  // the c the aggregate shaders were built for
 
   // Grants a requested config against the context: clamps samples (with a warning).
   Config grant(Config requested) {
@@ -78,12 +82,14 @@ struct Plugin::Impl {
     if (rebuildAll || !needsMultisampledGBuffer(config.method) || (msaa && msaa->requestedSamples() != config.samples)) {
       edgeMask.reset();
       adaptive.reset();
+      aggregate.reset();
       slices.reset();
       resolvePass.reset();
       msaa.reset();
     }
     if (!needsEdgeMask(config.method) || (edgeMask && edgeMask->detector() != detectorFor(config))) edgeMask.reset();
     if (config.method != Method::Adaptive) adaptive.reset();
+    if (config.method != Method::Aggregate || (aggregate && aggregateCount_ != config.aggregateCount)) aggregate.reset();
     if (!needsSlices(config.method)) slices.reset();
     if (rebuildAll || !needsFxaa(config)) fxaaPass.reset();
     if (needsMultisampledGBuffer(config.method) && !msaa) {
@@ -106,6 +112,12 @@ struct Plugin::Impl {
       if (!created) return created.error();
       adaptive = std::move(created.value());
     }
+    if (config.method == Method::Aggregate && !aggregate) {
+      auto created = AggregatePass::create(context, *msaa, *slices, context.capabilities.stencilExport);
+      if (!created) return created.error();
+      aggregate = std::move(created.value());
+      aggregateCount_ = config.aggregateCount;
+    }
     if (needsEdgeMask(config.method) && !edgeMask) {
       auto created = EdgeMask::create(context, *msaa, detectorFor(config), context.capabilities.stencilExport);
       if (!created) return created.error();
@@ -121,6 +133,7 @@ struct Plugin::Impl {
 
   uint64_t bytesHeld() const {
     return (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (adaptive ? adaptive->bytes() : 0) +
+           (aggregate ? aggregate->bytes() : 0) +
            (fxaaPass ? fxaaPass->bytes() : 0);
   }
 };
@@ -166,6 +179,7 @@ Status Plugin::resolve(const FrameInfo& frame) {
   if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
   if (impl_->edgeMask) return impl_->edgeMask->run(context, *impl_->msaa, *impl_->slices, frame);
   if (impl_->adaptive) return impl_->adaptive->measureGeometry(context, *impl_->msaa, frame);
+  if (impl_->aggregate) return impl_->aggregate->cluster(context, *impl_->msaa, *impl_->slices, frame);
   return Status::ok();
 }
 
@@ -178,8 +192,9 @@ Status Plugin::shade(const LightingFunction& lighting) {
   impl_->resolvedThisFrame = false;
   if (impl_->slices) {
     GlStateGuard guard;
-    const SliceRenderer::Plan plan =
-        impl_->adaptive ? impl_->adaptive->plan(context, *impl_->slices) : SliceRenderer::Plan{};
+    SliceRenderer::Plan plan;
+    if (impl_->adaptive) plan = impl_->adaptive->plan(context, *impl_->slices);
+    if (impl_->aggregate) plan = impl_->aggregate->plan(context, *impl_->msaa);
     return impl_->slices->shade(context, *impl_->msaa, lighting, plan);
   }
   // Single-slice methods light once, every pixel, in the host's own target.

@@ -20,6 +20,7 @@ enum class Method : uint8_t {
   Edge,       // Thibieroz: edge pixels lit once per sample, the rest once (1 + (N-1)·edge fraction)
   PerSample,  // every sample of every pixel lit: the quality reference at rate N (N evals/pixel)
   Adaptive,   // Holländer et al.: k samples per pixel from geometry and shading metrics (1 + Σ(k−1)/pixels)
+  Aggregate,  // Crassin et al. (AGAA): ≤ c aggregates per pixel, each lit once, weighted by coverage
 };
 
 // How `edge` decides that a pixel's samples see more than one surface.
@@ -73,6 +74,10 @@ struct Config {
   float adaptiveThresholdMin = 0.0312f;   // k_s = 0 below this luma range (FXAA's), [0, 1]
   float adaptiveThresholdEdge = 0.125f;   // … or below this fraction of the local max luma, [0, 1]
   int adaptiveMinSamples = 1;  // floor of k, [1, 16]; N forces every sample (equals per-sample)
+  // `aggregate` (Crassin et al. 2016): at most c aggregates per pixel (plus one for background).
+  int aggregateCount = 2;           // c, [1, 4]; more aggregates: closer to per-sample, more evaluations
+  float aggregateThreshold = 0.1f;  // t, [0, 10]: a new aggregate only beyond this distance; 0 splits all distinct samples
+  float aggregateLength = 4.0f;     // k in pixel footprints, [0.01, 1000]: depth gaps beyond ~k·sqrt(t) split
   // FXAA after tonemapping, stacked on any method (FreeSpace Open users combine -msaa and FXAA).
   bool fxaa = false;
   FxaaQuality fxaaQuality = FxaaQuality::High;

@@ -49,6 +49,14 @@ struct DepthEncoding {
   float backgroundAbove = 65280.0f;  // stored values at or above this mark "no geometry"
 };
 
+// How the host maps its gloss channel (NormalGloss.w) to a specular exponent; retroaa's aggregates
+// lower gloss by the spread of the normals they merge (Toksvig) in exponent space.
+struct GlossEncoding {
+  bool present = false;            // false: gloss is averaged like any channel
+  float log2ExponentScale = 10.0f;  // exponent = exp2(gloss · scale + bias)
+  float log2ExponentBias = 1.0f;
+};
+
 struct Attachment {
   AttachmentRole role = AttachmentRole::Other;
   GLenumValue internalFormat = 0;  // e.g. GL_RGBA16F; the MSAA copy uses the same
@@ -61,6 +69,7 @@ struct GBufferLayout {
   std::vector<Attachment> attachments;  // in draw-buffer order: attachment i is location i
   int depthChannel = 2;                 // channel of ViewPosition holding encoded depth
   DepthEncoding depthEncoding;
+  GlossEncoding glossEncoding;
   GLuintHandle gbufferFramebuffer = 0;  // the host's single-sample G-buffer (attachments + depth)
   GLuintHandle depthStencilTexture = 0;  // DEPTH24_STENCIL8
   uint8_t hostStencilBits = 0x00;       // stencil bits the host owns; retroaa leaves them alone

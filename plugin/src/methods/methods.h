@@ -61,7 +61,10 @@ class SliceRenderer {
   static Result<std::unique_ptr<SliceRenderer>> create(PluginContext& context, const MsaaGBuffer& source);
   // Runs `maskProgram` (a full-screen shader writing the count to location 0, and to
   // gl_FragStencilRefARB when `stencilExport`) to fill the counts and the stencil mask.
-  Status writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport);
+  // `target` (0: the plugin's own) must hold the counts at location 0 and this renderer's mask as stencil.
+  Status writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport, GLuint target = 0);
+  GLuint counts() const { return counts_.get(); }
+  GLuint mask() const { return mask_.get(); }
   // How a method uses the slices.
   struct Plan {
     std::vector<int> sampleOrder;  // slice s lights sample sampleOrder[s] (identity when empty)
@@ -71,6 +74,12 @@ class SliceRenderer {
     // Runs after slice 0 is lit, before anything is composited: a method that needs the lit first
     // sample to choose its counts writes the mask here (writeMask). Empty: the mask is already there.
     std::function<Status()> maskAfterFirstSlice;
+    int sliceCount = 0;  // most slices a pixel may need (0: the sample count)
+    // A method's own slice writer (0: sample sampleOrder[s] verbatim). It gets uniform `uSlice`;
+    // `bindWriteInputs` binds what else it reads.
+    GLuint writeProgram = 0;
+    std::function<void()> bindWriteInputs;
+    GLuint coverageAssignment = 0;  // non-zero: composite weights from this per-sample slice index texture
   };
   // Lights every slice through `lighting` and composites (weight 1 / count). Counts evaluations with
   // occlusion queries.
@@ -119,6 +128,25 @@ class AdaptivePass {
   GlTexture geometryK_;
   GlFramebuffer geometryTarget_;
   std::vector<int> order_;
+  bool stencilExport_ = false;
+  uint64_t bytes_ = 0;
+};
+
+// `aggregate` (Crassin et al., AGAA): samples clustered into ≤ c aggregates per pixel (Algorithm 1),
+// each aggregate's mean attributes one slice, composited by coverage.
+class AggregatePass {
+ public:
+  static Result<std::unique_ptr<AggregatePass>> create(PluginContext& context, const MsaaGBuffer& source,
+                                                       SliceRenderer& slices, bool stencilExport);
+  Status cluster(PluginContext& context, const MsaaGBuffer& source, SliceRenderer& slices, const FrameInfo& frame);
+  SliceRenderer::Plan plan(PluginContext& context, const MsaaGBuffer& source);
+  uint64_t bytes() const { return bytes_; }
+
+ private:
+  GlProgram clusterProgram_, writeProgram_;
+  GlTexture assignment_;
+  GlFramebuffer clusterTarget_;
+  std::vector<float> samplePositions_;
   bool stencilExport_ = false;
   uint64_t bytes_ = 0;
 };

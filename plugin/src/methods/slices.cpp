@@ -70,13 +70,14 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
   return slices;
 }
 
-Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport) {
+Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport, GLuint target) {
   const GBufferLayout& layout = context.layout;
-  glBindFramebuffer(GL_FRAMEBUFFER, maskTarget_.get());
+  if (target == 0) target = maskTarget_.get();
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
   fullscreenState(layout);
   const GLuint zero[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferuiv(maskTarget_.get(), GL_COLOR, 0, zero);
-  glClearNamedFramebufferfi(maskTarget_.get(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glClearNamedFramebufferuiv(target, GL_COLOR, 0, zero);
+  glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xFF);
   glStencilFunc(GL_ALWAYS, 0, 0xFF);
@@ -101,23 +102,31 @@ Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool
 Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting,
                             const Plan& plan) {
   const GBufferLayout& layout = context.layout;
-  context.frameStats.slices = maxCount_;
+  const int sliceCount = plan.sliceCount > 0 ? plan.sliceCount : maxCount_;
+  context.frameStats.slices = sliceCount;
   auto sampleOf = [&](int slice) { return plan.sampleOrder.empty() ? slice : plan.sampleOrder[slice]; };
   // Stencil for slice s: count > s; slice 0 covers every pixel (or, when it keeps the resolved
   // G-buffer of single-count pixels, writes only where count > 1).
   auto sliceStencil = [](int slice) {
     if (slice == 0) glDisable(GL_STENCIL_TEST); else stencilPassWhereCountAbove(slice);
   };
-  for (int slice = 0; slice < maxCount_; ++slice) {
+  for (int slice = 0; slice < sliceCount; ++slice) {
     {
       ScopedPass timed(context, "slices.write");
       glBindFramebuffer(GL_FRAMEBUFFER, sliceWriter_.get());
       fullscreenState(layout);
       if (slice == 0 && !plan.firstSliceEverywhere) stencilPassWhereCountAbove(1); else sliceStencil(slice);
-      glUseProgram(writeSlice_.get());
-      source.bind(layout);
-      setDepthEncodingUniforms(writeSlice_.get(), layout);
-      glUniform1i(glGetUniformLocation(writeSlice_.get(), "uSample"), sampleOf(slice));
+      if (plan.writeProgram) {
+        glUseProgram(plan.writeProgram);
+        source.bind(layout);
+        if (plan.bindWriteInputs) plan.bindWriteInputs();
+        glUniform1i(glGetUniformLocation(plan.writeProgram, "uSlice"), slice);
+      } else {
+        glUseProgram(writeSlice_.get());
+        source.bind(layout);
+        setDepthEncodingUniforms(writeSlice_.get(), layout);
+        glUniform1i(glGetUniformLocation(writeSlice_.get(), "uSample"), sampleOf(slice));
+      }
       context.drawFullscreen();
 
       // Count this slice's lighting evaluations exactly: the pixels its stencil test passes.
@@ -157,6 +166,10 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       glUseProgram(composite_.get());
       glBindTextureUnit(0, light_.get());
       glBindTextureUnit(1, counts_.get());
+      glBindTextureUnit(14, plan.coverageAssignment);
+      glUniform1i(glGetUniformLocation(composite_.get(), "uSlice"), slice);
+      glUniform1i(glGetUniformLocation(composite_.get(), "uCoverageWeights"), plan.coverageAssignment ? 1 : 0);
+      glUniform1i(glGetUniformLocation(composite_.get(), "uSamples"), source.samples());
       context.drawFullscreen();
     }
   }

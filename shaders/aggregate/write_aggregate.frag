@@ -1,0 +1,45 @@
+#version 450 core
+// Aggregate `uSlice` of each pixel as one G-buffer sample: mean albedo, specular, emissive, position
+// (depth averaged in metres), mean normal renormalised; where the layout has a gloss channel, gloss is
+// lowered by the spread of the normals (Toksvig: a shorter mean normal means a blurrier highlight).
+#include "common/gbuffer.glsl"
+#include "aggregate/aggregate.glsl"
+uniform int uSlice;
+uniform int uHasGloss;
+uniform float uGlossScale;  // the layout's gloss: specular exponent = exp2(gloss · scale + bias)
+uniform float uGlossBias;
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  uvec2 assignment = texelFetch(uAssignment, pixel, 0).xy;
+  vec4 values[ATTACHMENT_COUNT];
+  for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
+  float depthSum = 0.0, count = 0.0;
+  vec3 normalSum = vec3(0.0);
+  for (int s = 0; s < SAMPLES; ++s) {
+    if (sliceOfSample(assignment, s) != uint(uSlice)) continue;
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += FETCH(uAttachments[a], pixel, s);
+    depthSum += sampleDistance(pixel, s);
+#if NORMAL_ATTACHMENT >= 0
+    vec3 n = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).xyz;
+    normalSum += dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
+#endif
+    count += 1.0;
+  }
+  if (count == 0.0) discard;
+  for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] /= count;
+  float meanDepth = depthSum / count;
+  if (!isinf(meanDepth)) {  // background aggregates keep their (averaged) marker
+    values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = encodeDepth(meanDepth);
+#if NORMAL_ATTACHMENT >= 0
+    float length = length(normalSum) / count;
+    values[NORMAL_ATTACHMENT].xyz = length > 1e-4 ? normalize(normalSum) : vec3(0.0, 0.0, 1.0);
+    if (uHasGloss != 0) {
+      float exponent = exp2(values[NORMAL_ATTACHMENT].w * uGlossScale + uGlossBias);
+      float widened = length * exponent / (length + exponent * (1.0 - length));  // Toksvig 2004
+      values[NORMAL_ATTACHMENT].w = clamp((log2(max(widened, 1e-6)) - uGlossBias) / uGlossScale, 0.0, 1.0);
+    }
+#endif
+  }
+  STORE_OUTPUTS(values);
+}
