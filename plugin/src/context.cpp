@@ -47,6 +47,9 @@ uint64_t bytesPerTexel(GLenum internalFormat) {
   switch (internalFormat) {
     case GL_RGBA32F: return 16;
     case GL_RGBA16F: return 8;
+    case GL_RG32UI: return 8;
+    case GL_R16F: return 2;
+    case GL_R8UI: return 1;
     case GL_RG16F: return 4;
     case GL_R32F: return 4;
     case GL_RGBA8:
