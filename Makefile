@@ -9,7 +9,7 @@ APT_PACKAGES = cmake g++ make pkg-config git \
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev libglfw3-dev libglm-dev \
   libopenimageio-dev openimageio-tools nlohmann-json3-dev libcli11-dev libassimp-dev libgtest-dev
 
-.PHONY: deps build demo test clean
+.PHONY: deps build demo test docs-config clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -32,6 +32,11 @@ demo: build
 
 test: build
 	cd $(BUILD) && LP_NUM_THREADS=2 ctest --output-on-failure -j2
+
+# Regenerates the key table of docs/config.md from the parser's own table (a test checks they agree).
+docs-config: build
+	@{ sed '/<!-- generated: retroaa config --markdown -->/q' docs/config.md; $(RETROAA) config --markdown; \
+	   sed -n '/<!-- end generated -->/,$$p' docs/config.md; } > docs/config.md.new && mv docs/config.md.new docs/config.md
 
 clean:
 	rm -rf $(BUILD) out

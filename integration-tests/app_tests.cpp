@@ -102,5 +102,5 @@ TEST(Docs, ConfigReferenceMatchesTheParser) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_NE(text.str().find(app::configReference(true)), std::string::npos)
-      << "docs/config.md is stale: regenerate its table with `retroaa config --markdown`";
+      << "docs/config.md is stale: regenerate its table with `make docs-config`";
 }

@@ -105,11 +105,15 @@ MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base)
     if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
     rest = rest.substr(0, at);
   }
-  const size_t plus = rest.find('+');
-  if (plus != std::string::npos) {
-    if (rest.substr(plus + 1) != "fxaa")
-      throw std::invalid_argument("method '" + spec + "': only '+fxaa' can be stacked");
-    out.config.fxaa = true;
+  // Stacked post filters: +coverage, +fxaa, in either order.
+  for (size_t plus = rest.rfind('+'); plus != std::string::npos; plus = rest.rfind('+')) {
+    const std::string stacked = rest.substr(plus + 1);
+    if (stacked == "fxaa")
+      out.config.fxaa = true;
+    else if (stacked == "coverage")
+      out.config.coverageFilter = true;
+    else
+      throw std::invalid_argument("method '" + spec + "': only '+fxaa' and '+coverage' can be stacked");
     rest = rest.substr(0, plus);
   }
   const size_t slash = rest.find('/');
@@ -130,7 +134,8 @@ std::vector<std::string> expandMethodList(const std::string& list) {
   while (std::getline(in, item, ',')) {
     if (item == "all") {
       for (const char* m : {"off", "fxaa", "resolve", "resolve/front", "resolve/back", "resolve/fso",
-                            "resolve/mean", "resolve+fxaa", "edge", "adaptive", "aggregate", "per-sample"})
+                            "resolve/mean", "resolve+fxaa", "coverage", "resolve+coverage", "edge", "adaptive", "aggregate",
+                            "per-sample"})
         out.push_back(m);
     } else if (!item.empty()) {
       out.push_back(item);

@@ -17,6 +17,7 @@ struct HostTargets {
   GLuint depthStencil = 0;        // DEPTH24_STENCIL8 texture
   GLuint lightFramebuffer = 0, lightTexture = 0;  // RGBA16F light accumulation ("composite")
   GLuint displayFramebuffer = 0, displayTexture = 0;  // RGBA8 tonemapped output
+  bool logarithmicDepth = true;   // depth buffer holds log2(d/near)/log2(far/near), else perspective depth
 };
 
 // Camera facts a resolve needs for its closeness test, per frame.
@@ -24,7 +25,11 @@ struct FrameView {
   float horizontalFovRadians = 1.0f;
   float verticalFovRadians = 1.0f;
   int width = 0, height = 0;
+  float nearPlane = 0.1f, farPlane = 1e6f;  // metres
 };
+
+// Draws the frame's models again into `target` (depth only: colour writes off).
+using DepthOnlyModelPass = std::function<void(GLuint target)>;
 
 // The host's lighting pass: renders every light of the frame, reading the host's single-sample
 // G-buffer, into `target` (a framebuffer with one RGBA16F colour attachment).
@@ -39,6 +44,10 @@ class FrameHooks {
   virtual GLuint modelPassFramebuffer(GLuint stockGbuffer) { return stockGbuffer; }
   // gr_opengl_deferred_lighting_msaa() / _end(): the model pass is done.
   virtual void modelPassEnd(const FrameView&) {}
+  // After the model pass: an AA module that wants a multisampled depth-only copy of the models
+  // (coverage filtering) draws them here. FreeSpace Open has no such call site: it would be a second
+  // model loop at the end of gr_opengl_deferred_lighting_end() with colour writes off.
+  virtual void depthOnlyPass(const DepthOnlyModelPass&) {}
   // gr_opengl_deferred_lighting_finish(): run the host's lighting.
   virtual void lighting(const LightingPass& pass, GLuint stockLightFramebuffer) { pass(stockLightFramebuffer); }
   // gr_opengl_post_process_end(): after tonemapping, on the display target.

@@ -26,8 +26,10 @@ std::string expandIncludes(const std::string& file, int depth = 0) {
   return out;
 }
 
-GLuint compile(GLenum stage, const std::string& file) {
-  const std::string source = expandIncludes(file);
+GLuint compile(GLenum stage, const std::string& file, const std::string& defines) {
+  std::string source = expandIncludes(file);
+  const size_t versionEnd = source.find('\n');
+  if (!defines.empty() && source.rfind("#version", 0) == 0) source.insert(versionEnd + 1, defines);
   const GLuint shader = glCreateShader(stage);
   const char* text = source.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -45,9 +47,9 @@ GLuint compile(GLenum stage, const std::string& file) {
 
 }  // namespace
 
-Program::Program(const std::string& vertexFile, const std::string& fragmentFile) {
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertexFile);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentFile);
+Program::Program(const std::string& vertexFile, const std::string& fragmentFile, const std::string& defines) {
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
   name_ = glCreateProgram();
   glAttachShader(name_, vs);
   glAttachShader(name_, fs);

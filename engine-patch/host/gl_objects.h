@@ -58,7 +58,8 @@ class Program {
  public:
   Program() = default;
   // Sources are embedded file names (shaders/...); "#include \"x\"" lines pull in other embedded files.
-  Program(const std::string& vertexFile, const std::string& fragmentFile);
+  // `defines` ("#define X 1\n...") go after each stage's #version line.
+  Program(const std::string& vertexFile, const std::string& fragmentFile, const std::string& defines = "");
   ~Program();
   Program(Program&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
   Program& operator=(Program&& other) noexcept;

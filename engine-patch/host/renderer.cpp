@@ -24,7 +24,8 @@ float horizontalFov(float verticalFov, int width, int height) {
 
 Renderer::Renderer(const Scene& scene, int width, int height)
     : scene_(scene),
-      modelProgram_("shaders/model.vert", "shaders/model.frag"),
+      modelProgram_("shaders/model.vert", "shaders/model.frag",
+                    scene.depthBuffer == DepthBuffer::Logarithmic ? "#define LOGARITHMIC_DEPTH 1\n" : ""),
       backgroundProgram_("shaders/fullscreen.vert", "shaders/background.frag"),
       ambientProgram_("shaders/fullscreen.vert", "shaders/light_ambient_directional.frag"),
       pointProgram_("shaders/light_volume.vert", "shaders/light_point.frag"),
@@ -101,7 +102,7 @@ void Renderer::createTargets(int width, int height) {
 
   targets_ = HostTargets{width,       height,      gbufferFramebuffer_, color_,   position_, normal_,
                          specular_,   emissive_,   depthStencil_,       lightFramebuffer_,   light_,
-                         displayFramebuffer_, display_};
+                         displayFramebuffer_, display_, scene_.depthBuffer == DepthBuffer::Logarithmic};
   hooks_->targetsCreated(targets_);
 }
 
@@ -148,6 +149,52 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   glBindVertexArray(emptyVertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 
+  drawModels(camera, projection);
+  glPopDebugGroup();
+
+  // gr_opengl_deferred_lighting_msaa() + gr_opengl_deferred_lighting_end()
+  FrameView frameView;
+  frameView.verticalFovRadians = glm::radians(camera.fovYDegrees);
+  frameView.horizontalFovRadians = horizontalFov(frameView.verticalFovRadians, width, height);
+  frameView.width = width;
+  frameView.height = height;
+  frameView.nearPlane = camera.nearPlane;
+  frameView.farPlane = camera.farPlane;
+  hooks_->modelPassEnd(frameView);
+  hooks_->depthOnlyPass([&](GLuint target) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 4, -1, "host.depth_only_models");
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width, height);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_TRUE);
+    glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    drawModels(camera, projection);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glPopDebugGroup();
+  });
+  if (measureTime) glQueryCounter(timestamps[1], GL_TIMESTAMP);
+
+  // gr_opengl_deferred_lighting_finish()
+  hooks_->lighting([&](GLuint target) { lightingPass(target, camera, projection); }, lightFramebuffer_);
+  if (measureTime) glQueryCounter(timestamps[2], GL_TIMESTAMP);
+
+  // gr_opengl_post_process_end(): tonemap, then the AA post pass.
+  tonemap(light_);
+  hooks_->postProcess();
+  if (measureTime) {
+    glQueryCounter(timestamps[3], GL_TIMESTAMP);
+    GLuint64 t[4];
+    for (int i = 0; i < 4; ++i) glGetQueryObjectui64v(timestamps[i], GL_QUERY_RESULT, &t[i]);
+    glDeleteQueries(4, timestamps);
+    timings_.modelPassMs = (t[1] - t[0]) * 1e-6;
+    timings_.lightingMs = (t[2] - t[1]) * 1e-6;
+    timings_.tonemapMs = (t[3] - t[2]) * 1e-6;
+    timings_.frameMs = (t[3] - t[0]) * 1e-6;
+  }
+}
+
+void Renderer::drawModels(const Camera& camera, const glm::mat4& projection) {
+  const glm::mat4 view = camera.view();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -172,34 +219,6 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   }
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
-  glPopDebugGroup();
-
-  // gr_opengl_deferred_lighting_msaa() + gr_opengl_deferred_lighting_end()
-  FrameView frameView;
-  frameView.verticalFovRadians = glm::radians(camera.fovYDegrees);
-  frameView.horizontalFovRadians = horizontalFov(frameView.verticalFovRadians, width, height);
-  frameView.width = width;
-  frameView.height = height;
-  hooks_->modelPassEnd(frameView);
-  if (measureTime) glQueryCounter(timestamps[1], GL_TIMESTAMP);
-
-  // gr_opengl_deferred_lighting_finish()
-  hooks_->lighting([&](GLuint target) { lightingPass(target, camera, projection); }, lightFramebuffer_);
-  if (measureTime) glQueryCounter(timestamps[2], GL_TIMESTAMP);
-
-  // gr_opengl_post_process_end(): tonemap, then the AA post pass.
-  tonemap(light_);
-  hooks_->postProcess();
-  if (measureTime) {
-    glQueryCounter(timestamps[3], GL_TIMESTAMP);
-    GLuint64 t[4];
-    for (int i = 0; i < 4; ++i) glGetQueryObjectui64v(timestamps[i], GL_QUERY_RESULT, &t[i]);
-    glDeleteQueries(4, timestamps);
-    timings_.modelPassMs = (t[1] - t[0]) * 1e-6;
-    timings_.lightingMs = (t[2] - t[1]) * 1e-6;
-    timings_.tonemapMs = (t[3] - t[2]) * 1e-6;
-    timings_.frameMs = (t[3] - t[0]) * 1e-6;
-  }
 }
 
 void Renderer::lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection) {

@@ -53,6 +53,7 @@ class Renderer {
   GpuMesh upload(const Mesh& mesh) const;
   void createTargets(int width, int height);
   void lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection);
+  void drawModels(const Camera& camera, const glm::mat4& projection);
 
   const Scene& scene_;
   FrameHooks stockHooks_;

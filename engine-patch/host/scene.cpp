@@ -217,7 +217,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
   }
   const Reader root(fileName, document, "$");
   root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient",
-                     "sky_color", "star_density", "exposure", "shading", "comment"});
+                     "sky_color", "star_density", "exposure", "shading", "depth_buffer", "comment"});
   Scene scene;
   scene.name = root.has("name") ? root.child("name").string() : fileName;
   if (!root.has("camera")) root.fail("missing required key 'camera'");
@@ -236,6 +236,15 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
       root.child("shading").fail("unknown shading model '" + shading + "' (allowed: blinn-phong, ggx)");
   }
 
+  if (root.has("depth_buffer")) {
+    const std::string depth = root.child("depth_buffer").string();
+    if (depth == "logarithmic")
+      scene.depthBuffer = DepthBuffer::Logarithmic;
+    else if (depth == "perspective")
+      scene.depthBuffer = DepthBuffer::Perspective;
+    else
+      root.child("depth_buffer").fail("unknown depth buffer '" + depth + "' (allowed: logarithmic, perspective)");
+  }
   if (!root.has("materials")) root.fail("missing required key 'materials'");
   const Reader materials = root.child("materials");
   for (size_t i = 0; i < materials.arraySize(); ++i) {

@@ -68,6 +68,10 @@ struct Light {
 
 enum class ShadingModel { BlinnPhong, GGX };
 
+// How the host fills its D24 depth buffer: logarithmic (written by the model shader, for huge depth
+// ranges) or the rasteriser's own perspective depth (FreeSpace Open's; interpolated per sample).
+enum class DepthBuffer { Logarithmic, Perspective };
+
 struct Scene {
   std::string name;
   Camera camera;
@@ -80,6 +84,7 @@ struct Scene {
   float starDensity = 1.0f;
   float exposure = 1.0f;
   ShadingModel shading = ShadingModel::BlinnPhong;
+  DepthBuffer depthBuffer = DepthBuffer::Logarithmic;
   size_t triangleCount() const;
 };
 

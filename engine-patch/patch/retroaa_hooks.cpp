@@ -22,6 +22,8 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
   layout.depthEncoding.backgroundAbove = host::depth_codec::kBackgroundThreshold;
   // The host's Blinn-Phong exponent is exp2(gloss · 10 + 1) (lighting_common.glsl).
   layout.glossEncoding = {true, 10.0f, 1.0f};
+  layout.depthBufferEncoding = targets.logarithmicDepth ? retroaa::DepthBufferEncoding::Logarithmic
+                                                        : retroaa::DepthBufferEncoding::Perspective;
   layout.gbufferFramebuffer = targets.gbufferFramebuffer;
   layout.depthStencilTexture = targets.depthStencil;
   layout.lightFramebuffer = targets.lightFramebuffer;
@@ -64,7 +66,14 @@ GLuint RetroaaHooks::modelPassFramebuffer(GLuint) { return plugin_->geometryFram
 void RetroaaHooks::modelPassEnd(const host::FrameView& view) {
   retroaa::FrameInfo frame;
   frame.horizontalFovRadians = view.horizontalFovRadians;
+  frame.nearPlane = view.nearPlane;
+  frame.farPlane = view.farPlane;
   report(plugin_->resolve(frame));
+}
+
+// (no FSO call site yet: a second, depth-only model loop; see docs/methods/coverage.md)
+void RetroaaHooks::depthOnlyPass(const host::DepthOnlyModelPass& pass) {
+  if (const GLuint target = plugin_->coverageFramebuffer()) pass(target);
 }
 
 // gr_opengl_deferred_lighting_finish(): the host's lighting runs through the plugin.

@@ -23,6 +23,7 @@ class RetroaaHooks : public host::FrameHooks {
   void targetsCreated(const host::HostTargets& targets) override;
   GLuint modelPassFramebuffer(GLuint stockGbuffer) override;
   void modelPassEnd(const host::FrameView& view) override;
+  void depthOnlyPass(const host::DepthOnlyModelPass& pass) override;
   void lighting(const host::LightingPass& pass, GLuint stockLightFramebuffer) override;
   void postProcess() override;
 

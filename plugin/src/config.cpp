@@ -50,7 +50,7 @@ Status parseBool(const std::string& key, const std::string& value, bool& out) {
   return invalid("config key '" + key + "': value '" + value + "' is not a switch (allowed: on, off)");
 }
 
-constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve, Method::Edge, Method::PerSample, Method::Adaptive, Method::Aggregate};
+constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve, Method::Edge, Method::PerSample, Method::Adaptive, Method::Aggregate, Method::Coverage};
 constexpr EdgeDetector kEdgeDetectors[] = {EdgeDetector::Depth,    EdgeDetector::Plane,    EdgeDetector::Normal,
                                            EdgeDetector::Material, EdgeDetector::Coverage, EdgeDetector::EveryPixel};
 constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
@@ -72,7 +72,7 @@ std::string formatFloat(float v) {
 
 const std::vector<Setter>& setters() {
   static const std::vector<Setter> table = {
-      {{"method", "off", "off, fxaa, resolve, edge, per-sample, adaptive, aggregate", "which AA method runs; changing it reallocates only what it needs"},
+      {{"method", "off", "off, fxaa, resolve, edge, per-sample, adaptive, aggregate, coverage", "which AA method runs; changing it reallocates only what it needs"},
        [](Config& c, const std::string& v) { return parseEnum("method", v, kMethods, c.method); },
        [](const Config& c) { return std::string(toString(c.method)); }},
       {{"samples", "4", "1, 2, 4, 8, 16", "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
@@ -133,6 +133,12 @@ const std::vector<Setter>& setters() {
       {{"aggregate_length", "4", "0.01 .. 1000", "aggregate: k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"},
        [](Config& c, const std::string& v) { return parseFloat("aggregate_length", v, 0.01f, 1000.0f, c.aggregateLength); },
        [](const Config& c) { return formatFloat(c.aggregateLength); }},
+      {{"coverage_filter", "off", "on, off", "the coverage filter on top of resolve (reuses its MSAA depth; no prepass)"},
+       [](Config& c, const std::string& v) { return parseBool("coverage_filter", v, c.coverageFilter); },
+       [](const Config& c) { return std::string(c.coverageFilter ? "on" : "off"); }},
+      {{"coverage_tolerance", "2", "0 .. 100", "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"},
+       [](Config& c, const std::string& v) { return parseFloat("coverage_tolerance", v, 0.0f, 100.0f, c.coverageTolerance); },
+       [](const Config& c) { return formatFloat(c.coverageTolerance); }},
       {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
        [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
        [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},
@@ -154,7 +160,7 @@ const std::vector<Setter>& setters() {
 
 }  // namespace
 
-bool usesMsaa(Method method) { return method != Method::Off && method != Method::Fxaa; }
+bool usesMsaa(Method method) { return method != Method::Off && method != Method::Fxaa && method != Method::Coverage; }
 
 const char* toString(Method method) {
   switch (method) {
@@ -165,6 +171,7 @@ const char* toString(Method method) {
     case Method::PerSample: return "per-sample";
     case Method::Adaptive: return "adaptive";
     case Method::Aggregate: return "aggregate";
+    case Method::Coverage: return "coverage";
   }
   return "?";
 }

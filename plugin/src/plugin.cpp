@@ -17,6 +17,9 @@ EdgeDetector detectorFor(const Config& config) {
   return config.method == Method::PerSample ? EdgeDetector::EveryPixel : config.edgeDetector;
 }
 bool needsFxaa(const Config& config) { return config.method == Method::Fxaa || config.fxaa; }
+bool needsCoverage(const Config& config) {
+  return config.method == Method::Coverage || (config.coverageFilter && usesMsaa(config.method));
+}
 
 Status validateLayout(const GBufferLayout& layout) {
   auto invalid = [](const std::string& message) { return Error{ErrorCode::InvalidLayout, message}; };
@@ -62,6 +65,11 @@ struct Plugin::Impl {
   std::unique_ptr<AdaptivePass> adaptive;
   std::unique_ptr<AggregatePass> aggregate;
   std::unique_ptr<FxaaPass> fxaaPass;
+  std::unique_ptr<CoveragePass> coverage;
+  std::unique_ptr<PostTarget> postTarget;
+  bool coverageOwnPrepass = false;  // what `coverage` was built for
+  int coverageSamples = 0;
+  FrameInfo lastFrame;  // from resolve(), for post()
   bool resolvedThisFrame = false;
   int aggregateCount_ = 0;  // the c the aggregate shaders were built for
 
@@ -81,6 +89,7 @@ struct Plugin::Impl {
     const Config& config = context.config;
     if (rebuildAll || !needsMultisampledGBuffer(config.method) || (msaa && msaa->requestedSamples() != config.samples)) {
       edgeMask.reset();
+      coverage.reset();
       adaptive.reset();
       aggregate.reset();
       slices.reset();
@@ -92,6 +101,10 @@ struct Plugin::Impl {
     if (config.method != Method::Aggregate || (aggregate && aggregateCount_ != config.aggregateCount)) aggregate.reset();
     if (!needsSlices(config.method)) slices.reset();
     if (rebuildAll || !needsFxaa(config)) fxaaPass.reset();
+    const bool ownPrepass = config.method == Method::Coverage;
+    if (!needsCoverage(config) || ownPrepass != coverageOwnPrepass || (ownPrepass && coverageSamples != config.samples))
+      coverage.reset();
+    if (rebuildAll || !(needsFxaa(config) || needsCoverage(config))) postTarget.reset();
     if (needsMultisampledGBuffer(config.method) && !msaa) {
       auto created = MsaaGBuffer::create(context, config.samples);
       if (!created) return created.error();
@@ -123,6 +136,18 @@ struct Plugin::Impl {
       if (!created) return created.error();
       edgeMask = std::move(created.value());
     }
+    if ((needsFxaa(config) || needsCoverage(config)) && !postTarget) {
+      auto created = PostTarget::create(context);
+      if (!created) return created.error();
+      postTarget = std::move(created.value());
+    }
+    if (needsCoverage(config) && !coverage) {
+      auto created = CoveragePass::create(context, ownPrepass ? nullptr : msaa.get(), config.samples);
+      if (!created) return created.error();
+      coverage = std::move(created.value());
+      coverageOwnPrepass = ownPrepass;
+      coverageSamples = config.samples;
+    }
     if (needsFxaa(config) && !fxaaPass) {
       auto created = FxaaPass::create(context);
       if (!created) return created.error();
@@ -134,7 +159,7 @@ struct Plugin::Impl {
   uint64_t bytesHeld() const {
     return (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (adaptive ? adaptive->bytes() : 0) +
            (aggregate ? aggregate->bytes() : 0) +
-           (fxaaPass ? fxaaPass->bytes() : 0);
+           (coverage ? coverage->bytes() : 0) + (postTarget ? postTarget->bytes() : 0);
   }
 };
 
@@ -165,6 +190,10 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   return std::unique_ptr<Plugin>(new Plugin(std::move(impl)));
 }
 
+GLuintHandle Plugin::coverageFramebuffer() const {
+  return impl_->coverage ? impl_->coverage->prepassFramebuffer() : 0;
+}
+
 GLuintHandle Plugin::geometryFramebuffer() const {
   return impl_->msaa ? impl_->msaa->framebuffer() : impl_->context.layout.gbufferFramebuffer;
 }
@@ -174,6 +203,7 @@ Status Plugin::resolve(const FrameInfo& frame) {
   context.frameStats.passes.clear();
   context.frameStats.lightingEvaluations = 0;
   impl_->resolvedThisFrame = true;
+  impl_->lastFrame = frame;
   if (!impl_->resolvePass) return Status::ok();
   GlStateGuard guard;
   if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
@@ -208,9 +238,13 @@ Status Plugin::shade(const LightingFunction& lighting) {
 }
 
 Status Plugin::post() {
-  if (!impl_->fxaaPass) return Status::ok();
+  if (!impl_->postTarget) return Status::ok();
   GlStateGuard guard;
-  return impl_->fxaaPass->run(impl_->context);
+  if (impl_->coverage) {
+    if (Status status = impl_->coverage->run(impl_->context, *impl_->postTarget, impl_->lastFrame); !status) return status;
+  }
+  if (impl_->fxaaPass) return impl_->fxaaPass->run(impl_->context, *impl_->postTarget);
+  return Status::ok();
 }
 
 Status Plugin::reconfigure(const Config& config) {
@@ -244,7 +278,7 @@ Stats Plugin::stats() const {
   const PluginContext& context = impl_->context;
   Stats stats = context.frameStats;
   stats.method = context.config.method;
-  stats.samples = impl_->msaa ? impl_->msaa->samples() : 1;
+  stats.samples = impl_->msaa ? impl_->msaa->samples() : (impl_->coverage ? impl_->coverage->samples() : 1);
   stats.pixels = context.pixelCount();
   stats.bytesHeld = impl_->bytesHeld();
   stats.glObjectsHeld = context.objects.live;

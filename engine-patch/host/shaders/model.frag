@@ -19,6 +19,9 @@ void main() {
   outNormal = vec4(n, uGloss);
   outSpecular = vec4(uSpecular, 1.0);
   outEmissive = vec4(uEmissive, 1.0);
-  // Logarithmic depth: D24 keeps ~1e-6 relative precision from the near plane to 1e6 m.
+#ifdef LOGARITHMIC_DEPTH
+  // Logarithmic depth: D24 keeps ~1e-6 relative precision from the near plane to 1e6 m. (It costs
+  // early depth tests, and every sample of a primitive gets the pixel's depth.)
   gl_FragDepth = log2(max(d, uNear) / uNear) / log2(uFar / uNear);
+#endif
 }

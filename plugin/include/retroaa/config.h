@@ -21,6 +21,7 @@ enum class Method : uint8_t {
   PerSample,  // every sample of every pixel lit: the quality reference at rate N (N evals/pixel)
   Adaptive,   // Holländer et al.: k samples per pixel from geometry and shading metrics (1 + Σ(k−1)/pixels)
   Aggregate,  // Crassin et al. (AGAA): ≤ c aggregates per pixel, each lit once, weighted by coverage
+  Coverage,   // Pettineo: depth-only MSAA prepass, stock single-sample path, coverage filter after tonemapping (1)
 };
 
 // How `edge` decides that a pixel's samples see more than one surface.
@@ -78,6 +79,13 @@ struct Config {
   int aggregateCount = 2;           // c, [1, 4]; more aggregates: closer to per-sample, more evaluations
   float aggregateThreshold = 0.1f;  // t, [0, 10]: a new aggregate only beyond this distance; 0 splits all distinct samples
   float aggregateLength = 4.0f;     // k in pixel footprints, [0.01, 1000]: depth gaps beyond ~k·sqrt(t) split
+  // The coverage filter after tonemapping, stacked on `resolve` (which supplies its MSAA depth, so no
+  // prepass): intra-model smoothing plus silhouette blending at one lighting evaluation per pixel.
+  bool coverageFilter = false;
+  // c of the coverage filter's depth test (Eq. 1 style), [0, 100]: a sample whose depth differs from
+  // the pixel's by more than min(d)·tan(hfov/width)·c lies across an edge. Smaller finds more (and,
+  // on grazing surfaces, false) edges.
+  float coverageTolerance = 2.0f;
   // FXAA after tonemapping, stacked on any method (FreeSpace Open users combine -msaa and FXAA).
   bool fxaa = false;
   FxaaQuality fxaaQuality = FxaaQuality::High;

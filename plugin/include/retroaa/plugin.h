@@ -57,6 +57,12 @@ struct GlossEncoding {
   float log2ExponentBias = 1.0f;
 };
 
+// How the host's depth buffer maps to view depth d (for the coverage filter).
+enum class DepthBufferEncoding : uint8_t {
+  Perspective,  // the rasteriser's [0,1] depth of a standard perspective projection (FreeSpace Open)
+  Logarithmic,  // log2(d / near) / log2(far / near), written by the model shader
+};
+
 struct Attachment {
   AttachmentRole role = AttachmentRole::Other;
   GLenumValue internalFormat = 0;  // e.g. GL_RGBA16F; the MSAA copy uses the same
@@ -70,6 +76,7 @@ struct GBufferLayout {
   int depthChannel = 2;                 // channel of ViewPosition holding encoded depth
   DepthEncoding depthEncoding;
   GlossEncoding glossEncoding;
+  DepthBufferEncoding depthBufferEncoding = DepthBufferEncoding::Perspective;
   GLuintHandle gbufferFramebuffer = 0;  // the host's single-sample G-buffer (attachments + depth)
   GLuintHandle depthStencilTexture = 0;  // DEPTH24_STENCIL8
   uint8_t hostStencilBits = 0x00;       // stencil bits the host owns; retroaa leaves them alone
@@ -98,6 +105,7 @@ struct Description {
 // Per-frame camera facts for the closeness test.
 struct FrameInfo {
   float horizontalFovRadians = 1.0f;
+  float nearPlane = 0.1f, farPlane = 1e6f;  // metres, for DepthBufferEncoding
 };
 
 struct PassTime {
@@ -132,12 +140,15 @@ class Plugin {
   // The framebuffer the host's model pass renders into: the plugin's MSAA G-buffer for
   // multi-sample methods, the host's own otherwise.
   GLuintHandle geometryFramebuffer() const;
+  // For `coverage`: a multisampled depth-only framebuffer the host draws its models into once more
+  // (colour writes off), after the model pass. 0 when the method needs no such pass.
+  GLuintHandle coverageFramebuffer() const;
   // After the model pass. Errors: WrongCallOrder never; IncompleteFramebuffer after a bad resize.
   Status resolve(const FrameInfo& frame);
   // Runs `lighting` once per slice and composites; for single-slice methods, once into the host's
   // light framebuffer.
   Status shade(const LightingFunction& lighting);
-  // After the host's tonemap: FXAA (when configured) on the display target.
+  // After the host's tonemap, on the display target: the coverage filter, then FXAA (as configured).
   Status post();
 
   // Diagnostics: the per-pixel lighting evaluation count of the last frame (slice count; 1 for

@@ -155,19 +155,52 @@ class AggregatePass {
 // centre first, then each time the one farthest from those already taken. `positions` in [0, 1)².
 std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY);
 
-// `fxaa`: Lottes' FXAA 3.11 (quality variant) on the tonemapped display target.
-class FxaaPass {
+// Where the post passes (coverage filter, FXAA) render: a plugin-owned RGBA8 copy of the host's
+// display target, copied back after each pass, and the bilinear sampler they read the display with.
+class PostTarget {
  public:
-  static Result<std::unique_ptr<FxaaPass>> create(PluginContext& context);
-  Status run(PluginContext& context);
+  static Result<std::unique_ptr<PostTarget>> create(PluginContext& context);
+  void bindAsOutput(const GBufferLayout& layout) const;  // framebuffer, viewport, plain state
+  void bindInput(const GBufferLayout& layout, GLuint unit) const;  // the display texture, bilinear
+  void copyBack(const GBufferLayout& layout) const;
+  uint64_t bytes() const { return bytes_; }
+
+ private:
+  GlTexture output_;
+  GlFramebuffer framebuffer_;
+  GlSampler linear_;
+  uint64_t bytes_ = 0;
+};
+
+// `coverage` (Pettineo, "Deferred MSAA"): the host's models once more into a multisampled depth
+// buffer (or, stacked on `resolve`, the G-buffer's own), and a filter after tonemapping.
+class CoveragePass {
+ public:
+  // `resolveDepth`: the MSAA G-buffer to reuse; null allocates a depth-only target for the prepass.
+  static Result<std::unique_ptr<CoveragePass>> create(PluginContext& context, const MsaaGBuffer* resolveDepth, int samples);
+  GLuint prepassFramebuffer() const { return prepass_.get(); }  // 0 when reusing the G-buffer's depth
+  int samples() const { return samples_; }
+  Status run(PluginContext& context, const PostTarget& post, const FrameInfo& frame);
   uint64_t bytes() const { return bytes_; }
 
  private:
   GlProgram program_;
-  GlSampler linear_;
-  GlTexture output_;
-  GlFramebuffer outputFramebuffer_;
+  GlTexture depth_;
+  GlFramebuffer prepass_;
+  GLuint sampleDepth_ = 0;  // the multisampled depth the filter reads
+  std::vector<float> samplePositions_;
+  int samples_ = 1;
   uint64_t bytes_ = 0;
+};
+
+// `fxaa`: Lottes' FXAA 3.11 (quality variant) on the tonemapped display target.
+class FxaaPass {
+ public:
+  static Result<std::unique_ptr<FxaaPass>> create(PluginContext& context);
+  Status run(PluginContext& context, const PostTarget& post);
+
+ private:
+  GlProgram program_;
 };
 
 }  // namespace retroaa

@@ -1,0 +1,160 @@
+// `coverage` (Pettineo, "Deferred MSAA"): the filter on hand-written depth sub-samples, and its
+// failure mode on a grazing plane.
+#include "test_support.h"
+
+#include <map>
+
+using namespace testing_support;
+
+namespace {
+
+constexpr int kWidth = 16, kHeight = 8;
+
+// Writes the multisampled depth of `target` per sample: depth(pixel x, sample position) in a shader.
+void writeSampleDepth(GLuint target, const char* depthExpression) {
+  const std::string fragment = std::string(R"(#version 450 core
+void main() {  // reading gl_SamplePosition runs this once per sample
+  int x = int(gl_FragCoord.x);
+  vec2 position = gl_SamplePosition;
+  gl_FragDepth = )") + depthExpression + ";\n}\n";
+  const char* vertexText = "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
+                           " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
+  const char* fragmentText = fragment.c_str();
+  const GLuint vertex = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexText);
+  const GLuint program = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentText);
+  GLuint pipeline = 0, vao = 0;
+  glCreateProgramPipelines(1, &pipeline);
+  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex);
+  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, program);
+  glCreateVertexArrays(1, &vao);
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, kWidth, kHeight);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  glUseProgram(0);
+  glBindProgramPipeline(pipeline);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindProgramPipeline(0);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+  glDeleteProgramPipelines(1, &pipeline);
+  glDeleteProgram(vertex);
+  glDeleteProgram(program);
+  glDeleteVertexArrays(1, &vao);
+}
+
+struct CoverageFixture {
+  SyntheticFrame frame{kWidth, kHeight};
+  std::unique_ptr<patch::RetroaaHooks> hooks;
+  std::vector<uint8_t> input;  // RGBA8, GL rows
+
+  explicit CoverageFixture(const std::vector<uint8_t>& display, float pixelDepth = 0.5f, float tolerance = 2.0f)
+      : input(display) {
+    retroaa::Config config;
+    config.method = retroaa::Method::Coverage;
+    config.coverageTolerance = tolerance;
+    auto created = patch::RetroaaHooks::create(frame.renderer->targets(), config);
+    if (!created) throw std::runtime_error(created.error().message);
+    hooks = std::move(created.value());
+    const host::HostTargets& t = frame.renderer->targets();
+    glTextureSubImage2D(t.displayTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, display.data());
+    std::vector<uint32_t> depth(kWidth * kHeight, uint32_t(pixelDepth * 0xFFFFFF) << 8);
+    glTextureSubImage2D(t.depthStencil, 0, 0, 0, kWidth, kHeight, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, depth.data());
+  }
+  std::vector<uint8_t> filter(const char* sampleDepth) {
+    retroaa::Plugin& plugin = hooks->plugin();
+    EXPECT_NE(plugin.coverageFramebuffer(), 0u);
+    writeSampleDepth(plugin.coverageFramebuffer(), sampleDepth);
+    retroaa::FrameInfo info{0.8f, 0.1f, 100.0f};
+    EXPECT_TRUE(plugin.resolve(info));
+    EXPECT_TRUE(plugin.post());
+    std::vector<uint8_t> out(kWidth * kHeight * 4);
+    glGetTextureImage(frame.renderer->targets().displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
+    return out;
+  }
+};
+
+std::vector<uint8_t> columns(uint8_t left, uint8_t right, int split) {
+  std::vector<uint8_t> image(kWidth * kHeight * 4, 255);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      for (int c = 0; c < 3; ++c) image[(y * kWidth + x) * 4 + c] = x < split ? left : right;
+  return image;
+}
+
+}  // namespace
+
+TEST(CoverageFilter, HalfCoveredSilhouettePixelBlendsByItsCoverage) {
+  // Pixel column 7 is the object's last; its samples right of the centre see the far background.
+  CoverageFixture fixture(columns(40, 220, 8));
+  const std::vector<uint8_t> out = fixture.filter("(x == 7 && position.x > 0.5) ? 1.0 : 0.5");
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const int value = out[(y * kWidth + x) * 4];
+      if (x == 7)
+        EXPECT_NEAR(value, 130, 3) << "blended half way to the neighbour (covered fraction 1/2)";
+      else
+        EXPECT_EQ(value, x < 8 ? 40 : 220) << x << "," << y;
+    }
+  }
+}
+
+TEST(CoverageFilter, QuarterCoverageBlendsAQuarter) {
+  CoverageFixture fixture(columns(40, 220, 8));
+  // Only the rightmost sample of the pattern (largest x) sees the background.
+  const std::vector<uint8_t> out = fixture.filter("(x == 7 && position.x > 0.8) ? 1.0 : 0.5");
+  for (int y = 1; y < kHeight - 1; ++y) EXPECT_NEAR(out[(y * kWidth + 7) * 4], 40 + (220 - 40) / 4, 3);
+}
+
+TEST(CoverageFilter, FlatInteriorGivesBackTheInputExactly) {
+  std::vector<uint8_t> noise(kWidth * kHeight * 4);
+  for (size_t i = 0; i < noise.size(); ++i) noise[i] = uint8_t((i * 2654435761u) >> 13);
+  CoverageFixture fixture(noise);
+  EXPECT_EQ(fixture.filter("0.5"), noise);
+}
+
+TEST(CoverageFilter, GrazingPlaneRaisesFalseEdgesOnlyWithATightTolerance) {
+  // The seed's own failure mode. A plane 5 m away seen at a grazing angle: across the pixel its depth
+  // changes by ~3 footprints (1/d linear in screen y, as perspective makes it) although no edge is
+  // there. A tolerance tight enough flags the farther samples but not the nearer ones (the depth
+  // profile is convex), so the flagged samples sit on one side and the pixel blends. (When both sides
+  // are flagged their offsets cancel and the filter leaves the pixel alone.) The image has one-pixel
+  // horizontal stripes, so any blend shows. llvmpipe interpolates depth once per pixel for all samples,
+  // so its own renders cannot show this: the sample depths are written by hand, log-encoded as the
+  // synthetic host stores them (near 0.1 m, far 100 m).
+  std::vector<uint8_t> stripes(kWidth * kHeight * 4, 255);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      for (int c = 0; c < 3; ++c) stripes[(y * kWidth + x) * 4 + c] = (y % 2) ? 200 : 30;
+  const char* grazing = "log2((1.0 / (0.2 + 0.03 * (position.y - 0.5))) / 0.1) / log2(1000.0)";
+  const float pixelDepth = std::log2(5.0f / 0.1f) / std::log2(1000.0f);
+  std::map<float, int> changed;
+  for (float tolerance : {0.05f, 0.5f, 1.0f, 1.15f, 1.5f, retroaa::Config{}.coverageTolerance}) {
+    CoverageFixture fixture(stripes, pixelDepth, tolerance);
+    const std::vector<uint8_t> out = fixture.filter(grazing);
+    int count = 0;
+    for (size_t p = 0; p < out.size() / 4; ++p) count += out[p * 4] != stripes[p * 4];
+    changed[tolerance] = count;
+    std::printf("grazing plane, coverage tolerance %.2f: %d of %d pixels blended\n", tolerance, count, kWidth * kHeight);
+  }
+  EXPECT_EQ(changed[retroaa::Config{}.coverageTolerance], 0);
+  int worst = 0;
+  for (const auto& [tolerance, count] : changed) worst = std::max(worst, count);
+  // Some tighter tolerance blurs the whole plane (the top and bottom rows blend with their own
+  // stripe, the tap being clamped at the image border).
+  EXPECT_GE(worst, kWidth * (kHeight - 2));
+}
+
+TEST(Coverage, HoldsOnlyADepthTargetAndLightsOncePerPixel) {
+  PatchedHost host("default", 64, 48);
+  host.render("coverage");
+  const retroaa::Stats stats = host.hooks->plugin().stats();
+  EXPECT_EQ(stats.evaluationsPerPixel(), 1.0);
+  ASSERT_EQ(stats.samples, 4);
+  EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * (4u * 4u + 4u));  // D24S8 × 4 samples + the post copy
+  EXPECT_EQ(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
+  host.render("resolve+coverage");  // reuses the G-buffer's depth: no prepass
+  EXPECT_EQ(host.hooks->plugin().coverageFramebuffer(), 0u);
+}
