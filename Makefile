@@ -5,11 +5,11 @@ JOBS ?= $(shell nproc)
 RETROAA = $(BUILD)/engine-patch/retroaa
 
 # Debian 12 packages: toolchain, headless GL (EGL + Mesa's llvmpipe), and the chosen libraries.
-APT_PACKAGES = cmake g++ make pkg-config git \
+APT_PACKAGES = cmake g++ make pkg-config git assimp-testmodels \
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev libglfw3-dev libglm-dev \
   libopenimageio-dev openimageio-tools nlohmann-json3-dev libcli11-dev libassimp-dev libgtest-dev
 
-.PHONY: deps build demo test docs-config clean
+.PHONY: deps build demo test regress regress-golden docs-config clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -28,7 +28,17 @@ build: deps
 demo: build
 	LP_NUM_THREADS=2 $(RETROAA) bench --scene default --methods all --width 320 --height 240 --gt-samples 16 \
 	  --json out/report.json --csv out/report.csv --report out/report.md --images out/images
-	@echo "report: out/report.md (JSON: out/report.json, CSV: out/report.csv, images: out/images/)"
+	LP_NUM_THREADS=2 $(RETROAA) regress default --out out/regress
+	@echo "reports: out/report.md (one frame, every method; JSON, CSV, images beside it)"
+	@echo "         out/regress/report.html (the demo scene's recorded path; open it in a browser)"
+
+# Every frame of the five recorded scenes, checked against integration-tests/golden/ (~4 min here).
+regress: build
+	LP_NUM_THREADS=2 $(RETROAA) regress --out out/regress --check
+
+# Deliberately rewrites the goldens from this machine's run.
+regress-golden: build
+	LP_NUM_THREADS=2 $(RETROAA) regress --out out/regress --update-golden
 
 test: build
 	cd $(BUILD) && LP_NUM_THREADS=2 ctest --output-on-failure -j2

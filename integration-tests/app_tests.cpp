@@ -3,7 +3,6 @@
 #include "test_support.h"
 
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -13,20 +12,6 @@
 using namespace testing_support;
 
 namespace {
-struct CliRun {
-  int exitCode;
-  std::string output;
-};
-// Runs the retroaa binary with `arguments`, capturing stdout and stderr.
-CliRun runCli(const std::string& arguments) {
-  const std::string command = std::string(RETROAA_CLI) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pclose(pipe);
-  return CliRun{WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
 std::string temp(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / "retroaa_app_tests";
   std::filesystem::create_directories(dir);

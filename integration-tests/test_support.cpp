@@ -4,6 +4,9 @@
 #include "depth_codec.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <sys/wait.h>
+
+#include <cstdio>
 
 namespace testing_support {
 
@@ -169,6 +172,16 @@ std::vector<glm::vec4> SyntheticFrame::read(GLuint texture) const {
   std::vector<glm::vec4> pixels(size_t(width) * height);
   glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(glm::vec4)), pixels.data());
   return pixels;
+}
+
+CliRun runCli(const std::string& arguments) {
+  const std::string command = std::string(RETROAA_CLI) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  char buffer[512];
+  while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
 }  // namespace testing_support

@@ -65,6 +65,13 @@ struct SyntheticFrame {
   std::vector<glm::vec4> read(GLuint texture) const;  // RGBA float, GL's bottom-up rows
 };
 
+// Runs the `retroaa` binary with `arguments`, capturing stdout and stderr together.
+struct CliRun {
+  int exitCode;
+  std::string output;
+};
+CliRun runCli(const std::string& arguments);
+
 // The pixel (top-down image coordinates) where a world point lands for the scene camera.
 glm::ivec2 projectToPixel(const host::Camera& camera, glm::vec3 world, int width, int height);
 

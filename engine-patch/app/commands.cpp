@@ -7,6 +7,7 @@
 #include "renderer.h"
 #include "retroaa_hooks.h"
 #include "scene.h"
+#include "session.h"
 
 #include <nlohmann/json.hpp>
 
@@ -23,27 +24,6 @@ namespace app {
 
 namespace {
 
-// One headless session: context, scene, host renderer with the engine patch installed.
-struct Session {
-  host::HeadlessContext context;
-  host::Scene scene;
-  std::unique_ptr<host::Renderer> renderer;
-  std::unique_ptr<patch::RetroaaHooks> hooks;
-
-  Session(const std::string& scenePath, int width, int height) : scene(host::loadScene(scenePath)) {
-    renderer = std::make_unique<host::Renderer>(scene, width, height);
-    auto created = patch::RetroaaHooks::create(renderer->targets(), retroaa::Config{});
-    if (!created) throw std::runtime_error("retroaa: " + created.error().message);
-    hooks = std::move(created.value());
-    renderer->setHooks(hooks.get());
-  }
-  host::Camera camera(int frame) const { return frame < 0 ? scene.camera : scene.path.at(scene.camera, frame); }
-  void configure(const retroaa::Config& config) {
-    const retroaa::Status status = hooks->plugin().reconfigure(config);
-    if (!status) throw std::invalid_argument(status.error().message);
-  }
-};
-
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -55,13 +35,6 @@ void ensureParent(const std::string& path) {
   if (!parent.empty()) std::filesystem::create_directories(parent);
 }
 
-std::map<std::string, std::string> metadata(const Session& session, const std::string& method) {
-  return {{"retroaa:method", method},
-          {"retroaa:scene", session.scene.name},
-          {"retroaa:renderer", session.context.info().summary()},
-          {"retroaa:config", retroaa::toConfigText(session.hooks->plugin().config())}};
-}
-
 double median(std::vector<double> values) {
   if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
@@ -69,6 +42,27 @@ double median(std::vector<double> values) {
 }
 
 }  // namespace
+
+Session::Session(const host::HeadlessContext& context, const std::string& scenePath, int width, int height)
+    : context(context), scene(host::loadScene(scenePath)) {
+  renderer = std::make_unique<host::Renderer>(scene, width, height);
+  auto created = patch::RetroaaHooks::create(renderer->targets(), retroaa::Config{});
+  if (!created) throw std::runtime_error("retroaa: " + created.error().message);
+  hooks = std::move(created.value());
+  renderer->setHooks(hooks.get());
+}
+
+void Session::configure(const retroaa::Config& config) {
+  const retroaa::Status status = hooks->plugin().reconfigure(config);
+  if (!status) throw std::invalid_argument(status.error().message);
+}
+
+std::map<std::string, std::string> Session::metadata(const std::string& method) const {
+  return {{"retroaa:method", method},
+          {"retroaa:scene", scene.name},
+          {"retroaa:renderer", context.info().summary()},
+          {"retroaa:config", retroaa::toConfigText(hooks->plugin().config())}};
+}
 
 std::vector<uint8_t> visualiseCounts(const std::string& view, const std::vector<uint8_t>& countsBottomUp,
                                      const std::vector<uint8_t>& displayTopDown, int width, int height, int maxCount) {
@@ -145,7 +139,8 @@ std::vector<std::string> expandMethodList(const std::string& list) {
 }
 
 int runRender(const RenderOptions& options) {
-  Session session(options.scene, options.width, options.height);
+  host::HeadlessContext context;
+  Session session(context, options.scene, options.width, options.height);
   const host::Camera camera = session.camera(options.frame);
   const std::string ext = lowerExtension(options.out);
   if (ext != ".png" && ext != ".exr") throw std::invalid_argument("--out must end in .png or .exr, got '" + options.out + "'");
@@ -163,7 +158,7 @@ int runRender(const RenderOptions& options) {
     display = session.renderer->readDisplay();
     radiance = session.renderer->readLight();
   }
-  auto meta = metadata(session, options.method);
+  auto meta = session.metadata(options.method);
   if (!options.show.empty()) {
     if (options.show != "edges" && options.show != "samples" && options.show != "aggregates")
       throw std::invalid_argument("--show must be edges, samples or aggregates, got '" + options.show + "'");
@@ -196,7 +191,8 @@ int runBench(const BenchOptions& options) {
   for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
   if (specs.empty()) throw std::invalid_argument("--methods names no method");
 
-  Session session(options.scene, options.width, options.height);
+  host::HeadlessContext context;
+  Session session(context, options.scene, options.width, options.height);
   const host::Camera camera = session.camera(options.frame);
   const int w = options.width, h = options.height;
   std::fprintf(stderr, "bench: %s, %dx%d, %zu triangles, %zu lights; ground truth %dx%d per pixel...\n",
@@ -207,7 +203,7 @@ int runBench(const BenchOptions& options) {
   const std::vector<uint8_t> edges = edgeMaskFromSpread(truth.lumaStdDev);
   if (!options.imagesDirectory.empty()) {
     std::filesystem::create_directories(options.imagesDirectory);
-    writeImage8(options.imagesDirectory + "/ground-truth.png", w, h, truth.display, metadata(session, "ground-truth"));
+    writeImage8(options.imagesDirectory + "/ground-truth.png", w, h, truth.display, session.metadata("ground-truth"));
     std::vector<uint8_t> mask(size_t(w) * h * 4, 255);
     for (size_t p = 0; p < edges.size(); ++p) mask[p * 4] = mask[p * 4 + 1] = mask[p * 4 + 2] = edges[p] ? 255 : 0;
     writeImage8(options.imagesDirectory + "/edge-mask.png", w, h, mask);
@@ -273,7 +269,7 @@ int runBench(const BenchOptions& options) {
     if (!options.imagesDirectory.empty()) {
       std::string file = spec.name;
       std::replace(file.begin(), file.end(), '/', '-');
-      writeImage8(options.imagesDirectory + "/" + file + ".png", w, h, display, metadata(session, spec.name));
+      writeImage8(options.imagesDirectory + "/" + file + ".png", w, h, display, session.metadata(spec.name));
       writeImage8(options.imagesDirectory + "/" + file + "-error.png", w, h, errorHeatmap(image, reference));
     }
   }
@@ -360,6 +356,35 @@ int runBench(const BenchOptions& options) {
       }
     }
   }
+  return kExitOk;
+}
+
+int runRecord(const RecordOptions& options) {
+  if (options.keys < 2) throw std::invalid_argument("--keys must be at least 2");
+  const host::Scene scene = host::loadScene(options.scene, false);
+  const host::Camera& camera = scene.camera;
+  const glm::vec3 up = glm::normalize(camera.up);
+  const glm::vec3 offset = camera.position - camera.target;
+  nlohmann::json keys = nlohmann::json::array();
+  for (int k = 0; k < options.keys; ++k) {
+    const float s = float(k) / float(options.keys - 1);
+    const float angle = glm::radians(options.orbitDegrees) * s;
+    // Rodrigues' rotation of the offset about the up axis, then the dolly.
+    const glm::vec3 rotated = offset * std::cos(angle) + glm::cross(up, offset) * std::sin(angle) +
+                              up * glm::dot(up, offset) * (1.0f - std::cos(angle));
+    const glm::vec3 position = camera.target + rotated * (1.0f + (options.dolly - 1.0f) * s);
+    keys.push_back({{"t", options.seconds * s},
+                    {"position", {position.x, position.y, position.z}},
+                    {"target", {camera.target.x, camera.target.y, camera.target.z}}});
+  }
+  const nlohmann::json path = {
+      {"comment", "recorded by retroaa record: " + std::to_string(options.orbitDegrees) + " degree orbit, dolly " +
+                      std::to_string(options.dolly)},
+      {"fps", options.framesPerSecond},
+      {"keys", keys}};
+  ensureParent(options.out);
+  std::ofstream(options.out) << path.dump(1) << "\n";
+  std::printf("wrote %s: %d frames\n", options.out.c_str(), int(std::floor(options.seconds * options.framesPerSecond)) + 1);
   return kExitOk;
 }
 

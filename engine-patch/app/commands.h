@@ -57,6 +57,20 @@ struct BenchOptions {
 };
 int runBench(const BenchOptions& options);
 
+// A camera path for a scene, recorded without a window: `keys` keys over `seconds`, orbiting the
+// scene camera's target by `orbitDegrees` about the up axis and moving the camera to `dolly` × its
+// distance. Written as the JSON a scene's "camera_path" takes (inline, or by file name).
+struct RecordOptions {
+  std::string scene = "default";
+  float orbitDegrees = 30.0f;
+  float dolly = 1.0f;
+  float seconds = 1.0f;
+  float framesPerSecond = 30.0f;
+  int keys = 5;
+  std::string out;
+};
+int runRecord(const RecordOptions& options);
+
 // Every config key with default, allowed values and effect: plain text, or docs/config.md's table.
 std::string configReference(bool markdown);
 

@@ -1,6 +1,7 @@
 // `retroaa`: render, bench (more subcommands land with their issues). Exit codes: 0 ok, 1 a check
 // failed, 2 bad usage or input (with a message naming what was wrong).
 #include "commands.h"
+#include "regress.h"
 #include "headless_context.h"
 #include "scene.h"
 
@@ -76,6 +77,31 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--images", bench.imagesDirectory, "write each method's image and error heat map here");
   addConfigOptions(benchCmd);
 
+  app::RecordOptions record;
+  CLI::App* recordCmd = cli.add_subcommand("record", "record a camera path for a scene (an orbit and dolly; no window)");
+  recordCmd->add_option("--scene", record.scene, "scene file, or 'default'");
+  recordCmd->add_option("--orbit-degrees", record.orbitDegrees, "orbit about the camera target")->check(CLI::Range(-720.0, 720.0));
+  recordCmd->add_option("--dolly", record.dolly, "final distance as a multiple of the first")->check(CLI::Range(0.01, 100.0));
+  recordCmd->add_option("--seconds", record.seconds, "length")->check(CLI::Range(0.01, 3600.0));
+  recordCmd->add_option("--fps", record.framesPerSecond, "playback frame rate")->check(CLI::Range(1.0, 1000.0));
+  recordCmd->add_option("--keys", record.keys, "keys along the path")->check(CLI::Range(2, 1000));
+  recordCmd->add_option("--out", record.out, "camera path file (JSON)")->required();
+
+  app::RegressOptions regress;
+  CLI::App* regressCmd = cli.add_subcommand("regress", "every frame of recorded demo scenes with every method: report and goldens");
+  regressCmd->add_option("scenes", regress.scenes, "scene files (default: the five recorded scenes)");
+  regressCmd->add_option("--methods", regress.methods, "comma-separated method specs, or 'all'");
+  regressCmd->add_option("--width", regress.width)->check(CLI::Range(16, 8192));
+  regressCmd->add_option("--height", regress.height)->check(CLI::Range(16, 8192));
+  regressCmd->add_option("--gt-samples", regress.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  regressCmd->add_option("--stride", regress.frameStride, "every n-th frame of each path")->check(CLI::Range(1, 1000));
+  regressCmd->add_option("--frames", regress.maxFrames, "at most this many frames per scene (0: all)")->check(CLI::Range(0, 100000));
+  regressCmd->add_option("--out", regress.out, "report folder");
+  regressCmd->add_option("--golden-dir", regress.goldenDirectory, "where the goldens live");
+  regressCmd->add_flag("--check", regress.check, "compare with the goldens; exit 1 naming each figure that got worse");
+  regressCmd->add_flag("--update-golden", regress.updateGolden, "rewrite the goldens from this run");
+  addConfigOptions(regressCmd);
+
   bool markdown = false;
   CLI::App* configCmd = cli.add_subcommand("config", "list every config key with its default, range and effect");
   configCmd->add_flag("--markdown", markdown, "as the Markdown table of docs/config.md");
@@ -92,6 +118,11 @@ int main(int argc, char** argv) {
     if (configCmd->parsed()) {
       std::printf("%s", app::configReference(markdown).c_str());
       return app::kExitOk;
+    }
+    if (recordCmd->parsed()) return app::runRecord(record);
+    if (regressCmd->parsed()) {
+      regress.base = config;
+      return app::runRegress(regress);
     }
     if (renderCmd->parsed()) {
       render.base = config;

@@ -161,6 +161,21 @@ Camera readCamera(const Reader& r) {
   return c;
 }
 
+CameraPath readCameraPath(const Reader& p) {
+  p.expectObject({"fps", "keys", "comment"});
+  CameraPath path;
+  path.framesPerSecond = p.numberOr("fps", path.framesPerSecond, 1.0f, 1000.0f);
+  const Reader keys = p.child("keys");
+  for (size_t i = 0; i < keys.arraySize(); ++i) {
+    const Reader k = keys.element(i);
+    k.expectObject({"t", "position", "target"});
+    CameraKey key{k.child("t").number(0.0f, 1e6f), k.child("position").vec3(), k.child("target").vec3()};
+    if (!path.keys.empty() && key.time <= path.keys.back().time) k.child("t").fail("key times must increase");
+    path.keys.push_back(key);
+  }
+  return path;
+}
+
 }  // namespace
 
 SceneError::SceneError(const std::string& file, const std::string& field, const std::string& problem)
@@ -208,7 +223,7 @@ size_t Scene::triangleCount() const {
 }
 
 Scene parseScene(const std::string& jsonText, const std::string& fileName,
-                 const std::string& baseDirectory) {
+                 const std::string& baseDirectory, bool requireCameraPath) {
   json document;
   try {
     document = json::parse(jsonText);
@@ -329,23 +344,31 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
   }
 
   if (root.has("camera_path")) {
+    // Inline, or the name of a file `retroaa record` wrote (relative to the scene file).
     const Reader p = root.child("camera_path");
-    p.expectObject({"fps", "keys"});
-    scene.path.framesPerSecond = p.numberOr("fps", scene.path.framesPerSecond, 1.0f, 1000.0f);
-    const Reader keys = p.child("keys");
-    for (size_t i = 0; i < keys.arraySize(); ++i) {
-      const Reader k = keys.element(i);
-      k.expectObject({"t", "position", "target"});
-      CameraKey key{k.child("t").number(0.0f, 1e6f), k.child("position").vec3(), k.child("target").vec3()};
-      if (!scene.path.keys.empty() && key.time <= scene.path.keys.back().time)
-        k.child("t").fail("key times must increase");
-      scene.path.keys.push_back(key);
+    if (p.raw().is_string()) {
+      const std::filesystem::path file = p.string();
+      const std::string resolved = file.is_absolute() ? file.string() : (std::filesystem::path(baseDirectory) / file).string();
+      std::ifstream in(resolved);
+      if (!in && !requireCameraPath) return scene;
+      if (!in) p.fail("cannot open camera path file '" + resolved + "'");
+      std::stringstream text;
+      text << in.rdbuf();
+      json pathDocument;
+      try {
+        pathDocument = json::parse(text.str());
+      } catch (const json::parse_error& e) {
+        throw SceneError(resolved, "(document)", std::string("not valid JSON: ") + e.what());
+      }
+      scene.path = readCameraPath(Reader(resolved, pathDocument, "$"));
+    } else {
+      scene.path = readCameraPath(p);
     }
   }
   return scene;
 }
 
-Scene loadScene(const std::string& pathOrDefault) {
+Scene loadScene(const std::string& pathOrDefault, bool requireCameraPath) {
   if (pathOrDefault.empty() || pathOrDefault == "default") {
     const auto& files = embeddedFiles();
     return parseScene(files.at("scenes/demo.json"), "default", ".");
@@ -354,8 +377,8 @@ Scene loadScene(const std::string& pathOrDefault) {
   if (!in) throw SceneError(pathOrDefault, "(file)", "cannot open scene file");
   std::stringstream text;
   text << in.rdbuf();
-  return parseScene(text.str(), pathOrDefault,
-                    std::filesystem::path(pathOrDefault).parent_path().string());
+  return parseScene(text.str(), pathOrDefault, std::filesystem::path(pathOrDefault).parent_path().string(),
+                    requireCameraPath);
 }
 
 }  // namespace host

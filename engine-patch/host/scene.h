@@ -94,9 +94,10 @@ class SceneError : public std::runtime_error {
   SceneError(const std::string& file, const std::string& field, const std::string& problem);
 };
 
-// "default" (or "") loads the built-in demo scene of hard cases.
-Scene loadScene(const std::string& pathOrDefault);
+// "default" (or "") loads the built-in demo scene of hard cases. With `requireCameraPath` false, a
+// camera path file that does not exist yet is no error (`retroaa record` is about to write it).
+Scene loadScene(const std::string& pathOrDefault, bool requireCameraPath = true);
 Scene parseScene(const std::string& jsonText, const std::string& fileName,
-                 const std::string& baseDirectory);
+                 const std::string& baseDirectory, bool requireCameraPath = true);
 
 }  // namespace host

@@ -15,6 +15,18 @@ void PluginContext::drawFullscreen() const {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
+  if (framebuffer) glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, layout.width, layout.height);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
 ScopedPass::ScopedPass(PluginContext& context, const char* name) : context_(context), name_(name) {
   const std::string label = std::string("retroaa.") + name;
   glPushDebugGroup(GL_DEBUG_SOURCE_THIRD_PARTY, 0, -1, label.c_str());

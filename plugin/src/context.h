@@ -32,6 +32,9 @@ struct PluginContext {
   void warn(const std::string& message);
   uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }
   void drawFullscreen() const;     // one triangle with the empty vertex array bound
+  // Binds `framebuffer` (0: leave the binding) with the layout's viewport and plain state: no blend,
+  // depth or stencil test, culling or scissor; all colour channels written.
+  void beginFullscreenPass(GLuint framebuffer) const;
 };
 
 // Times one pass into the frame's stats when the config asks for it; labels it for debuggers.

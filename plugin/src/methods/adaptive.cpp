@@ -69,13 +69,7 @@ Status AdaptivePass::measureGeometry(PluginContext& context, const MsaaGBuffer& 
   ScopedPass timed(context, "adaptive.geometry_metric");
   const GBufferLayout& layout = context.layout;
   const GLuint program = geometryProgram_.get();
-  glBindFramebuffer(GL_FRAMEBUFFER, geometryTarget_.get());
-  glViewport(0, 0, layout.width, layout.height);
-  glDisable(GL_BLEND);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_SCISSOR_TEST);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  context.beginFullscreenPass(geometryTarget_.get());
   glUseProgram(program);
   source.bind(layout);
   setDepthEncodingUniforms(program, layout);

@@ -43,7 +43,7 @@ Status CoveragePass::run(PluginContext& context, const PostTarget& post, const F
   ScopedPass timed(context, "coverage_filter");
   const GBufferLayout& layout = context.layout;
   const GLuint program = program_.get();
-  post.bindAsOutput(layout);
+  post.bindAsOutput(context);
   glUseProgram(program);
   post.bindInput(layout, 0);
   glBindTextureUnit(1, layout.depthStencilTexture);

@@ -30,7 +30,7 @@ Status FxaaPass::run(PluginContext& context, const PostTarget& post) {
   ScopedPass timed(context, "fxaa");
   const GBufferLayout& layout = context.layout;
   const GLuint program = program_.get();
-  post.bindAsOutput(layout);
+  post.bindAsOutput(context);
   glUseProgram(program);
   post.bindInput(layout, 0);
   glUniform2f(glGetUniformLocation(program, "uTexelSize"), 1.0f / layout.width, 1.0f / layout.height);

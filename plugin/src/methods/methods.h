@@ -160,7 +160,7 @@ std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY);
 class PostTarget {
  public:
   static Result<std::unique_ptr<PostTarget>> create(PluginContext& context);
-  void bindAsOutput(const GBufferLayout& layout) const;  // framebuffer, viewport, plain state
+  void bindAsOutput(const PluginContext& context) const;  // framebuffer, viewport, plain state
   void bindInput(const GBufferLayout& layout, GLuint unit) const;  // the display texture, bilinear
   void copyBack(const GBufferLayout& layout) const;
   uint64_t bytes() const { return bytes_; }

@@ -20,16 +20,7 @@ Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
   return target;
 }
 
-void PostTarget::bindAsOutput(const GBufferLayout& layout) const {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
-  glViewport(0, 0, layout.width, layout.height);
-  glDisable(GL_BLEND);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_SCISSOR_TEST);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-}
+void PostTarget::bindAsOutput(const PluginContext& context) const { context.beginFullscreenPass(framebuffer_.get()); }
 
 void PostTarget::bindInput(const GBufferLayout& layout, GLuint unit) const {
   glBindTextureUnit(unit, layout.displayTexture);

@@ -33,13 +33,7 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
   ScopedPass timed(context, "resolve");
   const GBufferLayout& layout = context.layout;
   const GLuint program = program_.get();
-  glBindFramebuffer(GL_FRAMEBUFFER, hostTarget_.get());
-  glViewport(0, 0, layout.width, layout.height);
-  glDisable(GL_BLEND);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_SCISSOR_TEST);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  context.beginFullscreenPass(hostTarget_.get());
   glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);

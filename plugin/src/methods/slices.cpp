@@ -14,15 +14,6 @@ void stencilPassWhereCountAbove(int slice) {
   glStencilMask(0x00);
 }
 
-void fullscreenState(const GBufferLayout& layout) {
-  glViewport(0, 0, layout.width, layout.height);
-  glDisable(GL_BLEND);
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_SCISSOR_TEST);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-}
 }  // namespace
 
 Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& context, const MsaaGBuffer& source) {
@@ -71,10 +62,8 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
 }
 
 Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport, GLuint target) {
-  const GBufferLayout& layout = context.layout;
   if (target == 0) target = maskTarget_.get();
-  glBindFramebuffer(GL_FRAMEBUFFER, target);
-  fullscreenState(layout);
+  context.beginFullscreenPass(target);
   const GLuint zero[4] = {0, 0, 0, 0};
   glClearNamedFramebufferuiv(target, GL_COLOR, 0, zero);
   glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, 0);
@@ -113,8 +102,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
   for (int slice = 0; slice < sliceCount; ++slice) {
     {
       ScopedPass timed(context, "slices.write");
-      glBindFramebuffer(GL_FRAMEBUFFER, sliceWriter_.get());
-      fullscreenState(layout);
+      context.beginFullscreenPass(sliceWriter_.get());
       if (slice == 0 && !plan.firstSliceEverywhere) stencilPassWhereCountAbove(1); else sliceStencil(slice);
       if (plan.writeProgram) {
         glUseProgram(plan.writeProgram);
@@ -146,8 +134,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     {
       ScopedPass timed(context, "slices.lighting");
       GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
-      glBindFramebuffer(GL_FRAMEBUFFER, lightTarget_.get());
-      fullscreenState(layout);
+      context.beginFullscreenPass(lightTarget_.get());
       sliceStencil(slice);
       lighting(lightTarget_.get());
     }
@@ -156,8 +143,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     }
     {
       ScopedPass timed(context, "slices.composite");
-      glBindFramebuffer(GL_FRAMEBUFFER, compositeTarget_.get());
-      fullscreenState(layout);
+      context.beginFullscreenPass(compositeTarget_.get());
       sliceStencil(slice);  // slice 0 overwrites the whole target, later slices add
       if (slice > 0) {
         glEnable(GL_BLEND);

@@ -1,0 +1,422 @@
+#include "regress.h"
+
+#include "commands.h"
+#include "ground_truth.h"
+#include "image_io.h"
+#include "metrics.h"
+#include "session.h"
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace app {
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// Renders done / total (frames × methods) with an ETA: a bar on a terminal, plain lines otherwise.
+class Progress {
+ public:
+  explicit Progress(int total) : total_(total), start_(std::chrono::steady_clock::now()), terminal_(isatty(2)) {}
+  void step(const std::string& what) {
+    ++done_;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double eta = done_ > 0 ? elapsed / done_ * (total_ - done_) : 0;
+    if (terminal_) {
+      const int width = 30, filled = total_ ? width * done_ / total_ : width;
+      std::fprintf(stderr, "\r[%s%s] %d/%d renders, ETA %ds  %-40s", std::string(filled, '#').c_str(),
+                   std::string(width - filled, ' ').c_str(), done_, total_, int(eta), what.c_str());
+      if (done_ == total_) std::fprintf(stderr, "\n");
+    } else {
+      std::fprintf(stderr, "regress: %d/%d renders (ETA %ds) %s\n", done_, total_, int(eta), what.c_str());
+    }
+  }
+
+ private:
+  int total_, done_ = 0;
+  std::chrono::steady_clock::time_point start_;
+  bool terminal_;
+};
+
+std::string sceneKey(const std::string& scene) {
+  return scene == "default" ? "default" : fs::path(scene).stem().string();
+}
+
+std::string fileSafe(std::string name) {
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  return name;
+}
+
+// Per method, summed over a scene's frames.
+struct MethodTotals {
+  double psnr = 0, edgePsnr = 0, minEdgePsnr = 1e9, psnrVsPerSample = 0, ssim = 0, maxError = 0;
+  double evaluations = 0, gpuMs = 0, flicker = 0;
+  std::map<std::string, double> passMs;
+  int frames = 0, flickerFrames = 0;
+  uint64_t bytes = 0;
+  std::vector<float> previousError;  // signed display error of the previous frame
+};
+
+// The window (w × h) holding the most ground-truth edge pixels: where the hard cases are.
+std::pair<int, int> busiestWindow(const std::vector<uint8_t>& edges, int width, int height, int w, int h) {
+  int best = -1, bestX = 0, bestY = 0;
+  for (int y = 0; y + h <= height; y += h / 4)
+    for (int x = 0; x + w <= width; x += w / 4) {
+      int count = 0;
+      for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) count += edges[size_t(y + j) * width + x + i];
+      if (count > best) best = count, bestX = x, bestY = y;
+    }
+  return {bestX, bestY};
+}
+
+// A nearest-neighbour zoom of a window of an RGBA8 top-down image.
+std::vector<uint8_t> crop(const std::vector<uint8_t>& image, int width, int x0, int y0, int w, int h, int zoom) {
+  std::vector<uint8_t> out(size_t(w) * zoom * h * zoom * 4);
+  for (int y = 0; y < h * zoom; ++y)
+    for (int x = 0; x < w * zoom; ++x)
+      std::copy_n(&image[(size_t(y0 + y / zoom) * width + x0 + x / zoom) * 4], 4, &out[(size_t(y) * w * zoom + x) * 4]);
+  return out;
+}
+
+std::string svgScatter(const json& rows) {
+  // Cost (GPU ms) against edge PSNR, with the Pareto front: no cheaper point is better.
+  const double w = 560, h = 300, left = 60, bottom = 40, top = 20, right = 20;
+  double xMin = 1e9, xMax = -1e9, yMin = 1e9, yMax = -1e9;
+  for (const auto& r : rows) {
+    xMin = std::min(xMin, r["gpu_ms"].get<double>()), xMax = std::max(xMax, r["gpu_ms"].get<double>());
+    yMin = std::min(yMin, r["edge_psnr_db"].get<double>()), yMax = std::max(yMax, r["edge_psnr_db"].get<double>());
+  }
+  if (xMax <= xMin) xMax = xMin + 1;
+  if (yMax <= yMin) yMax = yMin + 1;
+  xMin = 0, yMin = std::floor(yMin - 1), yMax = std::ceil(yMax + 1), xMax *= 1.1;
+  auto px = [&](double v) { return left + (v - xMin) / (xMax - xMin) * (w - left - right); };
+  auto py = [&](double v) { return h - bottom - (v - yMin) / (yMax - yMin) * (h - top - bottom); };
+  std::ostringstream s;
+  s << std::fixed;
+  s.precision(1);
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h << "\" class=\"scatter\">";
+  s << "<line x1=\"" << left << "\" y1=\"" << h - bottom << "\" x2=\"" << w - right << "\" y2=\"" << h - bottom << "\" stroke=\"#888\"/>";
+  s << "<line x1=\"" << left << "\" y1=\"" << top << "\" x2=\"" << left << "\" y2=\"" << h - bottom << "\" stroke=\"#888\"/>";
+  s << "<text x=\"" << w / 2 << "\" y=\"" << h - 8 << "\" text-anchor=\"middle\">GPU ms per frame (mean)</text>";
+  s << "<text x=\"14\" y=\"" << h / 2 << "\" transform=\"rotate(-90 14 " << h / 2 << ")\" text-anchor=\"middle\">edge PSNR dB</text>";
+  for (int i = 0; i <= 4; ++i) {
+    const double xv = xMin + (xMax - xMin) * i / 4, yv = yMin + (yMax - yMin) * i / 4;
+    s << "<text x=\"" << px(xv) << "\" y=\"" << h - bottom + 14 << "\" text-anchor=\"middle\" class=\"tick\">" << xv << "</text>";
+    s << "<text x=\"" << left - 6 << "\" y=\"" << py(yv) + 4 << "\" text-anchor=\"end\" class=\"tick\">" << yv << "</text>";
+  }
+  std::vector<std::pair<double, double>> points;
+  for (const auto& r : rows) points.push_back({r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
+  std::vector<size_t> order(points.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return points[a] < points[b]; });
+  std::string front;
+  double best = -1e9;
+  for (size_t i : order)
+    if (points[i].second > best) {
+      best = points[i].second;
+      std::ostringstream p;
+      p << std::fixed;
+      p.precision(1);
+      p << px(points[i].first) << "," << py(points[i].second) << " ";
+      front += p.str();
+    }
+  s << "<polyline points=\"" << front << "\" fill=\"none\" stroke=\"#c33\" stroke-dasharray=\"4 3\"/>";
+  for (size_t i = 0; i < points.size(); ++i) {
+    s << "<circle cx=\"" << px(points[i].first) << "\" cy=\"" << py(points[i].second) << "\" r=\"4\" fill=\"#246\"/>";
+    s << "<text x=\"" << px(points[i].first) + 6 << "\" y=\"" << py(points[i].second) - 6 << "\" class=\"label\">"
+      << rows[i]["method"].get<std::string>() << "</text>";
+  }
+  s << "</svg>";
+  return s.str();
+}
+
+std::string htmlEscape(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+  return out;
+}
+
+// Compares a scene's rows with its golden; returns what got worse beyond tolerance.
+std::vector<std::string> compareWithGolden(const json& golden, const json& scene) {
+  std::vector<std::string> worse;
+  const json& tolerance = golden["tolerance"];
+  for (const auto& row : scene["rows"]) {
+    const std::string method = row["method"];
+    if (!golden["methods"].contains(method)) {
+      worse.push_back(scene["scene"].get<std::string>() + " / " + method + ": no golden figures (run --update-golden)");
+      continue;
+    }
+    const json& g = golden["methods"][method];
+    auto lower = [&](const char* figure, double allowed) {
+      const double now = row[figure], then = g[figure];
+      if (now < then - allowed) {
+        std::ostringstream m;
+        m << scene["scene"].get<std::string>() << " / " << method << ": " << figure << " fell from " << then << " to " << now
+          << " (tolerance " << allowed << ")";
+        worse.push_back(m.str());
+      }
+    };
+    auto higher = [&](const char* figure, double relative, double absolute) {
+      const double now = row[figure], then = g[figure];
+      if (now > then * (1.0 + relative) + absolute) {
+        std::ostringstream m;
+        m << scene["scene"].get<std::string>() << " / " << method << ": " << figure << " rose from " << then << " to " << now
+          << " (tolerance +" << relative * 100 << " % + " << absolute << ")";
+        worse.push_back(m.str());
+      }
+    };
+    lower("psnr_db", tolerance["psnr_db"]);
+    lower("edge_psnr_db", tolerance["edge_psnr_db"]);
+    higher("flicker", tolerance["flicker_relative"], tolerance["flicker_absolute"]);
+    higher("evals_per_pixel", tolerance["evals_relative"], 0.0);
+  }
+  return worse;
+}
+
+}  // namespace
+
+std::vector<std::string> defaultRegressScenes(const std::string& dir) {
+  return {"default", dir + "/scenes/engine.json", dir + "/scenes/space_battle.json", dir + "/scenes/fence.json",
+          dir + "/scenes/heavy_lighting.json"};
+}
+
+int runRegress(const RegressOptions& options) {
+  std::vector<MethodSpec> specs;
+  for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
+  if (specs.empty()) throw std::invalid_argument("--methods names no method");
+  const std::vector<std::string> scenes = options.scenes.empty() ? defaultRegressScenes(RETROAA_INTEGRATION_TESTS_DIR) : options.scenes;
+  const int w = options.width, h = options.height;
+  host::HeadlessContext context;
+
+  // Frames per scene, for the progress bar; loading validates every scene before any work.
+  std::vector<std::vector<int>> frames;
+  int total = 0;
+  for (const std::string& scene : scenes) {
+    const host::Scene loaded = host::loadScene(scene);
+    std::vector<int> list;
+    for (int f = 0; f < loaded.path.frameCount(); f += std::max(options.frameStride, 1)) list.push_back(f);
+    if (options.maxFrames > 0 && int(list.size()) > options.maxFrames) list.resize(options.maxFrames);
+    total += int(list.size());
+    frames.push_back(list);
+  }
+  Progress progress(total * int(specs.size()));
+  fs::create_directories(options.out);
+
+  json report = {{"renderer", context.info().summary()},
+                 {"width", w},
+                 {"height", h},
+                 {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
+                 {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
+                 {"flicker", "mean over frames t of the RMS over pixels of (error_t - error_(t-1)), error = image - ground truth"},
+                 {"scenes", json::array()}};
+
+  for (size_t si = 0; si < scenes.size(); ++si) {
+    Session session(context, scenes[si], w, h);
+    const std::string key = sceneKey(scenes[si]);
+    const fs::path sceneDir = fs::path(options.out) / fileSafe(key);
+    fs::create_directories(sceneDir);
+    std::map<std::string, MethodTotals> totals;
+    json images = json::object();
+    // Ground truth and the per-sample reference of every frame first, then one method at a time over
+    // all frames: each method is configured once and warmed up, so its times are steady-state.
+    struct FrameReference {
+      std::vector<uint8_t> truth;
+      std::vector<uint8_t> edges;
+      DisplayImage reference, perSample;
+    };
+    std::vector<FrameReference> references;
+    retroaa::Config perSampleConfig = options.base;
+    perSampleConfig.method = retroaa::Method::PerSample;
+    session.configure(perSampleConfig);
+    for (int frame : frames[si]) {
+      const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, session.camera(frame), options.groundTruthSamples);
+      session.renderer->renderFrame(session.camera(frame));
+      references.push_back({truth.display, edgeMaskFromSpread(truth.lumaStdDev), DisplayImage::fromRgba8(w, h, truth.display),
+                            DisplayImage::fromRgba8(w, h, session.renderer->readDisplay())});
+    }
+    const int cropW = std::min(48, w), cropH = std::min(36, h);
+    const std::pair<int, int> window = busiestWindow(references[0].edges, w, h, cropW, cropH);
+    writeImage8((sceneDir / "ground-truth.png").string(), w, h, references[0].truth);
+    writeImage8((sceneDir / "ground-truth-crop.png").string(), cropW * 4, cropH * 4,
+                crop(references[0].truth, w, window.first, window.second, cropW, cropH, 4));
+    images["crop_window"] = {window.first, window.second, cropW, cropH};
+    for (const MethodSpec& spec : specs) {
+      retroaa::Config config = spec.config;
+      config.measureGpuTime = true;
+      session.configure(config);
+      session.renderer->renderFrame(session.camera(frames[si][0]));  // warm-up: allocation, shader compilation
+      MethodTotals& t = totals[spec.name];
+      for (size_t fi = 0; fi < frames[si].size(); ++fi) {
+        const FrameReference& ref = references[fi];
+        session.renderer->measureTime = true;
+        session.renderer->renderFrame(session.camera(frames[si][fi]));
+        session.renderer->measureTime = false;
+        const retroaa::Stats stats = session.hooks->plugin().stats();
+        const std::vector<uint8_t> display = session.renderer->readDisplay();
+        const DisplayImage image = DisplayImage::fromRgba8(w, h, display);
+        const ErrorMetrics m = compare(image, ref.reference, ref.edges);
+        t.psnr += m.psnrDb, t.edgePsnr += m.edgePsnrDb, t.minEdgePsnr = std::min(t.minEdgePsnr, m.edgePsnrDb);
+        t.psnrVsPerSample += compare(image, ref.perSample, {}).psnrDb;
+        t.ssim += m.ssim, t.maxError = std::max(t.maxError, m.maxAbsError);
+        t.evaluations += stats.evaluationsPerPixel(), t.gpuMs += session.renderer->timings().frameMs;
+        t.passMs["model_pass"] += session.renderer->timings().modelPassMs;
+        t.passMs["lighting"] += session.renderer->timings().lightingMs;
+        t.passMs["tonemap_post"] += session.renderer->timings().tonemapMs;
+        for (const retroaa::PassTime& pass : stats.passes) t.passMs["plugin." + pass.name] += pass.ms;
+        t.bytes = stats.bytesHeld;
+        ++t.frames;
+        std::vector<float> error(image.rgb.size());
+        for (size_t i = 0; i < error.size(); ++i) error[i] = image.rgb[i] - ref.reference.rgb[i];
+        if (!t.previousError.empty()) {
+          double sum = 0;
+          for (size_t i = 0; i < error.size(); ++i) sum += double(error[i] - t.previousError[i]) * (error[i] - t.previousError[i]);
+          t.flicker += std::sqrt(sum / error.size());
+          ++t.flickerFrames;
+        }
+        t.previousError = std::move(error);
+        if (fi == 0) {
+          const std::string file = fileSafe(spec.name);
+          writeImage8((sceneDir / (file + ".png")).string(), w, h, display, session.metadata(spec.name));
+          writeImage8((sceneDir / (file + "-error.png")).string(), w, h, errorHeatmap(image, ref.reference));
+          writeImage8((sceneDir / (file + "-crop.png")).string(), cropW * 4, cropH * 4,
+                      crop(display, w, window.first, window.second, cropW, cropH, 4));
+          json entry = {{"image", file + ".png"}, {"error", file + "-error.png"}, {"crop", file + "-crop.png"}};
+          if (stats.slices > 1) {
+            writeImage8((sceneDir / (file + "-samples.png")).string(), w, h,
+                        visualiseCounts("samples", session.hooks->plugin().readSliceCounts(), display, w, h, stats.samples));
+            entry["samples"] = file + "-samples.png";
+          }
+          images[spec.name] = entry;
+        }
+        progress.step(key + " " + spec.name + " frame " + std::to_string(frames[si][fi]));
+      }
+    }
+    json rows = json::array();
+    for (const MethodSpec& spec : specs) {
+      const MethodTotals& t = totals[spec.name];
+      const double n = std::max(t.frames, 1);
+      json passes = json::object();
+      for (const auto& [name, ms] : t.passMs) passes[name] = ms / n;
+      rows.push_back({{"method", spec.name},
+                      {"frames", t.frames},
+                      {"evals_per_pixel", t.evaluations / n},
+                      {"gpu_ms", t.gpuMs / n},
+                      {"passes_ms", passes},
+                      {"plugin_bytes_per_pixel", double(t.bytes) / (double(w) * h)},
+                      {"psnr_db", t.psnr / n},
+                      {"edge_psnr_db", t.edgePsnr / n},
+                      {"min_edge_psnr_db", t.minEdgePsnr},
+                      {"psnr_vs_per_sample_db", t.psnrVsPerSample / n},
+                      {"ssim", t.ssim / n},
+                      {"max_abs_error", t.maxError},
+                      {"flicker", t.flickerFrames ? t.flicker / t.flickerFrames : 0.0}});
+    }
+    report["scenes"].push_back({{"scene", key},
+                                {"name", session.scene.name},
+                                {"file", scenes[si]},
+                                {"frames", frames[si].size()},
+                                {"directory", fileSafe(key)},
+                                {"images", images},
+                                {"rows", rows}});
+  }
+
+  // report.json and report.html
+  std::ofstream(fs::path(options.out) / "report.json") << report.dump(2) << "\n";
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>retroaa regression report</title>\n"
+       << "<style>body{font-family:sans-serif;margin:24px;color:#222}table{border-collapse:collapse;margin:8px 0}"
+          "td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}th{background:#eee}td:first-child{text-align:left}"
+          "img{image-rendering:pixelated;border:1px solid #999;margin:2px}figure{display:inline-block;margin:4px;text-align:center}"
+          "figcaption{font-size:12px}.scatter text{font-size:11px}.label{fill:#246}.tick{fill:#666}</style></head><body>\n"
+       << "<h1>retroaa: speed against error on recorded demo scenes</h1>\n<p>" << htmlEscape(context.info().summary()) << "; "
+       << w << "×" << h << ", ground truth " << options.groundTruthSamples << "×" << options.groundTruthSamples
+       << " supersamples per pixel. Figures are means over each scene's frames; errors on tonemapped display values. "
+       << "<b>Flicker</b> is the frame-to-frame change of the error (RMS), what players notice as crawling edges.</p>\n";
+  for (const auto& scene : report["scenes"]) {
+    const std::string dir = scene["directory"];
+    html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
+         << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>plugin B/px</th><th>PSNR dB</th>"
+         << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max err</th><th>flicker</th></tr>\n";
+    for (const auto& r : scene["rows"]) {
+      char line[512];
+      std::snprintf(line, sizeof line,
+                    "<tr><td>%s</td><td>%.3f</td><td>%.2f</td><td>%.0f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.4f</td><td>%.3f</td><td>%.4f</td></tr>\n",
+                    htmlEscape(r["method"]).c_str(), r["evals_per_pixel"].get<double>(), r["gpu_ms"].get<double>(),
+                    r["plugin_bytes_per_pixel"].get<double>(), r["psnr_db"].get<double>(), r["edge_psnr_db"].get<double>(),
+                    r["min_edge_psnr_db"].get<double>(), r["psnr_vs_per_sample_db"].get<double>(), r["ssim"].get<double>(),
+                    r["max_abs_error"].get<double>(), r["flicker"].get<double>());
+      html << line;
+    }
+    html << "</table>\n" << svgScatter(scene["rows"]) << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";
+    for (const auto& r : scene["rows"]) {
+      const std::string m = r["method"];
+      html << "<figure><img src=\"" << dir << "/" << scene["images"][m]["crop"].get<std::string>() << "\" alt=\"" << htmlEscape(m)
+           << "\"><figcaption>" << htmlEscape(m) << "</figcaption></figure>";
+    }
+    html << "<figure><img src=\"" << dir << "/ground-truth-crop.png\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n"
+         << "<h3>First frame, error heat maps and samples per pixel</h3>\n<div>";
+    for (const auto& r : scene["rows"]) {
+      const std::string m = r["method"];
+      const json& im = scene["images"][m];
+      html << "<figure><img src=\"" << dir << "/" << im["image"].get<std::string>() << "\" width=\"" << w << "\" alt=\"" << htmlEscape(m)
+           << "\"><img src=\"" << dir << "/" << im["error"].get<std::string>() << "\" width=\"" << w << "\" alt=\"error\">";
+      if (im.contains("samples"))
+        html << "<img src=\"" << dir << "/" << im["samples"].get<std::string>() << "\" width=\"" << w << "\" alt=\"samples\">";
+      html << "<figcaption>" << htmlEscape(m) << "</figcaption></figure>";
+    }
+    html << "<figure><img src=\"" << dir << "/ground-truth.png\" width=\"" << w << "\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n";
+  }
+  html << "</body></html>\n";
+  std::ofstream(fs::path(options.out) / "report.html") << html.str();
+  std::printf("report: %s (JSON: %s)\n", (fs::path(options.out) / "report.html").string().c_str(),
+              (fs::path(options.out) / "report.json").string().c_str());
+
+  // Goldens: the quality figures per scene and method, with tolerances.
+  int status = kExitOk;
+  for (const auto& scene : report["scenes"]) {
+    const fs::path goldenFile = fs::path(options.goldenDirectory) / (fileSafe(scene["scene"]) + ".json");
+    const json settings = {{"width", w}, {"height", h}, {"ground_truth_samples_per_axis", options.groundTruthSamples},
+                           {"frames", scene["frames"]}, {"frame_stride", options.frameStride}};
+    if (options.updateGolden) {
+      json golden = {{"scene", scene["scene"]},
+                     {"settings", settings},
+                     {"renderer", context.info().summary()},
+                     {"tolerance", {{"psnr_db", 0.5}, {"edge_psnr_db", 0.5}, {"flicker_relative", 0.25}, {"flicker_absolute", 0.0005}, {"evals_relative", 0.05}}},
+                     {"methods", json::object()}};
+      for (const auto& r : scene["rows"])
+        golden["methods"][r["method"].get<std::string>()] = {{"psnr_db", r["psnr_db"]}, {"edge_psnr_db", r["edge_psnr_db"]},
+                                                             {"flicker", r["flicker"]}, {"evals_per_pixel", r["evals_per_pixel"]}};
+      fs::create_directories(options.goldenDirectory);
+      std::ofstream(goldenFile) << golden.dump(2) << "\n";
+      std::printf("golden written: %s\n", goldenFile.string().c_str());
+    }
+    if (options.check) {
+      std::ifstream in(goldenFile);
+      if (!in) throw std::invalid_argument(goldenFile.string() + ": no golden for scene '" + scene["scene"].get<std::string>() +
+                                           "' (run with --update-golden)");
+      const json golden = json::parse(in);
+      if (golden["settings"] != settings)
+        throw std::invalid_argument(goldenFile.string() + ": golden was made with settings " + golden["settings"].dump() +
+                                    ", this run uses " + settings.dump());
+      const std::vector<std::string> worse = compareWithGolden(golden, scene);
+      for (const std::string& line : worse) std::printf("WORSE: %s\n", line.c_str());
+      if (!worse.empty()) status = kExitCheckFailed;
+    }
+  }
+  if (options.check) std::printf("check: %s\n", status == kExitOk ? "every figure within tolerance" : "figures got worse");
+  return status;
+}
+
+}  // namespace app

@@ -1,0 +1,32 @@
+// `retroaa regress`: every frame of recorded demo scenes with every method, against the per-sample
+// reference and ground truth; a report a person reads (report.html) and one a machine reads
+// (report.json); goldens that catch regressions.
+#pragma once
+
+#include "retroaa/config.h"
+
+#include <string>
+#include <vector>
+
+namespace app {
+
+struct RegressOptions {
+  std::vector<std::string> scenes;  // empty: the five recorded scenes of integration-tests/scenes
+  std::string methods = "off,fxaa,resolve,resolve+coverage,edge,adaptive,aggregate,per-sample";
+  retroaa::Config base;
+  int width = 240, height = 180;
+  int groundTruthSamples = 6;  // per axis
+  int frameStride = 1;         // every n-th frame of each path
+  int maxFrames = 0;           // at most this many frames per scene (0: all)
+  std::string out = "out/regress";
+  std::string goldenDirectory = "integration-tests/golden";
+  bool check = false;          // compare with the goldens; exit 1 naming what got worse
+  bool updateGolden = false;   // rewrite the goldens from this run
+};
+
+// The scenes `regress` runs when none are named: relative to the source tree's integration-tests/.
+std::vector<std::string> defaultRegressScenes(const std::string& integrationTestsDirectory);
+
+int runRegress(const RegressOptions& options);
+
+}  // namespace app

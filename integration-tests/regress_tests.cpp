@@ -1,0 +1,112 @@
+// `retroaa regress` and `retroaa record`: deterministic playback, goldens that catch a degraded
+// method, and a report whose every reference exists.
+#include "test_support.h"
+
+#include "commands.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <regex>
+#include <sstream>
+
+using namespace testing_support;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path tempDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("retroaa_regress_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+const char* kSmallRun = "default --frames 2 --width 96 --height 72 --gt-samples 3";
+}  // namespace
+
+TEST(Regress, CommittedGoldensHoldForTheFastSubset) {
+  const fs::path out = tempDir("subset");
+  const CliRun run = runCli(std::string("regress ") + kSmallRun +
+                            " --methods off,fxaa,resolve,resolve+coverage,edge,adaptive,aggregate,per-sample --out " +
+                            out.string() + " --golden-dir " + RETROAA_SOURCE_DIR + "/integration-tests/golden/ci --check");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("check: every figure within tolerance"), std::string::npos) << run.output;
+}
+
+TEST(Regress, CheckFailsNamingTheFigureWhenAMethodIsDegraded) {
+  const fs::path out = tempDir("degraded"), golden = tempDir("degraded_golden");
+  const std::string common = std::string("regress ") + kSmallRun + " --methods off,resolve --out " + out.string() +
+                             " --golden-dir " + golden.string();
+  ASSERT_EQ(runCli(common + " --update-golden").exitCode, 0);
+  EXPECT_EQ(runCli(common + " --check").exitCode, 0);
+  // A resolve with c = 0 keeps only its reference sample: no intra-model smoothing.
+  const CliRun degraded = runCli(common + " --check --set closeness=0");
+  EXPECT_EQ(degraded.exitCode, 1) << degraded.output;
+  EXPECT_NE(degraded.output.find("WORSE: default / resolve: edge_psnr_db fell from"), std::string::npos) << degraded.output;
+  EXPECT_EQ(degraded.output.find("default / off:"), std::string::npos) << "off did not change: " << degraded.output;
+  // Goldens made with other settings are refused, not silently compared.
+  const CliRun otherSize = runCli(std::string("regress default --frames 2 --width 64 --height 48 --gt-samples 3 --methods off,resolve --out ") +
+                                  out.string() + " --golden-dir " + golden.string() + " --check");
+  EXPECT_EQ(otherSize.exitCode, 2);
+  EXPECT_NE(otherSize.output.find("golden was made with settings"), std::string::npos) << otherSize.output;
+}
+
+TEST(Regress, ReportHtmlIsWellFormedAndEveryReferenceExists) {
+  const fs::path out = tempDir("report");
+  ASSERT_EQ(runCli(std::string("regress ") + kSmallRun + " --methods off,edge,aggregate --out " + out.string()).exitCode, 0);
+  std::ifstream in(out / "report.html");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string html = text.str();
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  for (const char* tag : {"html", "body", "table", "svg", "figure", "h2"}) {
+    const std::regex open(std::string("<") + tag + "[ >]"), close(std::string("</") + tag + ">");
+    const auto count = [&](const std::regex& r) { return std::distance(std::sregex_iterator(html.begin(), html.end(), r), std::sregex_iterator()); };
+    EXPECT_EQ(count(open), count(close)) << "unbalanced <" << tag << ">";
+    EXPECT_GT(count(open), 0) << tag;
+  }
+  const std::regex source("src=\"([^\"]+)\"");
+  int images = 0;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), source); it != std::sregex_iterator(); ++it, ++images)
+    EXPECT_TRUE(fs::exists(out / (*it)[1].str())) << "missing " << (*it)[1].str();
+  EXPECT_GE(images, 3 * 3 + 2);  // crop, image and heat map per method, plus the ground truth's
+  EXPECT_NE(html.find("<polyline"), std::string::npos) << "the Pareto front is drawn";
+  std::ifstream json(out / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(json);
+  ASSERT_EQ(report["scenes"].size(), 1u);
+  for (const auto& row : report["scenes"][0]["rows"])
+    for (const char* field : {"evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel", "psnr_db", "edge_psnr_db",
+                              "psnr_vs_per_sample_db", "max_abs_error", "flicker"})
+      EXPECT_TRUE(row.contains(field)) << field;
+}
+
+TEST(Playback, IsDeterministic) {
+  // Two hosts play frame 17 of the demo path: the images are identical bit for bit.
+  std::vector<std::vector<uint8_t>> images;
+  for (int run = 0; run < 2; ++run) {
+    PatchedHost host("default", 128, 96);
+    host.hooks->plugin().reconfigure(app::parseMethodSpec("edge", {}).config);
+    host.renderer->renderFrame(host.scene.path.at(host.scene.camera, 17));
+    images.push_back(host.renderer->readDisplay());
+  }
+  EXPECT_EQ(std::hash<std::string>{}(std::string(images[0].begin(), images[0].end())),
+            std::hash<std::string>{}(std::string(images[1].begin(), images[1].end())));
+  EXPECT_EQ(images[0], images[1]);
+}
+
+TEST(Record, WritesAPathAScenePlaysBack) {
+  const fs::path dir = tempDir("record");
+  std::ofstream(dir / "scene.json") << R"({"camera": {"position": [0, 1, 10], "target": [0, 0, 0]},
+    "materials": [{"name": "m"}], "objects": [{"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m"}],
+    "camera_path": "orbit.json"})";
+  EXPECT_THROW(host::loadScene((dir / "scene.json").string()), host::SceneError);  // not recorded yet
+  const CliRun run = runCli("record --scene " + (dir / "scene.json").string() + " --orbit-degrees 90 --seconds 1.5 --keys 4 --out " +
+                            (dir / "orbit.json").string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const host::Scene scene = host::loadScene((dir / "scene.json").string());
+  EXPECT_EQ(scene.path.frameCount(), 46);
+  const host::Camera last = scene.path.at(scene.camera, 45);
+  EXPECT_NEAR(glm::length(last.position - last.target), glm::length(scene.camera.position - scene.camera.target), 1e-3f);
+  EXPECT_NEAR(last.position.x, 10.0f, 0.05f);  // a quarter turn about +y (right-handed) from (0, 1, 10)
+}
