@@ -9,7 +9,10 @@ APT_PACKAGES = cmake g++ make pkg-config git assimp-testmodels \
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev libglfw3-dev libglm-dev \
   libopenimageio-dev openimageio-tools nlohmann-json3-dev libcli11-dev libassimp-dev libgtest-dev
 
-.PHONY: deps build demo test regress regress-golden docs-config clean
+# clang and its sanitizer and libFuzzer runtimes, for test-sanitize and fuzz only.
+CLANG_PACKAGES = clang libclang-rt-14-dev
+
+.PHONY: deps deps-clang build demo test test-sanitize fuzz soak regress regress-golden docs-config clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -19,6 +22,9 @@ deps:
 	  if [ "$$(id -u)" != 0 ]; then echo "error: apt-get needs root for:" $$missing; exit 1; fi; \
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
+
+deps-clang: deps
+	@$(MAKE) --no-print-directory deps APT_PACKAGES="$(CLANG_PACKAGES)"
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo
@@ -31,6 +37,28 @@ demo: build
 	LP_NUM_THREADS=2 $(RETROAA) regress default --out out/regress
 	@echo "reports: out/report.md (one frame, every method; JSON, CSV, images beside it)"
 	@echo "         out/regress/report.html (the demo scene's recorded path; open it in a browser)"
+
+# The unit tests, the fuzzing corpus and a small integration subset under AddressSanitizer and
+# UndefinedBehaviorSanitizer (clang). Mesa's own allocations are outside this project: leaks are not
+# checked (detect_leaks=0); the GL objects the plugin holds are counted by its own tests instead.
+SANITIZE_TESTS = 'Config|FuzzCorpus|Metrics|ResolveHardCases|AdaptiveMetrics|AggregateClustering|CoverageFilter|Plugin\.|Slices\.Edge'
+test-sanitize: deps-clang
+	CC=clang CXX=clang++ cmake -S . -B build-sanitize -DRETROAA_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build build-sanitize -j$(JOBS)
+	cd build-sanitize && LP_NUM_THREADS=2 ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j2 -R $(SANITIZE_TESTS)
+
+# libFuzzer on every parser a user can feed, FUZZ_SECONDS each; new inputs land in out/fuzz/, crashes
+# as out/fuzz/<target>-crash-*. Add what it finds to integration-tests/fuzz/corpus/ to replay it forever.
+FUZZ_SECONDS ?= 60
+fuzz: deps-clang
+	CC=clang CXX=clang++ cmake -S . -B build-fuzz -DRETROAA_FUZZ=ON -DRETROAA_SANITIZE=ON -DRETROAA_WITH_OPENIMAGEIO=OFF \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build build-fuzz -j$(JOBS) --target scene_fuzzer config_fuzzer model_fuzzer
+	for t in scene config model; do mkdir -p out/fuzz/$$t; \
+	  ASAN_OPTIONS=detect_leaks=0 build-fuzz/integration-tests/fuzz/$${t}_fuzzer -max_total_time=$(FUZZ_SECONDS) \
+	    -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix=out/fuzz/$$t- out/fuzz/$$t \
+	    integration-tests/fuzz/corpus/$$t || exit 1; done
 
 # Every frame of the five recorded scenes, checked against integration-tests/golden/ (~4 min here).
 regress: build

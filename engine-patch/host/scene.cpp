@@ -16,6 +16,9 @@ namespace {
 
 using nlohmann::json;
 
+// A scene file must not be able to exhaust memory: 20 M triangles is ~100× the demo scene.
+constexpr size_t kMaxSceneTriangles = 20'000'000;
+
 // Reads typed fields and throws SceneError with the full field path on any mismatch.
 class Reader {
  public:
@@ -23,6 +26,8 @@ class Reader {
       : file_(file), node_(node), path_(std::move(path)) {}
 
   Reader child(const std::string& key) const {
+    if (!node_.is_object()) fail("expected an object");
+    if (!node_.contains(key)) fail("missing required key '" + key + "'");
     return Reader(file_, node_.at(key), path_ + "." + key);
   }
   Reader element(size_t i) const {
@@ -227,7 +232,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
   json document;
   try {
     document = json::parse(jsonText);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // syntax errors, and numbers beyond double's range
     throw SceneError(fileName, "(document)", std::string("not valid JSON: ") + e.what());
   }
   const Reader root(fileName, document, "$");
@@ -277,6 +282,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
 
   if (!root.has("objects")) root.fail("missing required key 'objects'");
   const Reader objects = root.child("objects");
+  size_t triangles = 0;
   for (size_t i = 0; i < objects.arraySize(); ++i) {
     const Reader o = objects.element(i);
     o.expectObject({"name", "generator", "model", "material", "transform", "repeat"});
@@ -288,6 +294,9 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
     } else {
       const std::filesystem::path model = o.child("model").string();
       const std::string resolved = model.is_absolute() ? model.string() : (std::filesystem::path(baseDirectory) / model).string();
+      // Only regular files: a path like /dev/zero would never end.
+      std::error_code error;
+      if (!std::filesystem::is_regular_file(resolved, error)) o.child("model").fail("'" + resolved + "' is not a regular file");
       try {
         object.mesh = loadModel(resolved);
       } catch (const ModelLoadError& e) {
@@ -309,6 +318,10 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
       count = rep.child("count").integer(1, 10000);
       offset = rep.child("offset").vec3();
     }
+    triangles += object.mesh.triangleCount() * size_t(count);
+    if (triangles > kMaxSceneTriangles)
+      o.fail("the scene exceeds " + std::to_string(kMaxSceneTriangles) + " triangles (this object brings it to " +
+             std::to_string(triangles) + ")");
     for (int c = 0; c < count; ++c) {
       Object copy = object;
       copy.transform = glm::translate(glm::mat4(1.0f), offset * float(c)) * object.transform;
@@ -354,13 +367,18 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
       if (!in) p.fail("cannot open camera path file '" + resolved + "'");
       std::stringstream text;
       text << in.rdbuf();
-      json pathDocument;
+      // Errors inside the path file name both: the scene's field and the path file's own field.
       try {
-        pathDocument = json::parse(text.str());
-      } catch (const json::parse_error& e) {
-        throw SceneError(resolved, "(document)", std::string("not valid JSON: ") + e.what());
+        json pathDocument;
+        try {
+          pathDocument = json::parse(text.str());
+        } catch (const json::exception& e) {
+          throw SceneError(resolved, "(document)", std::string("not valid JSON: ") + e.what());
+        }
+        scene.path = readCameraPath(Reader(resolved, pathDocument, "$"));
+      } catch (const SceneError& e) {
+        p.fail(e.what());
       }
-      scene.path = readCameraPath(Reader(resolved, pathDocument, "$"));
     } else {
       scene.path = readCameraPath(p);
     }

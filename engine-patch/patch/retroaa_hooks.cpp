@@ -34,9 +34,12 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
 }
 
 retroaa::Result<std::unique_ptr<RetroaaHooks>> RetroaaHooks::create(const host::HostTargets& targets,
-                                                                     const retroaa::Config& config) {
+                                                                     const retroaa::Config& config,
+                                                                     uint32_t disabledFeatures, int maxSamplesLimit) {
   retroaa::Description description;
   description.config = config;
+  description.disabledFeatures = disabledFeatures;
+  description.maxSamplesLimit = maxSamplesLimit;
   description.layout = describeHostGBuffer(targets);
   description.log = [](retroaa::LogLevel, const std::string& message) {
     std::fprintf(stderr, "retroaa: warning: %s\n", message.c_str());

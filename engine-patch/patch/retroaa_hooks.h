@@ -17,8 +17,10 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets);
 class RetroaaHooks : public host::FrameHooks {
  public:
   // Creates the plugin for the host's current targets. Errors come back as the plugin's Error.
+  // `disabledFeatures` and `maxSamplesLimit` mask context capabilities (retroaa::Description).
   static retroaa::Result<std::unique_ptr<RetroaaHooks>> create(const host::HostTargets& targets,
-                                                               const retroaa::Config& config);
+                                                               const retroaa::Config& config,
+                                                               uint32_t disabledFeatures = 0, int maxSamplesLimit = 0);
 
   void targetsCreated(const host::HostTargets& targets) override;
   GLuint modelPassFramebuffer(GLuint stockGbuffer) override;

@@ -40,13 +40,14 @@ Status validateLayout(const GBufferLayout& layout) {
   return Status::ok();
 }
 
-ContextCapabilities queryCapabilities(uint32_t disabledFeatures) {
+ContextCapabilities queryCapabilities(uint32_t disabledFeatures, int maxSamplesLimit) {
   ContextCapabilities caps;
   GLint samples = 1, colorSamples = 1, depthSamples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &samples);
   glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &colorSamples);
   glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depthSamples);
   caps.maxSamples = std::max(1, std::min({samples, colorSamples, depthSamples}));
+  if (maxSamplesLimit > 0) caps.maxSamples = std::min(caps.maxSamples, maxSamplesLimit);
   caps.timerQuery = (epoxy_gl_version() >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query")) &&
                     !(disabledFeatures & kFeatureTimerQuery);
   caps.stencilExport =
@@ -73,12 +74,24 @@ struct Plugin::Impl {
   bool resolvedThisFrame = false;
   int aggregateCount_ = 0;  // the c the aggregate shaders were built for
 
-  // Grants a requested config against the context: clamps samples (with a warning).
+  // Grants a requested config against the context: falls back from methods it cannot run and clamps
+  // samples, each with a warning.
   Config grant(Config requested) {
+    if ((usesMsaa(requested.method) || requested.method == Method::Coverage) && context.capabilities.maxSamples < 2) {
+      context.warn(std::string("method ") + toString(requested.method) + " needs multisampling but the context's GL_MAX_SAMPLES is " +
+                   std::to_string(context.capabilities.maxSamples) + "; falling back to fxaa");
+      requested.method = Method::Fxaa;
+    }
+    if (requested.measureGpuTime && !context.capabilities.timerQuery) {
+      context.warn("measure_gpu_time=on but the context has no timer queries: pass times are not measured");
+      requested.measureGpuTime = false;
+    }
     if (requested.samples > context.capabilities.maxSamples) {
-      context.warn("samples=" + std::to_string(requested.samples) + " requested, the context grants " +
-                   std::to_string(context.capabilities.maxSamples) + " (GL_MAX_SAMPLES); using " +
-                   std::to_string(context.capabilities.maxSamples));
+      // Only worth a word when the method uses the samples.
+      if (usesMsaa(requested.method) || requested.method == Method::Coverage)
+        context.warn("samples=" + std::to_string(requested.samples) + " requested, the context grants " +
+                     std::to_string(context.capabilities.maxSamples) + " (GL_MAX_SAMPLES); using " +
+                     std::to_string(context.capabilities.maxSamples));
       requested.samples = context.capabilities.maxSamples;
     }
     return requested;
@@ -177,7 +190,7 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   PluginContext& context = impl->context;
   context.layout = description.layout;
   context.log = description.log;
-  context.capabilities = queryCapabilities(description.disabledFeatures);
+  context.capabilities = queryCapabilities(description.disabledFeatures, description.maxSamplesLimit);
   if (!context.capabilities.stencilExport)
     context.warn("no ARB_shader_stencil_export: slice counts reach the stencil mask in N passes instead of one");
   context.config = impl->grant(description.config);

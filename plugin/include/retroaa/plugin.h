@@ -100,6 +100,7 @@ struct Description {
   GBufferLayout layout;
   LogCallback log;  // receives every warning (clamps, fallbacks); may be empty
   uint32_t disabledFeatures = 0;  // Feature bits to treat as missing
+  int maxSamplesLimit = 0;        // treat GL_MAX_SAMPLES as at most this (0: the context's own; 1: no MSAA)
 };
 
 // Per-frame camera facts for the closeness test.
@@ -131,7 +132,9 @@ using LightingFunction = std::function<void(GLuintHandle target)>;
 class Plugin {
  public:
   // Fails with InvalidConfig, InvalidLayout, UnsupportedContext, IncompleteFramebuffer or ShaderError.
-  // Features the context lacks make the plugin fall back to a method it supports, with a warning.
+  // Features the context lacks make the plugin fall back, with a warning that says which and why:
+  // no multisampling (GL_MAX_SAMPLES < 2) → every multi-sample method becomes `fxaa`; no stencil export →
+  // slice counts in N passes; no timer queries → no pass times. Compute shaders are not used.
   static Result<std::unique_ptr<Plugin>> create(const Description& description);
   ~Plugin();
   Plugin(const Plugin&) = delete;

@@ -1,0 +1,78 @@
+// Contexts lacking a feature, simulated by masking it: the plugin falls back, says which and why,
+// and nothing else changes.
+#include "commands.h"
+#include "test_support.h"
+
+using namespace testing_support;
+
+namespace {
+std::unique_ptr<patch::RetroaaHooks> install(PatchedHost& host, const retroaa::Config& config, uint32_t disabled, int maxSamples) {
+  auto created = patch::RetroaaHooks::create(host.renderer->targets(), config, disabled, maxSamples);
+  if (!created) throw std::runtime_error(created.error().message);
+  host.renderer->setHooks(created.value().get());
+  return std::move(created.value());
+}
+}  // namespace
+
+TEST(Capabilities, WithoutMultisamplingEveryMsaaMethodFallsBackToFxaa) {
+  PatchedHost host("default", 96, 72);
+  const app::DisplayImage fxaa = host.render("fxaa");
+  for (const char* method : {"resolve", "edge", "per-sample", "adaptive", "aggregate", "coverage"}) {
+    retroaa::Config config = app::parseMethodSpec(method, {}).config;
+    auto hooks = install(host, config, 0, 1);
+    EXPECT_EQ(hooks->plugin().config().method, retroaa::Method::Fxaa) << method;
+    const auto warnings = hooks->plugin().warnings();
+    ASSERT_FALSE(warnings.empty()) << method;
+    EXPECT_NE(warnings.back().find(std::string("method ") + method + " needs multisampling"), std::string::npos) << warnings.back();
+    EXPECT_NE(warnings.back().find("GL_MAX_SAMPLES is 1; falling back to fxaa"), std::string::npos) << warnings.back();
+    host.renderer->renderFrame(host.scene.camera);
+    EXPECT_EQ(app::DisplayImage::fromRgba8(96, 72, host.renderer->readDisplay()).rgb, fxaa.rgb) << method;
+    EXPECT_EQ(hooks->plugin().stats().bytesHeld, 96u * 72u * 4u) << "no MSAA storage for " << method;
+  }
+  host.renderer->setHooks(host.hooks.get());
+}
+
+TEST(Capabilities, FewerSamplesAreClampedWithAWarning) {
+  PatchedHost host("default", 64, 48);
+  retroaa::Config config;
+  config.method = retroaa::Method::Edge;
+  config.samples = 4;
+  auto hooks = install(host, config, 0, 2);
+  EXPECT_EQ(hooks->plugin().config().samples, 2);
+  EXPECT_NE(hooks->plugin().warnings().front().find("samples=4 requested, the context grants 2"), std::string::npos);
+  host.renderer->renderFrame(host.scene.camera);  // still renders (llvmpipe may back 2 with 4)
+  EXPECT_GE(hooks->plugin().stats().evaluationsPerPixel(), 1.0);
+  host.renderer->setHooks(host.hooks.get());
+}
+
+TEST(Capabilities, WithoutTimerQueriesNoPassTimesAndSaysSo) {
+  PatchedHost host("default", 64, 48);
+  retroaa::Config config;
+  config.method = retroaa::Method::Resolve;
+  config.measureGpuTime = true;
+  auto hooks = install(host, config, retroaa::kFeatureTimerQuery, 0);
+  host.renderer->renderFrame(host.scene.camera);
+  EXPECT_TRUE(hooks->plugin().stats().passes.empty());
+  bool said = false;
+  for (const std::string& w : hooks->plugin().warnings()) said = said || w.find("no timer queries") != std::string::npos;
+  EXPECT_TRUE(said);
+  // And with them, the same config measures its passes.
+  auto measured = install(host, config, 0, 0);
+  host.renderer->renderFrame(host.scene.camera);
+  EXPECT_FALSE(measured->plugin().stats().passes.empty());
+  host.renderer->setHooks(host.hooks.get());
+}
+
+TEST(Plugins, TwoInstancesInOneProcessWorkSideBySide) {
+  // Two views, two plugins with different methods, rendering alternately: each gives exactly what it
+  // gives alone.
+  PatchedHost left("default", 96, 72), right("default", 96, 72);
+  const app::DisplayImage edgeAlone = left.render("edge");
+  const app::DisplayImage aggregateAlone = right.render("aggregate");
+  for (int i = 0; i < 3; ++i) {
+    left.renderer->renderFrame(left.scene.camera);
+    right.renderer->renderFrame(right.scene.camera);
+  }
+  EXPECT_EQ(app::DisplayImage::fromRgba8(96, 72, left.renderer->readDisplay()).rgb, edgeAlone.rgb);
+  EXPECT_EQ(app::DisplayImage::fromRgba8(96, 72, right.renderer->readDisplay()).rgb, aggregateAlone.rgb);
+}

@@ -1,0 +1,7 @@
+// libFuzzer target (make fuzz): see fuzz_entries.h.
+#include "fuzz_entries.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  fuzz::modelFile(data, size);
+  return 0;
+}
