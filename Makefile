@@ -60,6 +60,10 @@ fuzz: deps-clang
 	    -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix=out/fuzz/$$t- out/fuzz/$$t \
 	    integration-tests/fuzz/corpus/$$t || exit 1; done
 
+# 2000 frames switching every method, sample count, detector and size in one process.
+soak: build
+	LP_NUM_THREADS=2 $(RETROAA) soak --frames 2000
+
 # Every frame of the five recorded scenes, checked against integration-tests/golden/ (~4 min here).
 regress: build
 	LP_NUM_THREADS=2 $(RETROAA) regress --out out/regress --check

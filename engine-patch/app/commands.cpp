@@ -18,6 +18,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <unistd.h>
 #include <stdexcept>
 
 namespace app {
@@ -386,6 +387,57 @@ int runRecord(const RecordOptions& options) {
   std::ofstream(options.out) << path.dump(1) << "\n";
   std::printf("wrote %s: %d frames\n", options.out.c_str(), int(std::floor(options.seconds * options.framesPerSecond)) + 1);
   return kExitOk;
+}
+
+namespace {
+double residentMiB() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return resident * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+}  // namespace
+
+int runSoak(const SoakOptions& options) {
+  host::HeadlessContext context;
+  Session session(context, "default", options.width, options.height);
+  const std::vector<std::string> methods = expandMethodList("all");
+  const int sizes[3][2] = {{options.width, options.height}, {options.width + 17, options.height + 9}, {options.width / 2 + 3, options.height / 2 + 5}};
+  const int samples[] = {1, 2, 4, 8};
+  session.configure(retroaa::Config{});
+  session.renderer->renderFrame(session.camera(0));
+  const int objectsAtStart = session.hooks->plugin().stats().glObjectsHeld;
+  const int errorsAtStart = context.debugErrorCount();
+  double residentAfterWarmUp = 0, residentPeak = 0;
+  for (int frame = 0; frame < options.frames; ++frame) {
+    retroaa::Config config = parseMethodSpec(methods[frame % methods.size()], {}).config;
+    config.samples = samples[(frame / 3) % 4];
+    config.edgeDetector = retroaa::EdgeDetector(frame % 5);
+    config.aggregateCount = 1 + frame % 4;
+    config.fxaa = frame % 7 == 0;
+    session.configure(config);
+    if (frame % 50 == 49) {
+      const int* size = sizes[(frame / 50) % 3];
+      session.renderer->resize(size[0], size[1]);
+    }
+    session.renderer->renderFrame(session.camera(frame % std::max(session.scene.path.frameCount(), 1)));
+    if (frame == std::min(options.frames - 1, 100)) residentAfterWarmUp = residentMiB();
+    residentPeak = std::max(residentPeak, residentMiB());
+  }
+  session.renderer->resize(options.width, options.height);
+  session.configure(retroaa::Config{});
+  session.renderer->renderFrame(session.camera(0));
+  const int objectsAtEnd = session.hooks->plugin().stats().glObjectsHeld;
+  const int glErrors = context.debugErrorCount() - errorsAtStart;
+  const double growth = residentPeak - residentAfterWarmUp;
+  std::printf("soak: %d frames, %zu methods x 4 sample counts x 5 detectors, 3 sizes\n", options.frames, methods.size());
+  std::printf("soak: plugin GL objects %d at start, %d at end; GL errors %d; resident memory %.1f MiB after warm-up, peak %.1f MiB (growth %.1f, bound %.0f)\n",
+              objectsAtStart, objectsAtEnd, glErrors, residentAfterWarmUp, residentPeak, growth, options.maxGrowthMiB);
+  const bool ok = objectsAtEnd == objectsAtStart && glErrors == 0 && growth <= options.maxGrowthMiB &&
+                  session.hooks->lastError().empty();
+  if (!session.hooks->lastError().empty()) std::printf("soak: plugin error: %s\n", session.hooks->lastError().c_str());
+  std::printf("soak: %s\n", ok ? "passed" : "FAILED");
+  return ok ? kExitOk : kExitCheckFailed;
 }
 
 std::string configReference(bool markdown) {

@@ -71,6 +71,16 @@ struct RecordOptions {
 };
 int runRecord(const RecordOptions& options);
 
+// Soak: `frames` frames in one process, switching method, sample count, weighting, detector and
+// size as it goes; checks that the plugin's GL objects return to their starting count, that no GL error
+// is raised, and that resident memory stays within `maxGrowthMiB` after warm-up. Exit 1 if not.
+struct SoakOptions {
+  int frames = 2000;
+  int width = 96, height = 72;
+  double maxGrowthMiB = 64;
+};
+int runSoak(const SoakOptions& options);
+
 // Every config key with default, allowed values and effect: plain text, or docs/config.md's table.
 std::string configReference(bool markdown);
 

@@ -102,6 +102,13 @@ int main(int argc, char** argv) {
   regressCmd->add_flag("--update-golden", regress.updateGolden, "rewrite the goldens from this run");
   addConfigOptions(regressCmd);
 
+  app::SoakOptions soak;
+  CLI::App* soakCmd = cli.add_subcommand("soak", "many frames switching every setting: leaks, GL errors, memory");
+  soakCmd->add_option("--frames", soak.frames)->check(CLI::Range(1, 10000000));
+  soakCmd->add_option("--width", soak.width)->check(CLI::Range(16, 8192));
+  soakCmd->add_option("--height", soak.height)->check(CLI::Range(16, 8192));
+  soakCmd->add_option("--max-growth-mib", soak.maxGrowthMiB, "allowed resident memory growth after warm-up");
+
   bool markdown = false;
   CLI::App* configCmd = cli.add_subcommand("config", "list every config key with its default, range and effect");
   configCmd->add_flag("--markdown", markdown, "as the Markdown table of docs/config.md");
@@ -120,6 +127,7 @@ int main(int argc, char** argv) {
       return app::kExitOk;
     }
     if (recordCmd->parsed()) return app::runRecord(record);
+    if (soakCmd->parsed()) return app::runSoak(soak);
     if (regressCmd->parsed()) {
       regress.base = config;
       return app::runRegress(regress);

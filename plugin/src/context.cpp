@@ -99,6 +99,14 @@ GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, 
   return GlTexture(context.objects, name);
 }
 
+void readSamplePositions(GLuint framebuffer, std::vector<float>& positionsXY) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  for (GLint s = 0; s < samples && 2 * size_t(s) + 1 < positionsXY.size(); ++s)
+    glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(s), &positionsXY[2 * s]);
+}
+
 GlFramebuffer makeFramebuffer(PluginContext& context, const char* label) {
   GLuint name = 0;
   glCreateFramebuffers(1, &name);

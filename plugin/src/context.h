@@ -59,4 +59,8 @@ GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, 
                       const char* label, uint64_t& bytes);
 GlFramebuffer makeFramebuffer(PluginContext& context, const char* label);
 
+// The driver's sample positions of `framebuffer` into `positionsXY` (x, y pairs in [0, 1)); entries
+// past the framebuffer's own GL_SAMPLES keep their value. Binds the framebuffer.
+void readSamplePositions(GLuint framebuffer, std::vector<float>& positionsXY);
+
 }  // namespace retroaa

@@ -82,6 +82,16 @@ struct Plugin::Impl {
                    std::to_string(context.capabilities.maxSamples) + "; falling back to fxaa");
       requested.method = Method::Fxaa;
     }
+    if (requested.method == Method::Coverage && requested.samples < 2 && context.capabilities.maxSamples >= 2) {
+      context.warn("method coverage needs at least 2 depth samples, samples=" + std::to_string(requested.samples) +
+                   " requested; using 2");
+      requested.samples = 2;
+    }
+    if (requested.coverageFilter && usesMsaa(requested.method) && requested.samples < 2) {
+      context.warn("coverage_filter needs at least 2 samples and samples=" + std::to_string(requested.samples) +
+                   "; the filter is off");
+      requested.coverageFilter = false;
+    }
     if (requested.measureGpuTime && !context.capabilities.timerQuery) {
       context.warn("measure_gpu_time=on but the context has no timer queries: pass times are not measured");
       requested.measureGpuTime = false;

@@ -57,10 +57,7 @@ Result<std::unique_ptr<AdaptivePass>> AdaptivePass::create(PluginContext& contex
 
   // The driver's own sample positions decide the order (queried, not assumed).
   std::vector<float> positions(size_t(source.samples()) * 2, 0.5f);
-  if (source.multisampled()) {
-    glBindFramebuffer(GL_FRAMEBUFFER, source.framebuffer());
-    for (int s = 0; s < source.samples(); ++s) glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(s), &positions[2 * s]);
-  }
+  if (source.multisampled()) readSamplePositions(source.framebuffer(), positions);
   pass->order_ = spreadingSampleOrder(positions);
   return pass;
 }

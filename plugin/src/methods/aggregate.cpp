@@ -35,11 +35,7 @@ Result<std::unique_ptr<AggregatePass>> AggregatePass::create(PluginContext& cont
   if (Status status = checkFramebuffer(fbo, "aggregate.cluster"); !status) return status.error();
 
   pass->samplePositions_.assign(size_t(source.samples()) * 2, 0.5f);
-  if (source.multisampled()) {
-    glBindFramebuffer(GL_FRAMEBUFFER, source.framebuffer());
-    for (int s = 0; s < source.samples(); ++s)
-      glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(s), &pass->samplePositions_[2 * s]);
-  }
+  if (source.multisampled()) readSamplePositions(source.framebuffer(), pass->samplePositions_);
   return pass;
 }
 

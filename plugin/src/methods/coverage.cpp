@@ -28,8 +28,7 @@ Result<std::unique_ptr<CoveragePass>> CoveragePass::create(PluginContext& contex
     framebuffer = pass->prepass_.get();
   }
   pass->samplePositions_.assign(size_t(pass->samples_) * 2, 0.5f);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  for (int s = 0; s < pass->samples_; ++s) glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(s), &pass->samplePositions_[2 * s]);
+  readSamplePositions(framebuffer, pass->samplePositions_);
   const bool logarithmic = layout.depthBufferEncoding == DepthBufferEncoding::Logarithmic;
   auto program = context.shaders->program("common/fullscreen.vert", "coverage/coverage_filter.frag",
                                           "#define SAMPLES " + std::to_string(pass->samples_) +
