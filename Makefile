@@ -12,7 +12,7 @@ APT_PACKAGES = cmake g++ make pkg-config git assimp-testmodels \
 # clang and its sanitizer and libFuzzer runtimes, for test-sanitize and fuzz only.
 CLANG_PACKAGES = clang libclang-rt-14-dev
 
-.PHONY: deps deps-clang build demo test test-sanitize fuzz soak regress regress-golden docs-config clean
+.PHONY: deps deps-clang build demo test test-sanitize fuzz soak regress regress-golden docs-config docs-robustness clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -79,6 +79,12 @@ test: build
 docs-config: build
 	@{ sed '/<!-- generated: retroaa config --markdown -->/q' docs/config.md; $(RETROAA) config --markdown; \
 	   sed -n '/<!-- end generated -->/,$$p' docs/config.md; } > docs/config.md.new && mv docs/config.md.new docs/config.md
+
+# Regenerates the hard-case matrix of docs/robustness.md from the robustness test.
+docs-robustness: build
+	@LP_NUM_THREADS=2 RETROAA_ROBUSTNESS_TABLE=$(BUILD)/robustness.md $(BUILD)/integration-tests/robustness_tests > /dev/null 2>&1; \
+	 { sed '/<!-- generated: make docs-robustness -->/q' docs/robustness.md; cat $(BUILD)/robustness.md; \
+	   sed -n '/<!-- end generated -->/,$$p' docs/robustness.md; } > docs/robustness.md.new && mv docs/robustness.md.new docs/robustness.md
 
 clean:
 	rm -rf $(BUILD) out

@@ -292,6 +292,10 @@ void Renderer::lightingPass(GLuint target, const Camera& camera, const glm::mat4
   glPopDebugGroup();
 }
 
+void Renderer::lightGBuffer(const Camera& camera, GLuint target) {
+  lightingPass(target, camera, camera.projection(targets_.width, targets_.height));
+}
+
 void Renderer::tonemap(GLuint hdrTexture) {
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 3, -1, "host.tonemap");
   glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);

@@ -31,6 +31,8 @@ class Renderer {
   void renderFrame(const Camera& camera, glm::vec2 jitterPixels = glm::vec2(0));
   // The host's tonemap pass from any HDR texture into its display target.
   void tonemap(GLuint hdrTexture);
+  // The host's lighting pass alone, from whatever its G-buffer holds, into `target` (tools and tests).
+  void lightGBuffer(const Camera& camera, GLuint target);
 
   const HostTargets& targets() const { return targets_; }
   const Scene& scene() const { return scene_; }

@@ -22,7 +22,7 @@ void main() {
     depthSum += sampleDistance(pixel, s);
 #if NORMAL_ATTACHMENT >= 0
     vec3 n = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).xyz;
-    normalSum += dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
+    normalSum += dot(n, n) > 0.0 ? normalize(n) : vec3(0.0, 0.0, 1.0);  // as the clustering treats it
 #endif
     count += 1.0;
   }

@@ -26,3 +26,11 @@ bool sampleIsFinite(ivec2 pixel, int s) {
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) finite = finite && isFiniteValue(FETCH(uAttachments[a], pixel, s));
   return finite;
 }
+
+#if NORMAL_ATTACHMENT >= 0
+// A sample written for the host's lighting: a zero-length normal (which a host that normalises it
+// would turn into NaN) becomes one facing the camera; everything else is left bit for bit.
+vec4 safeNormal(vec4 normalGloss) {
+  return dot(normalGloss.xyz, normalGloss.xyz) > 0.0 ? normalGloss : vec4(0.0, 0.0, 1.0, normalGloss.w);
+}
+#endif

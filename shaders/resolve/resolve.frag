@@ -91,6 +91,9 @@ void main() {
   for (int s = 0; s < SAMPLES; ++s) contributors += weight[s] > 0.0 ? 1 : 0;
   if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, reference);
+#if NORMAL_ATTACHMENT >= 0
+    values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT]);
+#endif
     STORE_OUTPUTS(values);
     gl_FragDepth = FETCH(uDepthBuffer, pixel, reference).r;
     return;

@@ -1,7 +1,8 @@
 #version 450 core
 // Slice s: sample s of each pixel, copied verbatim into the host's single-sample G-buffer so the host's
 // unchanged lighting can light it. The stencil test (count > s) keeps other pixels untouched. A sample
-// with NaN or Inf anywhere is skipped: the pixel keeps the previous slice's (finite) values.
+// with NaN or Inf anywhere is skipped: the pixel keeps the previous slice's (finite) values; a
+// zero-length normal is replaced by one facing the camera.
 #include "common/gbuffer.glsl"
 uniform int uSample;
 void main() {
@@ -9,5 +10,8 @@ void main() {
   if (!sampleIsFinite(pixel, uSample)) discard;
   vec4 values[ATTACHMENT_COUNT];
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, uSample);
+#if NORMAL_ATTACHMENT >= 0
+  values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT]);
+#endif
   STORE_OUTPUTS(values);
 }

@@ -23,7 +23,7 @@ Surface readSurface(ivec2 pixel) {
   float d = decodeDepth(p.z);
   s.position = vec3(p.xy * d, -d);
   vec4 n = texelFetch(uNormal, pixel, 0);
-  s.normal = normalize(n.xyz);
+  s.normal = dot(n.xyz, n.xyz) > 0.0 ? normalize(n.xyz) : vec3(0.0, 0.0, 1.0);  // a zero normal must not light NaN
   s.gloss = n.w;
   s.albedo = texelFetch(uColor, pixel, 0).rgb;
   s.specular = texelFetch(uSpecular, pixel, 0).rgb;
