@@ -174,8 +174,10 @@ std::vector<glm::vec4> SyntheticFrame::read(GLuint texture) const {
   return pixels;
 }
 
-CliRun runCli(const std::string& arguments) {
-  const std::string command = std::string(RETROAA_CLI) + " " + arguments + " 2>&1";
+CliRun runCli(const std::string& arguments) { return runCommand(std::string(RETROAA_CLI) + " " + arguments); }
+
+CliRun runCommand(const std::string& shellCommand) {
+  const std::string command = shellCommand + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::string output;
   char buffer[512];

@@ -71,6 +71,7 @@ struct CliRun {
   std::string output;
 };
 CliRun runCli(const std::string& arguments);
+CliRun runCommand(const std::string& command);  // any shell command
 
 // The pixel (top-down image coordinates) where a world point lands for the scene camera.
 glm::ivec2 projectToPixel(const host::Camera& camera, glm::vec3 world, int width, int height);

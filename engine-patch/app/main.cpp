@@ -2,6 +2,9 @@
 // failed, 2 bad usage or input (with a message naming what was wrong).
 #include "commands.h"
 #include "regress.h"
+#ifdef RETROAA_HAS_VIEWER
+#include "viewer.h"
+#endif
 #include "headless_context.h"
 #include "scene.h"
 
@@ -109,6 +112,19 @@ int main(int argc, char** argv) {
   soakCmd->add_option("--height", soak.height)->check(CLI::Range(16, 8192));
   soakCmd->add_option("--max-growth-mib", soak.maxGrowthMiB, "allowed resident memory growth after warm-up");
 
+#ifdef RETROAA_HAS_VIEWER
+  app::ViewOptions view;
+  CLI::App* viewCmd = cli.add_subcommand("view", "the interactive viewer (GLFW window, Dear ImGui panel)");
+  viewCmd->add_option("--scene", view.scene, "scene file, or 'default'");
+  viewCmd->add_option("--method", view.method, "method A (left side)");
+  viewCmd->add_option("--compare", view.compare, "method B: split screen with a draggable divider");
+  viewCmd->add_option("--width", view.width)->check(CLI::Range(16, 8192));
+  viewCmd->add_option("--height", view.height)->check(CLI::Range(16, 8192));
+  viewCmd->add_option("--script", view.script, "timed actions with a fixed time step (docs/viewer.md)");
+  viewCmd->add_option("--record-path", view.recordPath, "where R writes the recorded camera path");
+  addConfigOptions(viewCmd);
+#endif
+
   bool markdown = false;
   CLI::App* configCmd = cli.add_subcommand("config", "list every config key with its default, range and effect");
   configCmd->add_flag("--markdown", markdown, "as the Markdown table of docs/config.md");
@@ -128,6 +144,12 @@ int main(int argc, char** argv) {
     }
     if (recordCmd->parsed()) return app::runRecord(record);
     if (soakCmd->parsed()) return app::runSoak(soak);
+#ifdef RETROAA_HAS_VIEWER
+    if (viewCmd->parsed()) {
+      view.base = config;
+      return app::runView(view);
+    }
+#endif
     if (regressCmd->parsed()) {
       regress.base = config;
       return app::runRegress(regress);
