@@ -240,6 +240,10 @@ int runView(const ViewOptions& options) {
           a.setMethod(methods[at == methods.end() ? 0 : (at - methods.begin() + 1) % methods.size()], options.base);
         }
         if (pressed(GLFW_KEY_F12)) screenshot = "retroaa-screenshot.png";
+        // N, B, E: cycle sample count, resolve weighting, edge detector.
+        if (pressed(GLFW_KEY_N)) a.config.samples = a.config.samples >= 16 ? 1 : a.config.samples * 2, a.apply();
+        if (pressed(GLFW_KEY_B)) a.config.resolveWeighting = retroaa::ResolveWeighting((int(a.config.resolveWeighting) + 1) % 5), a.apply();
+        if (pressed(GLFW_KEY_E)) a.config.edgeDetector = retroaa::EdgeDetector((int(a.config.edgeDetector) + 1) % 6), a.apply();
         if (pressed(GLFW_KEY_R)) {
           recording = !recording;
           if (!recording && recorded.size() >= 2) {
@@ -295,6 +299,11 @@ int runView(const ViewOptions& options) {
         if (!parent.empty()) std::filesystem::create_directories(parent);
         writeImage8(screenshot, width, height, readWindow(width, height), meta);
         std::printf("view: screenshot %s (%dx%d, %s)\n", screenshot.c_str(), width, height, a.method.c_str());
+        if (b) {  // and each side whole, as its own method renders it
+          const std::string stem = (std::filesystem::path(screenshot).parent_path() / std::filesystem::path(screenshot).stem()).string();
+          writeImage8(stem + "-a.png", width, height, a.renderer->readDisplay(), {{"retroaa:method", a.method}});
+          writeImage8(stem + "-b.png", width, height, b->renderer->readDisplay(), {{"retroaa:method", b->method}});
+        }
       }
       // The panel: method and settings, what they cost, what they buy.
       ImGui_ImplOpenGL3_NewFrame();
@@ -323,6 +332,19 @@ int runView(const ViewOptions& options) {
       changed |= ImGui::SliderInt("aggregates c", &a.config.aggregateCount, 1, 4);
       changed |= ImGui::SliderFloat("coverage tolerance", &a.config.coverageTolerance, 0.0f, 8.0f);
       changed |= ImGui::Checkbox("fxaa on top", &a.config.fxaa);
+      // Every other key, by name (the config reference lists them).
+      static char setting[128] = "";
+      static std::string settingError;
+      if (ImGui::InputText("key=value", setting, sizeof setting, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        const std::string text = setting;
+        const size_t equals = text.find('=');
+        retroaa::Config updated = a.config;
+        const retroaa::Status s = equals == std::string::npos ? retroaa::Status(retroaa::Error{retroaa::ErrorCode::InvalidConfig, "expected key=value"})
+                                                               : retroaa::applySetting(updated, text.substr(0, equals), text.substr(equals + 1));
+        settingError = s ? "" : s.error().message;
+        if (s) a.config = updated, changed = true;
+      }
+      if (!settingError.empty()) ImGui::TextWrapped("%s", settingError.c_str());
       if (changed) a.apply();
       const retroaa::Stats stats = a.hooks->plugin().stats();
       ImGui::Separator();
@@ -333,7 +355,7 @@ int runView(const ViewOptions& options) {
       for (const auto& [name, ms] : passTotals) ImGui::Text("  %s: %.2f ms", name.c_str(), ms);
 
       ImGui::TextWrapped("%s", groundTruthText.c_str());
-      ImGui::TextWrapped("WASD + right mouse: fly; wheel: speed %.1f m/s; P: play path; R: record path%s; M: next method; Z: magnifier; G: ground truth; F12: screenshot%s",
+      ImGui::TextWrapped("WASD + right mouse: fly; wheel: speed %.1f m/s; P: play path; R: record path%s; M: next method; N/B/E: samples/weighting/detector; Z: magnifier; G: ground truth; F12: screenshot%s",
                          speed, recording ? " (recording)" : "", b ? "; left drag: divider" : "");
       if (b) ImGui::Text("split: %s | %s", a.method.c_str(), b->method.c_str());
       ImGui::End();
