@@ -2,6 +2,7 @@
 // failed, 2 bad usage or input (with a message naming what was wrong).
 #include "commands.h"
 #include "regress.h"
+#include "tune.h"
 #ifdef RETROAA_HAS_VIEWER
 #include "viewer.h"
 #endif
@@ -12,6 +13,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
 namespace {
 
@@ -125,6 +127,21 @@ int main(int argc, char** argv) {
   addConfigOptions(viewCmd);
 #endif
 
+  app::TuneOptions tune;
+  std::vector<std::string> tuneTargets;
+  std::string tuneScenes;
+  CLI::App* tuneCmd = cli.add_subcommand("tune", "the cheapest settings that meet quality targets on every frame of your scenes");
+  tuneCmd->add_option("--scenes", tuneScenes, "comma-separated scene files (default: default)");
+  tuneCmd->add_option("--target", tuneTargets, "psnr=X, edge_psnr=X or ssim=X (repeatable)")->required();
+  tuneCmd->add_option("--cost", tune.cost, "evals | gpu_ms | memory");
+  tuneCmd->add_option("--candidates", tune.candidates, "comma-separated method specs (default: the built-in grid)");
+  tuneCmd->add_option("--width", tune.width)->check(CLI::Range(16, 8192));
+  tuneCmd->add_option("--height", tune.height)->check(CLI::Range(16, 8192));
+  tuneCmd->add_option("--gt-samples", tune.groundTruthSamples)->check(CLI::Range(1, 32));
+  tuneCmd->add_option("--frames", tune.frames, "frames of each scene's path")->check(CLI::Range(1, 10000));
+  tuneCmd->add_option("--out", tune.out, "the config file to write (a report beside it: .md, .json)");
+  tuneCmd->add_option("--cache", tune.cache, "measured points, reused by later runs");
+
   bool markdown = false;
   CLI::App* configCmd = cli.add_subcommand("config", "list every config key with its default, range and effect");
   configCmd->add_flag("--markdown", markdown, "as the Markdown table of docs/config.md");
@@ -144,6 +161,15 @@ int main(int argc, char** argv) {
     }
     if (recordCmd->parsed()) return app::runRecord(record);
     if (soakCmd->parsed()) return app::runSoak(soak);
+    if (tuneCmd->parsed()) {
+      for (const std::string& t : tuneTargets) tune.targets.push_back(app::parseTuneTarget(t));
+      if (!tuneScenes.empty()) {
+        tune.scenes.clear();
+        std::stringstream list(tuneScenes);
+        for (std::string s; std::getline(list, s, ',');) tune.scenes.push_back(s);
+      }
+      return app::runTune(tune);
+    }
 #ifdef RETROAA_HAS_VIEWER
     if (viewCmd->parsed()) {
       view.base = config;

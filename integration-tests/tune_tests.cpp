@@ -1,0 +1,80 @@
+// `retroaa tune`: the search on a synthetic grid, and a tuned config that reproduces what the tuner
+// predicted.
+#include "commands.h"
+#include "test_support.h"
+#include "tune.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace testing_support;
+namespace fs = std::filesystem;
+
+namespace {
+app::TunePoint point(const std::string& spec, double cost, std::vector<double> edgePsnrPerFrame) {
+  app::TunePoint p{spec, cost, {}};
+  for (double e : edgePsnrPerFrame) p.frames.push_back({{"psnr", e + 10}, {"edge_psnr", e}, {"ssim", 0.9}});
+  return p;
+}
+}  // namespace
+
+TEST(TuneSearch, FindsTheCheapestPointThatMeetsTheTargetOnEveryFrame) {
+  const std::vector<app::TunePoint> grid = {
+      point("a", 1.0, {20, 30}),   // cheap, one bad frame
+      point("b", 2.0, {26, 27}),   // meets 25 on every frame
+      point("c", 1.5, {24, 40}),   // good on average, misses one frame
+      point("d", 4.0, {35, 35}),   // best, dearest
+      point("e", 2.0, {25.5, 26}),  // same cost as b, worse worst frame
+  };
+  const app::TuneChoice choice = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr=25")});
+  ASSERT_TRUE(choice.feasible);
+  EXPECT_EQ(grid[choice.chosen].spec, "b");
+  EXPECT_EQ(grid[choice.nextCheaper].spec, "c");  // the front's point below: it misses a frame
+  std::vector<std::string> front;
+  for (int i : choice.front) front.push_back(grid[i].spec);
+  EXPECT_EQ(front, (std::vector<std::string>{"a", "c", "b", "d"}));
+  const app::TuneChoice strict = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr=36")});
+  EXPECT_FALSE(strict.feasible);
+  EXPECT_EQ(grid[strict.chosen].spec, "d");  // the closest
+  const app::TuneChoice two = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr=25"), app::parseTuneTarget("ssim=0.95")});
+  EXPECT_FALSE(two.feasible);
+  EXPECT_THROW(app::parseTuneTarget("flicker=3"), std::invalid_argument);
+}
+
+TEST(Tune, TheWrittenConfigReproducesThePredictedFigures) {
+  const fs::path dir = fs::temp_directory_path() / "retroaa_tune";
+  fs::remove_all(dir);
+  const std::string common = "tune --frames 2 --width 96 --height 72 --gt-samples 3 --candidates off,fxaa,resolve,edge,aggregate,per-sample --cache " +
+                             (dir / "cache.json").string() + " --out " + (dir / "tuned.cfg").string();
+  const CliRun run = runCli(common + " --target edge_psnr=16.5");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("tune: measured 12 points, reused 0"), std::string::npos) << run.output;
+  std::ifstream in(dir / "tuned.cfg.json");
+  const nlohmann::json predicted = nlohmann::json::parse(in);
+  retroaa::Config config;
+  ASSERT_TRUE(retroaa::applyConfigFile(config, (dir / "tuned.cfg").string()));
+  // Render the same frames with the written config, as an engine loading it would.
+  PatchedHost host("default", 96, 72);
+  ASSERT_TRUE(host.hooks->plugin().reconfigure(config));
+  double worst = 1e9;
+  for (int frame : {0, 15}) {
+    const host::Camera camera = host.scene.path.at(host.scene.camera, frame);
+    const host::GroundTruth truth = host::renderGroundTruth(*host.renderer, camera, 3);
+    host.renderer->renderFrame(camera);
+    const app::ErrorMetrics m = app::compare(app::DisplayImage::fromRgba8(96, 72, host.renderer->readDisplay()),
+                                             app::DisplayImage::fromRgba8(96, 72, truth.display), app::edgeMaskFromSpread(truth.lumaStdDev));
+    worst = std::min(worst, m.edgePsnrDb);
+  }
+  EXPECT_NEAR(worst, predicted["worst"]["edge_psnr"].get<double>(), 0.05) << predicted.dump();
+  EXPECT_GE(worst, 16.5);
+  // A second run with another target measures nothing new.
+  const CliRun again = runCli(common + " --target edge_psnr=15");
+  EXPECT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_NE(again.output.find("tune: measured 0 points, reused 12"), std::string::npos) << again.output;
+  // And an impossible target is exit 1 naming the closest setting.
+  const CliRun impossible = runCli(common + " --target edge_psnr=60");
+  EXPECT_EQ(impossible.exitCode, 1) << impossible.output;
+  EXPECT_NE(impossible.output.find("tune: no setting meets the targets; the closest is"), std::string::npos) << impossible.output;
+}
