@@ -1,5 +1,7 @@
 #include "regress.h"
 
+#include "scatter_svg.h"
+
 #include "commands.h"
 #include "ground_truth.h"
 #include "image_io.h"
@@ -88,58 +90,6 @@ std::vector<uint8_t> crop(const std::vector<uint8_t>& image, int width, int x0, 
     for (int x = 0; x < w * zoom; ++x)
       std::copy_n(&image[(size_t(y0 + y / zoom) * width + x0 + x / zoom) * 4], 4, &out[(size_t(y) * w * zoom + x) * 4]);
   return out;
-}
-
-std::string svgScatter(const json& rows) {
-  // Cost (GPU ms) against edge PSNR, with the Pareto front: no cheaper point is better.
-  const double w = 560, h = 300, left = 60, bottom = 40, top = 20, right = 20;
-  double xMin = 1e9, xMax = -1e9, yMin = 1e9, yMax = -1e9;
-  for (const auto& r : rows) {
-    xMin = std::min(xMin, r["gpu_ms"].get<double>()), xMax = std::max(xMax, r["gpu_ms"].get<double>());
-    yMin = std::min(yMin, r["edge_psnr_db"].get<double>()), yMax = std::max(yMax, r["edge_psnr_db"].get<double>());
-  }
-  if (xMax <= xMin) xMax = xMin + 1;
-  if (yMax <= yMin) yMax = yMin + 1;
-  xMin = 0, yMin = std::floor(yMin - 1), yMax = std::ceil(yMax + 1), xMax *= 1.1;
-  auto px = [&](double v) { return left + (v - xMin) / (xMax - xMin) * (w - left - right); };
-  auto py = [&](double v) { return h - bottom - (v - yMin) / (yMax - yMin) * (h - top - bottom); };
-  std::ostringstream s;
-  s << std::fixed;
-  s.precision(1);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h << "\" class=\"scatter\">";
-  s << "<line x1=\"" << left << "\" y1=\"" << h - bottom << "\" x2=\"" << w - right << "\" y2=\"" << h - bottom << "\" stroke=\"#888\"/>";
-  s << "<line x1=\"" << left << "\" y1=\"" << top << "\" x2=\"" << left << "\" y2=\"" << h - bottom << "\" stroke=\"#888\"/>";
-  s << "<text x=\"" << w / 2 << "\" y=\"" << h - 8 << "\" text-anchor=\"middle\">GPU ms per frame (mean)</text>";
-  s << "<text x=\"14\" y=\"" << h / 2 << "\" transform=\"rotate(-90 14 " << h / 2 << ")\" text-anchor=\"middle\">edge PSNR dB</text>";
-  for (int i = 0; i <= 4; ++i) {
-    const double xv = xMin + (xMax - xMin) * i / 4, yv = yMin + (yMax - yMin) * i / 4;
-    s << "<text x=\"" << px(xv) << "\" y=\"" << h - bottom + 14 << "\" text-anchor=\"middle\" class=\"tick\">" << xv << "</text>";
-    s << "<text x=\"" << left - 6 << "\" y=\"" << py(yv) + 4 << "\" text-anchor=\"end\" class=\"tick\">" << yv << "</text>";
-  }
-  std::vector<std::pair<double, double>> points;
-  for (const auto& r : rows) points.push_back({r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
-  std::vector<size_t> order(points.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return points[a] < points[b]; });
-  std::string front;
-  double best = -1e9;
-  for (size_t i : order)
-    if (points[i].second > best) {
-      best = points[i].second;
-      std::ostringstream p;
-      p << std::fixed;
-      p.precision(1);
-      p << px(points[i].first) << "," << py(points[i].second) << " ";
-      front += p.str();
-    }
-  s << "<polyline points=\"" << front << "\" fill=\"none\" stroke=\"#c33\" stroke-dasharray=\"4 3\"/>";
-  for (size_t i = 0; i < points.size(); ++i) {
-    s << "<circle cx=\"" << px(points[i].first) << "\" cy=\"" << py(points[i].second) << "\" r=\"4\" fill=\"#246\"/>";
-    s << "<text x=\"" << px(points[i].first) + 6 << "\" y=\"" << py(points[i].second) - 6 << "\" class=\"label\">"
-      << rows[i]["method"].get<std::string>() << "</text>";
-  }
-  s << "</svg>";
-  return s.str();
 }
 
 std::string htmlEscape(const std::string& text) {
@@ -359,7 +309,10 @@ int runRegress(const RegressOptions& options) {
                     r["max_abs_error"].get<double>(), r["flicker"].get<double>());
       html << line;
     }
-    html << "</table>\n" << svgScatter(scene["rows"]) << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";
+    std::vector<ScatterPoint> scatter;
+    for (const auto& r : scene["rows"])
+      scatter.push_back({r["method"].get<std::string>(), r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
+    html << "</table>\n" << svgScatter(scatter, "GPU ms per frame (mean)", "edge PSNR dB") << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";
     for (const auto& r : scene["rows"]) {
       const std::string m = r["method"];
       html << "<figure><img src=\"" << dir << "/" << scene["images"][m]["crop"].get<std::string>() << "\" alt=\"" << htmlEscape(m)

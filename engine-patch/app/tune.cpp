@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "ground_truth.h"
 #include "metrics.h"
+#include "scatter_svg.h"
 #include "session.h"
 
 #include <nlohmann/json.hpp>
@@ -164,6 +165,11 @@ int runTune(const TuneOptions& options) {
   if (!parent.empty()) std::filesystem::create_directories(parent);
   std::ofstream(options.out) << "# retroaa tune: " << points[choice.chosen].spec << " (" << options.cost << " " << points[choice.chosen].cost << ")\n"
                              << retroaa::toConfigText(config);
+  std::vector<ScatterPoint> scatter;
+  for (size_t i = 0; i < points.size(); ++i)
+    scatter.push_back({points[i].spec, points[i].cost, worstFrame(points[i], options.targets.front().metric), int(i) == choice.chosen});
+  std::ofstream(options.out + ".svg") << svgScatter(scatter, options.cost + " (mean)", "worst-frame " + options.targets.front().metric);
+  report << "\n![front](" << std::filesystem::path(options.out).filename().string() << ".svg)\n";
   std::ofstream(options.out + ".md") << report.str();
   std::ofstream(options.out + ".json") << json{{"chosen", points[choice.chosen].spec}, {"cost", points[choice.chosen].cost},
                                                {"worst", {{"psnr", worstFrame(points[choice.chosen], "psnr")},
