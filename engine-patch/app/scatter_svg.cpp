@@ -36,7 +36,8 @@ std::string svgScatter(const std::vector<ScatterPoint>& points, const std::strin
   std::vector<size_t> order(points.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return std::make_pair(points[a].cost, points[a].quality) < std::make_pair(points[b].cost, points[b].quality);
+    // Cheapest first; of equal cost the best first, so only it can join the front.
+    return points[a].cost != points[b].cost ? points[a].cost < points[b].cost : points[a].quality > points[b].quality;
   });
   std::string front;
   std::vector<bool> onFront(points.size(), false);
