@@ -12,7 +12,7 @@ APT_PACKAGES = cmake g++ make pkg-config git assimp-testmodels xvfb xauth libimg
 # clang and its sanitizer and libFuzzer runtimes, for test-sanitize and fuzz only.
 CLANG_PACKAGES = clang libclang-rt-14-dev
 
-.PHONY: deps deps-clang build demo test test-sanitize fuzz soak regress regress-golden docs-config docs-robustness clean
+.PHONY: deps deps-clang build demo test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -74,6 +74,19 @@ regress-golden: build
 
 test: build
 	cd $(BUILD) && LP_NUM_THREADS=2 ctest --output-on-failure -j2
+
+# The presets (`preset=low|medium|high|ultra`): the cheapest settings (lighting evaluations) whose worst
+# frame of the demo and fence scenes reaches each edge-PSNR target. Rewrites presets/*.cfg, which the
+# plugin embeds at build time; the measurements are cached in out/tune/.
+PRESET_RUN = $(RETROAA) tune --scenes default,integration-tests/scenes/fence.json --frames 3 --width 160 --height 120 \
+  --gt-samples 4 --cost evals --cache out/tune/presets-cache.json
+presets: build
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr=16.0 --out presets/low.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr=17.5 --out presets/medium.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr=18.5 --out presets/high.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr=18.7 --out presets/ultra.cfg
+	rm -f presets/*.cfg.json
+	cmake --build $(BUILD) -j$(JOBS)
 
 # Regenerates the key table of docs/config.md from the parser's own table (a test checks they agree).
 docs-config: build

@@ -78,3 +78,20 @@ TEST(Tune, TheWrittenConfigReproducesThePredictedFigures) {
   EXPECT_EQ(impossible.exitCode, 1) << impossible.output;
   EXPECT_NE(impossible.output.find("tune: no setting meets the targets; the closest is"), std::string::npos) << impossible.output;
 }
+
+TEST(Tune, PresetsAreWhatTheTunerChoosesToday) {
+  // `make presets` ran these exact commands; the committed presets must still be their answer.
+  const std::pair<const char*, const char*> presets[] = {{"low", "16.0"}, {"medium", "17.5"}, {"high", "18.5"}, {"ultra", "18.7"}};
+  const fs::path dir = fs::temp_directory_path() / "retroaa_presets";
+  for (const auto& [name, target] : presets) {
+    const CliRun run = runCli(std::string("tune --scenes default,") + RETROAA_SOURCE_DIR +
+                              "/integration-tests/scenes/fence.json --frames 3 --width 160 --height 120 --gt-samples 4 --cost evals"
+                              " --cache " + (dir / "cache.json").string() + " --out " + (dir / name).string() + ".cfg --target edge_psnr=" + target);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream committed(std::string(RETROAA_SOURCE_DIR) + "/presets/" + name + ".cfg"), fresh(dir / (std::string(name) + ".cfg"));
+    std::string committedHeader, freshHeader;
+    std::getline(committed, committedHeader);
+    std::getline(fresh, freshHeader);
+    EXPECT_EQ(freshHeader, committedHeader) << name << ": run `make presets` and commit";
+  }
+}

@@ -154,12 +154,13 @@ int runRender(const RenderOptions& options) {
     display = truth.display;
     radiance = truth.radiance;
   } else {
-    session.configure(parseMethodSpec(options.method, options.base).config);
+    session.configure(options.method.empty() ? options.base : parseMethodSpec(options.method, options.base).config);
     session.renderer->renderFrame(camera);
     display = session.renderer->readDisplay();
     radiance = session.renderer->readLight();
   }
-  auto meta = session.metadata(options.method);
+  const std::string methodName = options.method.empty() ? retroaa::toString(session.hooks->plugin().config().method) : options.method;
+  auto meta = session.metadata(methodName);
   if (!options.show.empty()) {
     if (options.show != "edges" && options.show != "samples" && options.show != "aggregates")
       throw std::invalid_argument("--show must be edges, samples or aggregates, got '" + options.show + "'");
@@ -180,7 +181,7 @@ int runRender(const RenderOptions& options) {
     ensureParent(options.heatmap);
     writeImage8(options.heatmap, options.width, options.height, errorHeatmap(image, reference), meta);
     const ErrorMetrics m = compare(image, reference, edgeMaskFromSpread(truth.lumaStdDev));
-    std::printf("%s vs ground truth (%dx%d): PSNR %.2f dB, edge PSNR %.2f dB, SSIM %.4f\n", options.method.c_str(),
+    std::printf("%s vs ground truth (%dx%d): PSNR %.2f dB, edge PSNR %.2f dB, SSIM %.4f\n", methodName.c_str(),
                 options.groundTruthSamples, options.groundTruthSamples, m.psnrDb, m.edgePsnrDb, m.ssim);
   }
   std::printf("wrote %s (%s)\n", options.out.c_str(), session.context.info().summary().c_str());

@@ -27,7 +27,7 @@ std::vector<std::string> expandMethodList(const std::string& list);
 
 struct RenderOptions {
   std::string scene = "default";
-  std::string method = "off";  // a MethodSpec, or "ground-truth"
+  std::string method;          // a MethodSpec, "ground-truth", or empty: the config's own method
   retroaa::Config base;        // from --config / --set / FSO flags
   int width = 320, height = 240;
   int frame = -1;              // camera path frame; -1: the scene's camera

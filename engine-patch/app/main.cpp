@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   app::RenderOptions render;
   CLI::App* renderCmd = cli.add_subcommand("render", "render one frame headless");
   renderCmd->add_option("--scene", render.scene, "scene file, or 'default'");
-  renderCmd->add_option("--method", render.method, "method[/weighting][+fxaa], or ground-truth");
+  renderCmd->add_option("--method", render.method, "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
   renderCmd->add_option("--width", render.width)->check(CLI::Range(16, 8192));
   renderCmd->add_option("--height", render.height)->check(CLI::Range(16, 8192));
   renderCmd->add_option("--frame", render.frame, "camera path frame (default: the scene camera)");

@@ -3,9 +3,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace retroaa {
+
+namespace presets {
+const std::map<std::string, std::string>& embeddedFiles();  // generated from presets/*.cfg
+}
 
 namespace {
 
@@ -139,6 +144,20 @@ const std::vector<Setter>& setters() {
       {{"coverage_tolerance", "2", "0 .. 100", "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"},
        [](Config& c, const std::string& v) { return parseFloat("coverage_tolerance", v, 0.0f, 100.0f, c.coverageTolerance); },
        [](const Config& c) { return formatFloat(c.coverageTolerance); }},
+      {{"preset", "none", "none, low, medium, high, ultra", "a bundle of the keys above, tuned by `make presets` (docs/presets.md); keys after it override"},
+       [](Config& c, const std::string& v) -> Status {
+         if (v == "none") return Status::ok();
+         const auto& files = presets::embeddedFiles();
+         const auto found = files.find(v + ".cfg");
+         if (found == files.end()) return invalid("config key 'preset': unknown value '" + v + "' (allowed: none, low, medium, high, ultra)");
+         // Quality keys only: where shaders come from and whether to time them stay the user's.
+         std::string lines;
+         std::istringstream in(found->second);
+         for (std::string line; std::getline(in, line);)
+           if (line.rfind("shader_override_dir", 0) != 0 && line.rfind("measure_gpu_time", 0) != 0 && line.rfind("preset", 0) != 0) lines += line + "\n";
+         return applyConfigText(c, lines, "preset " + v);
+       },
+       [](const Config&) { return std::string("none"); }},
       {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
        [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
        [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},

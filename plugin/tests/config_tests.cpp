@@ -87,3 +87,19 @@ TEST(Config, FreeSpaceOpenFlags) {
   EXPECT_FALSE(applyFsoFlag(config, "-msaa", "four", warnings));
   EXPECT_FALSE(applyFsoFlag(config, "-smaa", "1", warnings));
 }
+
+TEST(Config, PresetsApplyTheirTunedBundleAndLaterKeysOverride) {
+  for (const char* name : {"low", "medium", "high", "ultra"}) {
+    Config fromPreset;
+    ASSERT_TRUE(applySetting(fromPreset, "preset", name)) << name;
+    Config fromFile;
+    ASSERT_TRUE(applyConfigFile(fromFile, std::string(RETROAA_SOURCE_DIR) + "/presets/" + name + ".cfg")) << name;
+    EXPECT_EQ(toConfigText(fromPreset), toConfigText(fromFile)) << name;
+  }
+  Config config;
+  config.shaderOverrideDirectory = "mods/shaders";
+  ASSERT_TRUE(applyConfigText(config, "preset=high\nsamples=2\n", "user.cfg"));
+  EXPECT_EQ(config.samples, 2);                              // a later key overrides the preset
+  EXPECT_EQ(config.shaderOverrideDirectory, "mods/shaders");  // not a quality key: left alone
+  EXPECT_FALSE(applySetting(config, "preset", "extreme"));
+}
