@@ -266,6 +266,7 @@ int runBench(const BenchOptions& options) {
         {"max_abs_error", m.maxAbsError},
         {"psnr_vs_per_sample_db", compare(image, perSampleReference, {}).psnrDb},
         {"slices", stats.slices},
+        {"budget_scale", stats.budgetScale},
     };
     rows.push_back(row);
     if (!options.imagesDirectory.empty()) {

@@ -158,6 +158,9 @@ const std::vector<Setter>& setters() {
          return applyConfigText(c, lines, "preset " + v);
        },
        [](const Config&) { return std::string("none"); }},
+      {{"budget_ms", "0", "0 .. 1000", "GPU budget of the plugin's passes; adaptive (and edge/depth) adjust their refinement frame to frame to keep it; 0 is off"},
+       [](Config& c, const std::string& v) { return parseFloat("budget_ms", v, 0.0f, 1000.0f, c.budgetMs); },
+       [](const Config& c) { return formatFloat(c.budgetMs); }},
       {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
        [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
        [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},

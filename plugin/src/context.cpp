@@ -30,7 +30,7 @@ void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
 ScopedPass::ScopedPass(PluginContext& context, const char* name) : context_(context), name_(name) {
   const std::string label = std::string("retroaa.") + name;
   glPushDebugGroup(GL_DEBUG_SOURCE_THIRD_PARTY, 0, -1, label.c_str());
-  if (context_.config.measureGpuTime && context_.capabilities.timerQuery) {
+  if (context_.timePasses && context_.capabilities.timerQuery) {
     glGenQueries(1, &query_);
     glBeginQuery(GL_TIME_ELAPSED, query_);
   }

@@ -28,6 +28,8 @@ struct PluginContext {
   std::unique_ptr<ShaderLibrary> shaders;
   GlVertexArray emptyVertexArray;  // full-screen passes draw without vertex buffers
   Stats frameStats;                // of the frame in flight
+  bool timePasses = false;         // measure_gpu_time, or a budget that needs the times
+  double budgetScale = 1.0;        // multiplies the refinement of adaptive and edge/depth (budget mode)
 
   void warn(const std::string& message);
   uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }

@@ -1,6 +1,7 @@
 #include "retroaa/plugin.h"
 
 #include "context.h"
+#include "budget_controller.h"
 #include "gl_state.h"
 #include "methods/methods.h"
 
@@ -71,6 +72,26 @@ struct Plugin::Impl {
   bool coverageOwnPrepass = false;  // what `coverage` was built for
   int coverageSamples = 0;
   FrameInfo lastFrame;  // from resolve(), for post()
+  std::unique_ptr<BudgetController> budget;
+
+  // Budget mode applies where a setting trades time for quality continuously.
+  bool budgetApplies(const Config& config) const {
+    return config.budgetMs > 0 && (config.method == Method::Adaptive ||
+                                   (config.method == Method::Edge && config.edgeDetector == EdgeDetector::Depth));
+  }
+  void configureBudget(const Config& previous) {
+    const Config& config = context.config;
+    if (!budgetApplies(config)) {
+      budget.reset();
+      context.budgetScale = 1.0;
+      if (config.budgetMs > 0 && previous.budgetMs != config.budgetMs)
+        context.warn(std::string("budget_ms applies to adaptive and to edge with the depth detector, not to ") + toString(config.method));
+    } else if (!budget || previous.budgetMs != config.budgetMs) {
+      budget = std::make_unique<BudgetController>(config.budgetMs);
+      context.budgetScale = budget->scale();
+    }
+    context.timePasses = config.measureGpuTime || budget != nullptr;
+  }
   bool resolvedThisFrame = false;
   int aggregateCount_ = 0;  // the c the aggregate shaders were built for
 
@@ -210,6 +231,7 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   glCreateVertexArrays(1, &vao);
   context.emptyVertexArray = GlVertexArray(context.objects, vao);
   if (Status status = impl->allocate(true); !status) return status.error();
+  impl->configureBudget(Config{});
   return std::unique_ptr<Plugin>(new Plugin(std::move(impl)));
 }
 
@@ -248,7 +270,13 @@ Status Plugin::shade(const LightingFunction& lighting) {
     SliceRenderer::Plan plan;
     if (impl_->adaptive) plan = impl_->adaptive->plan(context, *impl_->slices);
     if (impl_->aggregate) plan = impl_->aggregate->plan(context, *impl_->msaa);
-    return impl_->slices->shade(context, *impl_->msaa, lighting, plan);
+    const Status status = impl_->slices->shade(context, *impl_->msaa, lighting, plan);
+    if (impl_->budget) {  // the plugin's time this frame decides the next frame's refinement
+      double ms = 0;
+      for (const PassTime& pass : context.frameStats.passes) ms += pass.ms;
+      context.budgetScale = impl_->budget->update(ms);
+    }
+    return status;
   }
   // Single-slice methods light once, every pixel, in the host's own target.
   context.frameStats.slices = 1;
@@ -285,6 +313,7 @@ Status Plugin::reconfigure(const Config& config) {
     context.config = previous;
     impl_->allocate(true);
   }
+  impl_->configureBudget(previous);
   return status;
 }
 
@@ -305,6 +334,7 @@ Stats Plugin::stats() const {
   stats.pixels = context.pixelCount();
   stats.bytesHeld = impl_->bytesHeld();
   stats.glObjectsHeld = context.objects.live;
+  stats.budgetScale = context.budgetScale;
   return stats;
 }
 

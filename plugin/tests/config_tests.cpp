@@ -103,3 +103,49 @@ TEST(Config, PresetsApplyTheirTunedBundleAndLaterKeysOverride) {
   EXPECT_EQ(config.shaderOverrideDirectory, "mods/shaders");  // not a quality key: left alone
   EXPECT_FALSE(applySetting(config, "preset", "extreme"));
 }
+
+// The budget controller on a simulated cost model: time = load + 6 · s / (1 + s) ms for quality scale s
+// (monotonic, saturating, like refinement on a real scene). Deterministic: no GPU involved.
+#include "budget_controller.h"
+
+#include <cmath>
+
+TEST(BudgetController, ConvergesAfterAStepInLoadAndHoldsWithinFifteenPercent) {
+  BudgetController controller(5.0);
+  double load = 1.0, scale = controller.scale();
+  std::vector<double> times;
+  for (int frame = 0; frame < 160; ++frame) {
+    if (frame == 80) load = 3.0;  // a step change: something else now eats 2 ms more
+    const double ms = load + 6.0 * scale / (1.0 + scale);
+    times.push_back(ms);
+    scale = controller.update(ms);
+  }
+  auto within = [&](int from, int to) {
+    for (int f = from; f < to; ++f)
+      if (std::fabs(times[f] - 5.0) > 0.15 * 5.0) return false;
+    return true;
+  };
+  int settle = 0, settleAfterStep = 0;
+  for (int f = 0; f < 80 && !within(f, 80); ++f) settle = f + 1;
+  for (int f = 80; f < 160 && !within(f, 160); ++f) settleAfterStep = f + 1 - 80;
+  std::printf("budget 5 ms: settled within %d frames from start, %d frames after the step\n", settle, settleAfterStep);
+  EXPECT_LE(settle, 20);
+  EXPECT_LE(settleAfterStep, 20);
+  // No oscillation in steady state: the time crosses the budget at most twice in the last 40 frames.
+  int crossings = 0;
+  for (int f = 121; f < 160; ++f) crossings += (times[f] - 5.0) * (times[f - 1] - 5.0) < 0;
+  EXPECT_LE(crossings, 2);
+  EXPECT_NEAR(controller.scale(), 0.5, 0.25);  // load 3: 3 + 6 s / (1 + s) = 5 at s = 0.5
+}
+
+TEST(BudgetController, IgnoresNonsenseAndStaysInBounds) {
+  BudgetController controller(2.0);
+  for (int i = 0; i < 500; ++i) controller.update(1000.0);
+  EXPECT_DOUBLE_EQ(controller.scale(), BudgetController::kMinScale);
+  const double before = controller.scale();
+  controller.update(std::nan(""));
+  controller.update(-1.0);
+  EXPECT_DOUBLE_EQ(controller.scale(), before);
+  for (int i = 0; i < 500; ++i) controller.update(0.0);
+  EXPECT_DOUBLE_EQ(controller.scale(), BudgetController::kMaxScale);
+}

@@ -86,6 +86,10 @@ struct Config {
   // the pixel's by more than min(d)·tan(hfov/width)·c lies across an edge. Smaller finds more (and,
   // on grazing surfaces, false) edges.
   float coverageTolerance = 2.0f;
+  // A GPU-time budget for the plugin's passes in ms, [0, 1000]; 0 is off. With `adaptive` (or `edge`
+  // with the depth detector) a damped controller scales the refinement frame to frame to stay near it;
+  // it times the passes itself (timer queries). Free to change every frame.
+  float budgetMs = 0.0f;
   // FXAA after tonemapping, stacked on any method (FreeSpace Open users combine -msaa and FXAA).
   bool fxaa = false;
   FxaaQuality fxaaQuality = FxaaQuality::High;

@@ -124,6 +124,7 @@ struct Stats {
   uint64_t bytesHeld = 0;             // GPU memory of the plugin's own targets
   int glObjectsHeld = 0;              // live GL objects owned by the plugin
   int slices = 1;                     // lighting passes of the last frame
+  double budgetScale = 1.0;           // the budget controller's quality scale (1 without a budget)
 };
 
 // The host's lighting pass, rendering into `target` from the host's single-sample G-buffer.

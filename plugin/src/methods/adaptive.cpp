@@ -71,8 +71,9 @@ Status AdaptivePass::measureGeometry(PluginContext& context, const MsaaGBuffer& 
   source.bind(layout);
   setDepthEncodingUniforms(program, layout);
   glUniform1f(glGetUniformLocation(program, "uFootprintTan"), std::tan(frame.horizontalFovRadians / float(layout.width)));
-  glUniform1f(glGetUniformLocation(program, "uDepthScale"), context.config.adaptiveDepthScale);
-  glUniform1f(glGetUniformLocation(program, "uNormalScale"), context.config.adaptiveNormalScale);
+  const float budget = float(context.budgetScale);  // 1 without a budget
+  glUniform1f(glGetUniformLocation(program, "uDepthScale"), context.config.adaptiveDepthScale * budget);
+  glUniform1f(glGetUniformLocation(program, "uNormalScale"), context.config.adaptiveNormalScale * budget);
   context.drawFullscreen();
   return Status::ok();
 }
@@ -87,7 +88,7 @@ SliceRenderer::Plan AdaptivePass::plan(PluginContext& context, SliceRenderer& sl
     glUseProgram(program);
     glBindTextureUnit(0, slices.firstSliceLight());
     glBindTextureUnit(2, geometryK_.get());
-    glUniform1f(glGetUniformLocation(program, "uShadingScale"), context.config.adaptiveShadingScale);
+    glUniform1f(glGetUniformLocation(program, "uShadingScale"), context.config.adaptiveShadingScale * float(context.budgetScale));
     glUniform1f(glGetUniformLocation(program, "uThresholdMin"), context.config.adaptiveThresholdMin);
     glUniform1f(glGetUniformLocation(program, "uThresholdEdge"), context.config.adaptiveThresholdEdge);
     glUniform1i(glGetUniformLocation(program, "uMinSamples"), context.config.adaptiveMinSamples);

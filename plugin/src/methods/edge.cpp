@@ -27,7 +27,8 @@ Status EdgeMask::run(PluginContext& context, const MsaaGBuffer& source, SliceRen
   source.bind(context.layout);
   setDepthEncodingUniforms(program, context.layout);
   glUniform1f(glGetUniformLocation(program, "uFootprintTan"), std::tan(frame.horizontalFovRadians / float(context.layout.width)));
-  glUniform1f(glGetUniformLocation(program, "uDepthCloseness"), context.config.edgeDepthCloseness);
+  // A budget scale above 1 marks more pixels: a smaller closeness.
+  glUniform1f(glGetUniformLocation(program, "uDepthCloseness"), context.config.edgeDepthCloseness / float(context.budgetScale));
   glUniform1f(glGetUniformLocation(program, "uNormalCosine"),
               std::cos(context.config.edgeNormalAngleDegrees * 3.14159265f / 180.0f));
   return slices.writeMask(context, program, stencilExport_);
