@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
@@ -27,54 +28,48 @@ std::string bytes(const std::filesystem::path& file) {
 
 }  // namespace
 
-TEST(FuzzCorpus, ScenesParseOrFailNamingFileAndField) {
+// Replays one corpus through `entry`; `checkRejection` judges each rejection's message.
+struct Replayed {
   int accepted = 0, rejected = 0;
-  for (const auto& file : corpus("scene")) {
+};
+static Replayed replay(const std::string& target, fuzz::Outcome (*entry)(const uint8_t*, size_t),
+                const std::function<void(const std::filesystem::path&, const std::string&)>& checkRejection) {
+  Replayed counts;
+  for (const auto& file : corpus(target)) {
     const std::string input = bytes(file);
-    const fuzz::Outcome outcome = fuzz::sceneText(reinterpret_cast<const uint8_t*>(input.data()), input.size());
+    const fuzz::Outcome outcome = entry(reinterpret_cast<const uint8_t*>(input.data()), input.size());
     if (outcome.accepted) {
-      ++accepted;
+      ++counts.accepted;
       continue;
     }
-    ++rejected;
-    EXPECT_EQ(outcome.message.rfind("fuzz.json: ", 0), 0u) << file << ": " << outcome.message;
-    EXPECT_TRUE(outcome.message.find(": $") != std::string::npos || outcome.message.find("(document)") != std::string::npos)
-        << file << ": the message names no field: " << outcome.message;
+    ++counts.rejected;
+    checkRejection(file, outcome.message);
   }
-  std::printf("scene corpus: %d accepted, %d rejected\n", accepted, rejected);
-  EXPECT_GT(accepted, 0);
-  EXPECT_GT(rejected, 0);
+  std::printf("%s corpus: %d accepted, %d rejected\n", target.c_str(), counts.accepted, counts.rejected);
+  return counts;
+}
+
+TEST(FuzzCorpus, ScenesParseOrFailNamingFileAndField) {
+  const Replayed counts = replay("scene", fuzz::sceneText, [](const auto& file, const std::string& message) {
+    EXPECT_EQ(message.rfind("fuzz.json: ", 0), 0u) << file << ": " << message;
+    EXPECT_TRUE(message.find(": $") != std::string::npos || message.find("(document)") != std::string::npos)
+        << file << ": the message names no field: " << message;
+  });
+  EXPECT_GT(counts.accepted, 0);
+  EXPECT_GT(counts.rejected, 0);
 }
 
 TEST(FuzzCorpus, ConfigsParseOrFailNamingSourceAndLine) {
-  int accepted = 0, rejected = 0;
-  for (const auto& file : corpus("config")) {
-    const std::string input = bytes(file);
-    const fuzz::Outcome outcome = fuzz::configText(reinterpret_cast<const uint8_t*>(input.data()), input.size());
-    if (outcome.accepted) {
-      ++accepted;
-      continue;
-    }
-    ++rejected;
-    EXPECT_EQ(outcome.message.rfind("fuzz.cfg:", 0), 0u) << file << ": " << outcome.message;
-  }
-  std::printf("config corpus: %d accepted, %d rejected\n", accepted, rejected);
-  EXPECT_GT(accepted, 0);
-  EXPECT_GT(rejected, 0);
+  const Replayed counts = replay("config", fuzz::configText, [](const auto& file, const std::string& message) {
+    EXPECT_EQ(message.rfind("fuzz.cfg:", 0), 0u) << file << ": " << message;
+  });
+  EXPECT_GT(counts.accepted, 0);
+  EXPECT_GT(counts.rejected, 0);
 }
 
 TEST(FuzzCorpus, ModelsLoadOrFailNamingTheFile) {
-  int accepted = 0, rejected = 0;
-  for (const auto& file : corpus("model")) {
-    const std::string input = bytes(file);
-    const fuzz::Outcome outcome = fuzz::modelFile(reinterpret_cast<const uint8_t*>(input.data()), input.size());
-    if (outcome.accepted) {
-      ++accepted;
-      continue;
-    }
-    ++rejected;
-    EXPECT_NE(outcome.message.find("retroaa_fuzz_model_"), std::string::npos) << file << ": " << outcome.message;
-  }
-  std::printf("model corpus: %d accepted, %d rejected\n", accepted, rejected);
-  EXPECT_GT(accepted + rejected, 0);
+  const Replayed counts = replay("model", fuzz::modelFile, [](const auto& file, const std::string& message) {
+    EXPECT_NE(message.find("retroaa_fuzz_model_"), std::string::npos) << file << ": " << message;
+  });
+  EXPECT_GT(counts.accepted + counts.rejected, 0);
 }
