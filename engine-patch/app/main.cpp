@@ -46,6 +46,10 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
   std::string configFile, msaa, aaPreset, samples;
   std::vector<std::string> sets;
+  auto addSizeOptions = [](CLI::App* sub, int& width, int& height) {
+    sub->add_option("--width", width)->check(CLI::Range(16, 8192));
+    sub->add_option("--height", height)->check(CLI::Range(16, 8192));
+  };
   auto addConfigOptions = [&](CLI::App* sub) {
     sub->add_option("--config", configFile, "config file of key=value lines");
     sub->add_option("--set", sets, "one setting, key=value (repeatable)");
@@ -58,8 +62,7 @@ int main(int argc, char** argv) {
   CLI::App* renderCmd = cli.add_subcommand("render", "render one frame headless");
   renderCmd->add_option("--scene", render.scene, "scene file, or 'default'");
   renderCmd->add_option("--method", render.method, "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
-  renderCmd->add_option("--width", render.width)->check(CLI::Range(16, 8192));
-  renderCmd->add_option("--height", render.height)->check(CLI::Range(16, 8192));
+  addSizeOptions(renderCmd, render.width, render.height);
   renderCmd->add_option("--frame", render.frame, "camera path frame (default: the scene camera)");
   renderCmd->add_option("--gt-samples", render.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
   renderCmd->add_option("--out", render.out, "output image (.png display, .exr linear radiance)")->required();
@@ -71,8 +74,7 @@ int main(int argc, char** argv) {
   CLI::App* benchCmd = cli.add_subcommand("bench", "every method on one frame: speed against error");
   benchCmd->add_option("--scene", bench.scene, "scene file, or 'default'");
   benchCmd->add_option("--methods", bench.methods, "comma-separated method specs, or 'all'");
-  benchCmd->add_option("--width", bench.width)->check(CLI::Range(16, 8192));
-  benchCmd->add_option("--height", bench.height)->check(CLI::Range(16, 8192));
+  addSizeOptions(benchCmd, bench.width, bench.height);
   benchCmd->add_option("--frame", bench.frame, "camera path frame (default: the scene camera)");
   benchCmd->add_option("--gt-samples", bench.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
   benchCmd->add_option("--repeats", bench.repeats, "timed frames per method (median)")->check(CLI::Range(1, 100));
@@ -96,8 +98,7 @@ int main(int argc, char** argv) {
   CLI::App* regressCmd = cli.add_subcommand("regress", "every frame of recorded demo scenes with every method: report and goldens");
   regressCmd->add_option("scenes", regress.scenes, "scene files (default: the five recorded scenes)");
   regressCmd->add_option("--methods", regress.methods, "comma-separated method specs, or 'all'");
-  regressCmd->add_option("--width", regress.width)->check(CLI::Range(16, 8192));
-  regressCmd->add_option("--height", regress.height)->check(CLI::Range(16, 8192));
+  addSizeOptions(regressCmd, regress.width, regress.height);
   regressCmd->add_option("--gt-samples", regress.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
   regressCmd->add_option("--stride", regress.frameStride, "every n-th frame of each path")->check(CLI::Range(1, 1000));
   regressCmd->add_option("--frames", regress.maxFrames, "at most this many frames per scene (0: all)")->check(CLI::Range(0, 100000));
@@ -110,8 +111,7 @@ int main(int argc, char** argv) {
   app::SoakOptions soak;
   CLI::App* soakCmd = cli.add_subcommand("soak", "many frames switching every setting: leaks, GL errors, memory");
   soakCmd->add_option("--frames", soak.frames)->check(CLI::Range(1, 10000000));
-  soakCmd->add_option("--width", soak.width)->check(CLI::Range(16, 8192));
-  soakCmd->add_option("--height", soak.height)->check(CLI::Range(16, 8192));
+  addSizeOptions(soakCmd, soak.width, soak.height);
   soakCmd->add_option("--max-growth-mib", soak.maxGrowthMiB, "allowed resident memory growth after warm-up");
 
 #ifdef RETROAA_HAS_VIEWER
@@ -120,8 +120,7 @@ int main(int argc, char** argv) {
   viewCmd->add_option("--scene", view.scene, "scene file, or 'default'");
   viewCmd->add_option("--method", view.method, "method A (left side)");
   viewCmd->add_option("--compare", view.compare, "method B: split screen with a draggable divider");
-  viewCmd->add_option("--width", view.width)->check(CLI::Range(16, 8192));
-  viewCmd->add_option("--height", view.height)->check(CLI::Range(16, 8192));
+  addSizeOptions(viewCmd, view.width, view.height);
   viewCmd->add_option("--script", view.script, "timed actions with a fixed time step (docs/viewer.md)");
   viewCmd->add_option("--record-path", view.recordPath, "where R writes the recorded camera path");
   addConfigOptions(viewCmd);
@@ -135,8 +134,7 @@ int main(int argc, char** argv) {
   tuneCmd->add_option("--target", tuneTargets, "psnr=X, edge_psnr=X or ssim=X (repeatable)")->required();
   tuneCmd->add_option("--cost", tune.cost, "evals | gpu_ms | memory");
   tuneCmd->add_option("--candidates", tune.candidates, "comma-separated method specs (default: the built-in grid)");
-  tuneCmd->add_option("--width", tune.width)->check(CLI::Range(16, 8192));
-  tuneCmd->add_option("--height", tune.height)->check(CLI::Range(16, 8192));
+  addSizeOptions(tuneCmd, tune.width, tune.height);
   tuneCmd->add_option("--gt-samples", tune.groundTruthSamples)->check(CLI::Range(1, 32));
   tuneCmd->add_option("--frames", tune.frames, "frames of each scene's path")->check(CLI::Range(1, 10000));
   tuneCmd->add_option("--out", tune.out, "the config file to write (a report beside it: .md, .json)");

@@ -1,6 +1,7 @@
 #include "context.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace retroaa {
@@ -8,6 +9,10 @@ namespace retroaa {
 void PluginContext::warn(const std::string& message) {
   warnings.push_back(message);
   if (log) log(LogLevel::Warning, message);
+}
+
+float PluginContext::footprintTan(const FrameInfo& frame) const {
+  return std::tan(frame.horizontalFovRadians / float(layout.width));
 }
 
 void PluginContext::drawFullscreen() const {

@@ -33,6 +33,8 @@ struct PluginContext {
 
   void warn(const std::string& message);
   uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }
+  // tan(hfov / width): one pixel's footprint per metre of depth, Eq. 1's scale.
+  float footprintTan(const FrameInfo& frame) const;
   void drawFullscreen() const;     // one triangle with the empty vertex array bound
   // Binds `framebuffer` (0: leave the binding) with the layout's viewport and plain state: no blend,
   // depth or stencil test, culling or scissor; all colour channels written.

@@ -70,7 +70,7 @@ Status AdaptivePass::measureGeometry(PluginContext& context, const MsaaGBuffer& 
   glUseProgram(program);
   source.bind(layout);
   setDepthEncodingUniforms(program, layout);
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), std::tan(frame.horizontalFovRadians / float(layout.width)));
+  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
   const float budget = float(context.budgetScale);  // 1 without a budget
   glUniform1f(glGetUniformLocation(program, "uDepthScale"), context.config.adaptiveDepthScale * budget);
   glUniform1f(glGetUniformLocation(program, "uNormalScale"), context.config.adaptiveNormalScale * budget);

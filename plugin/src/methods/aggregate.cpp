@@ -46,7 +46,7 @@ Status AggregatePass::cluster(PluginContext& context, const MsaaGBuffer& source,
   glUseProgram(program);
   source.bind(context.layout);
   setDepthEncodingUniforms(program, context.layout);
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), std::tan(frame.horizontalFovRadians / float(context.layout.width)));
+  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
   glUniform1f(glGetUniformLocation(program, "uLength"), context.config.aggregateLength);
   glUniform1f(glGetUniformLocation(program, "uThreshold"), context.config.aggregateThreshold);
   glUniform2fv(glGetUniformLocation(program, "uSamplePositions"), source.samples(), samplePositions_.data());

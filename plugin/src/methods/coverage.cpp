@@ -51,7 +51,7 @@ Status CoveragePass::run(PluginContext& context, const PostTarget& post, const F
   glUniform2f(glGetUniformLocation(program, "uTexelSize"), 1.0f / layout.width, 1.0f / layout.height);
   glUniform1f(glGetUniformLocation(program, "uNear"), frame.nearPlane);
   glUniform1f(glGetUniformLocation(program, "uFar"), frame.farPlane);
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), std::tan(frame.horizontalFovRadians / float(layout.width)));
+  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
   glUniform1f(glGetUniformLocation(program, "uTolerance"), context.config.coverageTolerance);
   context.drawFullscreen();
   post.copyBack(layout);

@@ -26,7 +26,7 @@ Status EdgeMask::run(PluginContext& context, const MsaaGBuffer& source, SliceRen
   glUseProgram(program);
   source.bind(context.layout);
   setDepthEncodingUniforms(program, context.layout);
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), std::tan(frame.horizontalFovRadians / float(context.layout.width)));
+  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
   // A budget scale above 1 marks more pixels: a smaller closeness.
   glUniform1f(glGetUniformLocation(program, "uDepthCloseness"), context.config.edgeDepthCloseness / float(context.budgetScale));
   glUniform1f(glGetUniformLocation(program, "uNormalCosine"),

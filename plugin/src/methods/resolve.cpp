@@ -40,8 +40,7 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
   glUseProgram(program);
   source.bind(layout);
   glUniform1i(glGetUniformLocation(program, "uWeighting"), int(context.config.resolveWeighting));
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"),
-              std::tan(frame.horizontalFovRadians / float(layout.width)));
+  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
   glUniform1f(glGetUniformLocation(program, "uFsoFootprintTan"),
               std::tan(frame.horizontalFovRadians / float(layout.height)));
   glUniform1f(glGetUniformLocation(program, "uCloseness"), context.config.closeness);
