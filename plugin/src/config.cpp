@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -55,7 +56,23 @@ Status parseBool(const std::string& key, const std::string& value, bool& out) {
   return invalid("config key '" + key + "': value '" + value + "' is not a switch (allowed: on, off)");
 }
 
-constexpr Method kMethods[] = {Method::Off, Method::Fxaa, Method::Resolve, Method::Edge, Method::PerSample, Method::Adaptive, Method::Aggregate, Method::Coverage};
+Status parseMethod(const std::string& value, Method& out) {
+  std::string allowed;
+  for (const MethodInfo& row : methodTable()) {
+    if (value == row.name) return out = row.method, Status::ok();
+    allowed += std::string(allowed.empty() ? "" : ", ") + row.name;
+  }
+  return invalid("config key 'method': unknown value '" + value + "' (allowed: " + allowed + ")");
+}
+
+const char* methodNames() {
+  static const std::string names = [] {
+    std::string list;
+    for (const MethodInfo& row : methodTable()) list += std::string(list.empty() ? "" : ", ") + row.name;
+    return list;
+  }();
+  return names.c_str();
+}
 constexpr EdgeDetector kEdgeDetectors[] = {EdgeDetector::Depth,    EdgeDetector::Plane,    EdgeDetector::Normal,
                                            EdgeDetector::Material, EdgeDetector::Coverage, EdgeDetector::EveryPixel};
 constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
@@ -69,16 +86,20 @@ struct Setter {
   std::string (*read)(const Config&);
 };
 
+// Digits of floats written back: 6 for config text people read; validateConfig raises it so that no
+// out-of-range value rounds into range.
+thread_local int floatDigits = 6;
+
 std::string formatFloat(float v) {
   std::ostringstream out;
-  out << v;
+  out << std::setprecision(floatDigits) << v;
   return out.str();
 }
 
 const std::vector<Setter>& setters() {
   static const std::vector<Setter> table = {
-      {{"method", "off", "off, fxaa, resolve, edge, per-sample, adaptive, aggregate, coverage", "which AA method runs; changing it reallocates only what it needs"},
-       [](Config& c, const std::string& v) { return parseEnum("method", v, kMethods, c.method); },
+      {{"method", "off", methodNames(), "which AA method runs; changing it reallocates only what it needs"},
+       [](Config& c, const std::string& v) { return parseMethod(v, c.method); },
        [](const Config& c) { return std::string(toString(c.method)); }},
       {{"samples", "4", "1, 2, 4, 8, 16", "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
        [](Config& c, const std::string& v) -> Status {
@@ -182,20 +203,9 @@ const std::vector<Setter>& setters() {
 
 }  // namespace
 
-bool usesMsaa(Method method) { return method != Method::Off && method != Method::Fxaa && method != Method::Coverage; }
-
 const char* toString(Method method) {
-  switch (method) {
-    case Method::Off: return "off";
-    case Method::Fxaa: return "fxaa";
-    case Method::Resolve: return "resolve";
-    case Method::Edge: return "edge";
-    case Method::PerSample: return "per-sample";
-    case Method::Adaptive: return "adaptive";
-    case Method::Aggregate: return "aggregate";
-    case Method::Coverage: return "coverage";
-  }
-  return "?";
+  const MethodInfo* row = findMethod(method);
+  return row ? row->name : "?";
 }
 
 const char* toString(ResolveWeighting weighting) {
@@ -312,6 +322,19 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
     return Status::ok();
   }
   return invalid("unknown FreeSpace Open flag '" + flag + "' (known: -msaa, -aa_preset)");
+}
+
+Status validateConfig(const Config& config) {
+  const int digits = floatDigits;
+  floatDigits = 9;  // every float exactly enough to round-trip
+  Status status = Status::ok();
+  for (const Setter& s : setters()) {
+    Config scratch;
+    status = s.apply(scratch, s.read(config));
+    if (!status) break;
+  }
+  floatDigits = digits;
+  return status;
 }
 
 std::string toConfigText(const Config& config) {

@@ -3,24 +3,13 @@
 #include "context.h"
 #include "budget_controller.h"
 #include "gl_state.h"
-#include "methods/methods.h"
+#include "technique.h"
+
+#include <algorithm>
 
 namespace retroaa {
 
 namespace {
-
-bool needsMultisampledGBuffer(Method method) { return usesMsaa(method); }
-bool needsSlices(Method method) {
-  return method == Method::Edge || method == Method::PerSample || method == Method::Adaptive || method == Method::Aggregate;
-}
-bool needsEdgeMask(Method method) { return method == Method::Edge || method == Method::PerSample; }
-EdgeDetector detectorFor(const Config& config) {
-  return config.method == Method::PerSample ? EdgeDetector::EveryPixel : config.edgeDetector;
-}
-bool needsFxaa(const Config& config) { return config.method == Method::Fxaa || config.fxaa; }
-bool needsCoverage(const Config& config) {
-  return config.method == Method::Coverage || (config.coverageFilter && usesMsaa(config.method));
-}
 
 Status validateLayout(const GBufferLayout& layout) {
   auto invalid = [](const std::string& message) { return Error{ErrorCode::InvalidLayout, message}; };
@@ -58,152 +47,160 @@ ContextCapabilities queryCapabilities(uint32_t disabledFeatures, int maxSamplesL
 
 }  // namespace
 
+// One technique of the running config and the registry row it was built for.
+struct ActiveTechnique {
+  const TechniqueRow* row = nullptr;
+  std::unique_ptr<Technique> technique;
+};
+
 struct Plugin::Impl {
   PluginContext context;
+  // The shared pieces, held while an active row asks for them.
   std::unique_ptr<MsaaGBuffer> msaa;
-  std::unique_ptr<ResolvePass> resolvePass;
+  std::unique_ptr<ResolvePass> resolvePass;  // with the MSAA G-buffer: slice 0's base, and `resolve` itself
   std::unique_ptr<SliceRenderer> slices;
-  std::unique_ptr<EdgeMask> edgeMask;
-  std::unique_ptr<AdaptivePass> adaptive;
-  std::unique_ptr<AggregatePass> aggregate;
-  std::unique_ptr<FxaaPass> fxaaPass;
-  std::unique_ptr<CoveragePass> coverage;
   std::unique_ptr<PostTarget> postTarget;
-  bool coverageOwnPrepass = false;  // what `coverage` was built for
-  int coverageSamples = 0;
+  // The method's technique first, then the stacked ones; each pass runs them in this order.
+  std::vector<ActiveTechnique> techniques;
   FrameInfo lastFrame;  // from resolve(), for post()
   std::unique_ptr<BudgetController> budget;
+  bool resolvedThisFrame = false;
 
-  // Budget mode applies where a setting trades time for quality continuously.
-  bool budgetApplies(const Config& config) const {
-    return config.budgetMs > 0 && (config.method == Method::Adaptive ||
-                                   (config.method == Method::Edge && config.edgeDetector == EdgeDetector::Depth));
+  SharedTargets shared() { return {msaa.get(), slices.get(), postTarget.get()}; }
+  Technique* methodTechnique() {
+    return !techniques.empty() && techniques.front().row->info.method == context.config.method
+               ? techniques.front().technique.get()
+               : nullptr;
   }
+
+  // The rows active under `config`: its method's, then every row stacked on it (post-last ones last).
+  static std::vector<const TechniqueRow*> activeRows(const Config& config) {
+    std::vector<const TechniqueRow*> rows;
+    if (const TechniqueRow* own = findTechnique(config.method)) rows.push_back(own);
+    for (const TechniqueRow& row : techniqueRegistry())
+      if (row.info.method != config.method && row.stackedOn && row.stackedOn(config)) rows.push_back(&row);
+    std::stable_partition(rows.begin() + (rows.empty() ? 0 : 1), rows.end(), [](const TechniqueRow* row) { return !row->postLast; });
+    return rows;
+  }
+  static uint32_t storageOf(const Config& config, const std::vector<const TechniqueRow*>& rows) {
+    uint32_t storage = kStorageNone;
+    for (const TechniqueRow* row : rows) storage |= row->info.method == config.method ? row->storage : row->stackedStorage;
+    if (storage & kStorageSlices) storage |= kStorageMsaaGBuffer;
+    return storage;
+  }
+
+  // Budget mode applies where the method's technique trades time for quality continuously.
   void configureBudget(const Config& previous) {
     const Config& config = context.config;
-    if (!budgetApplies(config)) {
+    Technique* technique = methodTechnique();
+    if (config.budgetMs <= 0 || !technique || !technique->followsBudget(config)) {
       budget.reset();
       context.budgetScale = 1.0;
       if (config.budgetMs > 0 && previous.budgetMs != config.budgetMs)
-        context.warn(std::string("budget_ms applies to adaptive and to edge with the depth detector, not to ") + toString(config.method));
+        context.warn(std::string("budget_ms has no effect on ") + toString(config.method) +
+                     " with these settings: its cost does not follow a quality setting (it steers adaptive, and edge "
+                     "with the depth detector)");
     } else if (!budget || previous.budgetMs != config.budgetMs) {
       budget = std::make_unique<BudgetController>(config.budgetMs);
       context.budgetScale = budget->scale();
     }
     context.timePasses = config.measureGpuTime || budget != nullptr;
   }
-  bool resolvedThisFrame = false;
-  int aggregateCount_ = 0;  // the c the aggregate shaders were built for
 
-  // Grants a requested config against the context: falls back from methods it cannot run and clamps
-  // samples, each with a warning.
+  // Grants a requested (valid) config against the context: falls back from methods it cannot run and
+  // clamps samples, each with a warning.
   Config grant(Config requested) {
-    if ((usesMsaa(requested.method) || requested.method == Method::Coverage) && context.capabilities.maxSamples < 2) {
-      context.warn(std::string("method ") + toString(requested.method) + " needs multisampling but the context's GL_MAX_SAMPLES is " +
-                   std::to_string(context.capabilities.maxSamples) + "; falling back to fxaa");
+    const ContextCapabilities& caps = context.capabilities;
+    const MethodInfo* method = findMethod(requested.method);
+    if (method->multisampled && caps.maxSamples < 2) {
+      context.warn(std::string("method ") + method->name + " needs multisampling but the context's GL_MAX_SAMPLES is " +
+                   std::to_string(caps.maxSamples) + "; falling back to fxaa");
       requested.method = Method::Fxaa;
+      method = findMethod(requested.method);
     }
-    if (requested.method == Method::Coverage && requested.samples < 2 && context.capabilities.maxSamples >= 2) {
-      context.warn("method coverage needs at least 2 depth samples, samples=" + std::to_string(requested.samples) +
-                   " requested; using 2");
-      requested.samples = 2;
+    if (requested.samples < method->minSamples && caps.maxSamples >= method->minSamples) {
+      context.warn(std::string("method ") + method->name + " needs at least " + std::to_string(method->minSamples) +
+                   " samples, samples=" + std::to_string(requested.samples) + " requested; using " +
+                   std::to_string(method->minSamples));
+      requested.samples = method->minSamples;
     }
     if (requested.coverageFilter && usesMsaa(requested.method) && requested.samples < 2) {
       context.warn("coverage_filter needs at least 2 samples and samples=" + std::to_string(requested.samples) +
                    "; the filter is off");
       requested.coverageFilter = false;
     }
-    if (requested.measureGpuTime && !context.capabilities.timerQuery) {
+    if (requested.measureGpuTime && !caps.timerQuery) {
       context.warn("measure_gpu_time=on but the context has no timer queries: pass times are not measured");
       requested.measureGpuTime = false;
     }
-    if (requested.samples > context.capabilities.maxSamples) {
-      // Only worth a word when the method uses the samples.
-      if (usesMsaa(requested.method) || requested.method == Method::Coverage)
+    if (requested.samples > caps.maxSamples) {
+      if (method->multisampled)  // only worth a word when the method uses the samples
         context.warn("samples=" + std::to_string(requested.samples) + " requested, the context grants " +
-                     std::to_string(context.capabilities.maxSamples) + " (GL_MAX_SAMPLES); using " +
-                     std::to_string(context.capabilities.maxSamples));
-      requested.samples = context.capabilities.maxSamples;
+                     std::to_string(caps.maxSamples) + " (GL_MAX_SAMPLES); using " + std::to_string(caps.maxSamples));
+      requested.samples = caps.maxSamples;
     }
     return requested;
   }
 
-  // Holds exactly what the configured method needs: frees the rest, creates what is missing.
+  // Holds exactly what the active rows need: frees the rest, creates what is missing.
   Status allocate(bool rebuildAll) {
     const Config& config = context.config;
-    if (rebuildAll || !needsMultisampledGBuffer(config.method) || (msaa && msaa->requestedSamples() != config.samples)) {
-      edgeMask.reset();
-      coverage.reset();
-      adaptive.reset();
-      aggregate.reset();
+    const std::vector<const TechniqueRow*> rows = activeRows(config);
+    const uint32_t storage = storageOf(config, rows);
+    const bool needMsaa = storage & kStorageMsaaGBuffer;
+    if (rebuildAll || !needMsaa || (msaa && msaa->requestedSamples() != config.samples)) {
+      if (rebuildAll || msaa) techniques.clear();  // techniques may hold the G-buffer's or the slices' objects
       slices.reset();
       resolvePass.reset();
       msaa.reset();
     }
-    if (!needsEdgeMask(config.method) || (edgeMask && edgeMask->detector() != detectorFor(config))) edgeMask.reset();
-    if (config.method != Method::Adaptive) adaptive.reset();
-    if (config.method != Method::Aggregate || (aggregate && aggregateCount_ != config.aggregateCount)) aggregate.reset();
-    if (!needsSlices(config.method)) slices.reset();
-    if (rebuildAll || !needsFxaa(config)) fxaaPass.reset();
-    const bool ownPrepass = config.method == Method::Coverage;
-    if (!needsCoverage(config) || ownPrepass != coverageOwnPrepass || (ownPrepass && coverageSamples != config.samples))
-      coverage.reset();
-    if (rebuildAll || !(needsFxaa(config) || needsCoverage(config))) postTarget.reset();
-    if (needsMultisampledGBuffer(config.method) && !msaa) {
+    if (!(storage & kStorageSlices)) slices.reset();
+    if (rebuildAll || !(storage & kStoragePostTarget)) postTarget.reset();
+    std::vector<ActiveTechnique> kept;
+    for (ActiveTechnique& active : techniques)
+      if (std::find(rows.begin(), rows.end(), active.row) != rows.end() && active.technique->keepsObjectsFor(config))
+        kept.push_back(std::move(active));
+    techniques.clear();  // what is not kept is freed before anything new is allocated
+
+    if (needMsaa && !msaa) {
       auto created = MsaaGBuffer::create(context, config.samples);
       if (!created) return created.error();
       msaa = std::move(created.value());
     }
-    if (needsMultisampledGBuffer(config.method) && !resolvePass) {  // the resolved G-buffer is slice 0's base
+    if (needMsaa && !resolvePass) {
       auto created = ResolvePass::create(context, *msaa);
       if (!created) return created.error();
       resolvePass = std::move(created.value());
     }
-    if (needsSlices(config.method) && !slices) {
+    if ((storage & kStorageSlices) && !slices) {
       auto created = SliceRenderer::create(context, *msaa);
       if (!created) return created.error();
       slices = std::move(created.value());
     }
-    if (config.method == Method::Adaptive && !adaptive) {
-      auto created = AdaptivePass::create(context, *msaa, context.capabilities.stencilExport);
-      if (!created) return created.error();
-      adaptive = std::move(created.value());
-    }
-    if (config.method == Method::Aggregate && !aggregate) {
-      auto created = AggregatePass::create(context, *msaa, *slices, context.capabilities.stencilExport);
-      if (!created) return created.error();
-      aggregate = std::move(created.value());
-      aggregateCount_ = config.aggregateCount;
-    }
-    if (needsEdgeMask(config.method) && !edgeMask) {
-      auto created = EdgeMask::create(context, *msaa, detectorFor(config), context.capabilities.stencilExport);
-      if (!created) return created.error();
-      edgeMask = std::move(created.value());
-    }
-    if ((needsFxaa(config) || needsCoverage(config)) && !postTarget) {
+    if ((storage & kStoragePostTarget) && !postTarget) {
       auto created = PostTarget::create(context);
       if (!created) return created.error();
       postTarget = std::move(created.value());
     }
-    if (needsCoverage(config) && !coverage) {
-      auto created = CoveragePass::create(context, ownPrepass ? nullptr : msaa.get(), config.samples);
+    for (const TechniqueRow* row : rows) {
+      if (!row->create) continue;
+      auto existing = std::find_if(kept.begin(), kept.end(), [row](const ActiveTechnique& a) { return a.row == row; });
+      if (existing != kept.end()) {
+        techniques.push_back(std::move(*existing));
+        continue;
+      }
+      SharedTargets targets = shared();
+      auto created = row->create(context, targets);
       if (!created) return created.error();
-      coverage = std::move(created.value());
-      coverageOwnPrepass = ownPrepass;
-      coverageSamples = config.samples;
-    }
-    if (needsFxaa(config) && !fxaaPass) {
-      auto created = FxaaPass::create(context);
-      if (!created) return created.error();
-      fxaaPass = std::move(created.value());
+      techniques.push_back({row, std::move(created.value())});
     }
     return Status::ok();
   }
 
   uint64_t bytesHeld() const {
-    return (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (adaptive ? adaptive->bytes() : 0) +
-           (aggregate ? aggregate->bytes() : 0) +
-           (coverage ? coverage->bytes() : 0) + (postTarget ? postTarget->bytes() : 0);
+    uint64_t bytes = (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (postTarget ? postTarget->bytes() : 0);
+    for (const ActiveTechnique& active : techniques) bytes += active.technique->bytes();
+    return bytes;
   }
 };
 
@@ -215,6 +212,7 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
     return Error{ErrorCode::UnsupportedContext, "retroaa needs an OpenGL 4.5 core context, this one is " +
                                                     std::to_string(epoxy_gl_version() / 10) + "." +
                                                     std::to_string(epoxy_gl_version() % 10)};
+  if (Status status = validateConfig(description.config); !status) return status.error();
   if (Status status = validateLayout(description.layout); !status) return status.error();
   GlStateGuard guard;
   auto impl = std::make_unique<Impl>();
@@ -236,7 +234,9 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
 }
 
 GLuintHandle Plugin::coverageFramebuffer() const {
-  return impl_->coverage ? impl_->coverage->prepassFramebuffer() : 0;
+  for (const ActiveTechnique& active : impl_->techniques)
+    if (const GLuint framebuffer = active.technique->prepassFramebuffer()) return framebuffer;
+  return 0;
 }
 
 GLuintHandle Plugin::geometryFramebuffer() const {
@@ -252,24 +252,28 @@ Status Plugin::resolve(const FrameInfo& frame) {
   if (!impl_->resolvePass) return Status::ok();
   GlStateGuard guard;
   if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
-  if (impl_->edgeMask) return impl_->edgeMask->run(context, *impl_->msaa, *impl_->slices, frame);
-  if (impl_->adaptive) return impl_->adaptive->measureGeometry(context, *impl_->msaa, frame);
-  if (impl_->aggregate) return impl_->aggregate->cluster(context, *impl_->msaa, *impl_->slices, frame);
+  SharedTargets shared = impl_->shared();
+  for (ActiveTechnique& active : impl_->techniques)
+    if (Status status = active.technique->afterResolve(context, shared, frame); !status) return status;
   return Status::ok();
 }
 
 Status Plugin::shade(const LightingFunction& lighting) {
   PluginContext& context = impl_->context;
   if (!impl_->resolvedThisFrame) {
+    if (impl_->msaa)  // the host's G-buffer holds nothing of this frame's model pass
+      return Error{ErrorCode::WrongCallOrder, std::string("shade() without resolve() since the last shade(): ") +
+                                                  toString(context.config.method) +
+                                                  " needs the model pass resolved first (see docs/integration.md)"};
     context.frameStats.passes.clear();
     context.frameStats.lightingEvaluations = 0;
   }
   impl_->resolvedThisFrame = false;
   if (impl_->slices) {
     GlStateGuard guard;
-    SliceRenderer::Plan plan;
-    if (impl_->adaptive) plan = impl_->adaptive->plan(context, *impl_->slices);
-    if (impl_->aggregate) plan = impl_->aggregate->plan(context, *impl_->msaa);
+    SharedTargets shared = impl_->shared();
+    Technique* technique = impl_->methodTechnique();
+    const SliceRenderer::Plan plan = technique ? technique->slicePlan(context, shared) : SliceRenderer::Plan{};
     const Status status = impl_->slices->shade(context, *impl_->msaa, lighting, plan);
     if (impl_->budget) {  // the plugin's time this frame decides the next frame's refinement
       double ms = 0;
@@ -291,27 +295,31 @@ Status Plugin::shade(const LightingFunction& lighting) {
 Status Plugin::post() {
   if (!impl_->postTarget) return Status::ok();
   GlStateGuard guard;
-  if (impl_->coverage) {
-    if (Status status = impl_->coverage->run(impl_->context, *impl_->postTarget, impl_->lastFrame); !status) return status;
-  }
-  if (impl_->fxaaPass) return impl_->fxaaPass->run(impl_->context, *impl_->postTarget);
+  SharedTargets shared = impl_->shared();
+  for (ActiveTechnique& active : impl_->techniques)
+    if (Status status = active.technique->post(impl_->context, shared, impl_->lastFrame); !status) return status;
   return Status::ok();
 }
 
 Status Plugin::reconfigure(const Config& config) {
+  if (Status status = validateConfig(config); !status) return status;
   PluginContext& context = impl_->context;
   GlStateGuard guard;
   const Config previous = context.config;
   context.config = impl_->grant(config);
-  const bool rebuild = config.shaderOverrideDirectory != previous.shaderOverrideDirectory ||
-                       config.fxaaQuality != previous.fxaaQuality;
-  if (config.shaderOverrideDirectory != previous.shaderOverrideDirectory)
+  const bool newShaders = config.shaderOverrideDirectory != previous.shaderOverrideDirectory;
+  if (newShaders)
     context.shaders = std::make_unique<ShaderLibrary>(context.objects, config.shaderOverrideDirectory,
                                                       [&context](const std::string& m) { context.warn(m); });
-  Status status = impl_->allocate(rebuild);
-  if (!status) {  // keep the plugin usable: fall back to what worked before
+  Status status = impl_->allocate(newShaders);
+  if (!status) {  // keep the plugin usable: back to what worked before, or to `off` if even that fails now
     context.config = previous;
-    impl_->allocate(true);
+    if (Status fallback = impl_->allocate(true); !fallback) {
+      context.config = Config{};
+      impl_->allocate(true);  // `off` allocates nothing: it cannot fail
+      context.warn("reconfigure failed (" + status.error().message + ") and the previous config failed too (" +
+                   fallback.error().message + "); the method is off");
+    }
   }
   impl_->configureBudget(previous);
   return status;
@@ -330,7 +338,10 @@ Stats Plugin::stats() const {
   const PluginContext& context = impl_->context;
   Stats stats = context.frameStats;
   stats.method = context.config.method;
-  stats.samples = impl_->msaa ? impl_->msaa->samples() : (impl_->coverage ? impl_->coverage->samples() : 1);
+  stats.samples = 1;
+  if (impl_->msaa) stats.samples = impl_->msaa->samples();
+  else
+    for (const ActiveTechnique& active : impl_->techniques) stats.samples = std::max(stats.samples, active.technique->samples());
   stats.pixels = context.pixelCount();
   stats.bytesHeld = impl_->bytesHeld();
   stats.glObjectsHeld = context.objects.live;

@@ -1,5 +1,10 @@
 #include "shader_library.h"
 
+#include "retroaa/plugin.h"
+#include "shared_constants.h"
+
+#include <cassert>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -33,7 +38,34 @@ GLuint compile(GLenum stage, const std::string& source, std::string& log) {
   return 0;
 }
 
+// Whether a line of `source` declares a uniform called `name` (whole identifier).
+bool declaresUniform(const std::string& source, const std::string& name) {
+  auto isIdentifier = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::istringstream lines(source);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("uniform") == std::string::npos) continue;
+    line = line.substr(0, line.find("//"));
+    for (size_t at = line.find(name); at != std::string::npos; at = line.find(name, at + 1)) {
+      const size_t end = at + name.size();
+      if ((at == 0 || !isIdentifier(line[at - 1])) && (end == line.size() || !isIdentifier(line[end]))) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
+
+GLint ShaderProgram::location(const char* name) const {
+  for (const auto& [declared, location] : uniforms_)
+    if (declared == name) return location;
+  assert(!"a uniform set on a program that did not list it when built");
+  return -1;
+}
+
+void ShaderProgram::setDepthEncoding(const GBufferLayout& layout) const {
+  set("uDepthKnee", layout.depthEncoding.knee);
+  set("uBackgroundAbove", layout.depthEncoding.backgroundAbove);
+}
 
 ShaderLibrary::ShaderLibrary(ObjectCounter& counter, std::string overrideDirectory, Warn warn)
     : counter_(counter), overrideDirectory_(std::move(overrideDirectory)), warn_(std::move(warn)) {}
@@ -72,15 +104,21 @@ Result<std::string> ShaderLibrary::source(const std::string& path, bool allowOve
   return out;
 }
 
-Result<GlProgram> ShaderLibrary::link(const std::string& vertexPath, const std::string& fragmentPath,
-                                      const std::string& defines, bool allowOverride, bool& usedOverride) {
+Result<ShaderProgram> ShaderLibrary::link(const std::string& vertexPath, const std::string& fragmentPath,
+                                          const std::string& defines, const std::vector<std::string>& uniforms,
+                                          bool allowOverride, bool& usedOverride) {
   const std::pair<GLenum, const std::string*> stages[] = {{GL_VERTEX_SHADER, &vertexPath},
                                                           {GL_FRAGMENT_SHADER, &fragmentPath}};
   GLuint shaders[2] = {};
+  std::string sources;  // both stages as compiled, for the uniform check
   for (int i = 0; i < 2; ++i) {
     Result<std::string> text = source(*stages[i].second, allowOverride, usedOverride);
     std::string log;
-    if (text) shaders[i] = compile(stages[i].first, withDefines(text.value(), defines), log);
+    if (text) {
+      const std::string compiled = withDefines(text.value(), sharedConstantDefines() + defines);
+      shaders[i] = compile(stages[i].first, compiled, log);
+      sources += compiled;
+    }
     if (!shaders[i]) {
       if (i == 1) glDeleteShader(shaders[0]);
       return Error{ErrorCode::ShaderError,
@@ -103,17 +141,26 @@ Result<GlProgram> ShaderLibrary::link(const std::string& vertexPath, const std::
   }
   const std::string label = "retroaa." + fragmentPath;
   glObjectLabel(GL_PROGRAM, program, -1, label.c_str());
-  return GlProgram(counter_, program);
+  ShaderProgram built;
+  built.program_ = GlProgram(counter_, program);
+  for (const std::string& name : uniforms) {
+    const GLint location = glGetUniformLocation(program, name.c_str());
+    if (location < 0 && !declaresUniform(sources, name))
+      return Error{ErrorCode::ShaderError, fragmentPath + " declares no uniform '" + name + "', which the plugin sets"};
+    built.uniforms_.emplace_back(name, location);
+  }
+  return built;
 }
 
-Result<GlProgram> ShaderLibrary::program(const std::string& vertexPath, const std::string& fragmentPath,
-                                         const std::string& defines) {
+Result<ShaderProgram> ShaderLibrary::program(const std::string& vertexPath, const std::string& fragmentPath,
+                                             const std::string& defines, std::initializer_list<const char*> uniforms) {
+  const std::vector<std::string> names(uniforms.begin(), uniforms.end());
   bool usedOverride = false;
-  Result<GlProgram> program = link(vertexPath, fragmentPath, defines, true, usedOverride);
+  Result<ShaderProgram> program = link(vertexPath, fragmentPath, defines, names, true, usedOverride);
   if (program || !usedOverride) return program;
   warn_("shader override in '" + overrideDirectory_ + "' failed, using the built-in " + fragmentPath +
         " instead: " + program.error().message);
-  return link(vertexPath, fragmentPath, defines, false, usedOverride);
+  return link(vertexPath, fragmentPath, defines, names, false, usedOverride);
 }
 
 }  // namespace retroaa

@@ -7,24 +7,58 @@
 #include "retroaa/result.h"
 
 #include <functional>
+#include <initializer_list>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace retroaa {
+
+struct GBufferLayout;
+
+// A linked program and the uniforms the plugin sets on it. Their locations are looked up once, when
+// the program is built, and the build fails if the shader does not declare one of them: C++ and
+// GLSL cannot drift apart silently. (A declared uniform the compiler optimised away has location -1;
+// setting it is then a no-op, as GL defines.)
+class ShaderProgram {
+ public:
+  GLuint get() const { return program_.get(); }
+  void use() const { glUseProgram(program_.get()); }
+  void set(const char* name, int value) const { glProgramUniform1i(get(), location(name), value); }
+  void set(const char* name, float value) const { glProgramUniform1f(get(), location(name), value); }
+  void set(const char* name, float x, float y) const { glProgramUniform2f(get(), location(name), x, y); }
+  void setVec2Array(const char* name, int count, const float* xy) const {
+    glProgramUniform2fv(get(), location(name), count, xy);
+  }
+  // The uniforms of common/depth.glsl, from the host's depth encoding.
+  void setDepthEncoding(const GBufferLayout& layout) const;
+
+ private:
+  friend class ShaderLibrary;
+  GLint location(const char* name) const;  // a name not declared at build: -1 and an assertion
+  GlProgram program_;
+  std::vector<std::pair<std::string, GLint>> uniforms_;
+};
+
+// The uniforms common/depth.glsl declares (for the uniform list of a program that includes it).
+#define RETROAA_DEPTH_ENCODING_UNIFORMS "uDepthKnee", "uBackgroundAbove"
 
 class ShaderLibrary {
  public:
   using Warn = std::function<void(const std::string&)>;
   ShaderLibrary(ObjectCounter& counter, std::string overrideDirectory, Warn warn);
 
-  // `defines` is inserted after the #version line ("#define X 1\n..."). Paths are relative to shaders/.
-  Result<GlProgram> program(const std::string& vertexPath, const std::string& fragmentPath,
-                            const std::string& defines = "");
+  // The shared constants (shared_constants.h) and then `defines` are inserted after the #version line
+  // ("#define X 1\n..."). Paths are relative to shaders/. `uniforms`: every uniform the C++ side
+  // sets; a shader that declares none of that name fails with ShaderError naming it.
+  Result<ShaderProgram> program(const std::string& vertexPath, const std::string& fragmentPath,
+                                const std::string& defines = "", std::initializer_list<const char*> uniforms = {});
 
  private:
   // Source with includes expanded; `fromOverride` says whether the override folder supplied it.
   Result<std::string> source(const std::string& path, bool allowOverride, bool& fromOverride, int depth = 0) const;
-  Result<GlProgram> link(const std::string& vertexPath, const std::string& fragmentPath,
-                         const std::string& defines, bool allowOverride, bool& usedOverride);
+  Result<ShaderProgram> link(const std::string& vertexPath, const std::string& fragmentPath, const std::string& defines,
+                             const std::vector<std::string>& uniforms, bool allowOverride, bool& usedOverride);
 
   ObjectCounter& counter_;
   std::string overrideDirectory_;

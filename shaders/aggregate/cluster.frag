@@ -88,7 +88,7 @@ void main() {
   bool anyBackground = false;
   uvec2 assignment = uvec2(0u);
   for (int s = 0; s < SAMPLES; ++s) {
-    uint slice = 15u;
+    uint slice = NO_SLICE;
     if (kind[s] == 0) {
       float nearest = 1.0 / 0.0;
       for (int j = 0; j < seedCount; ++j) {

@@ -11,7 +11,7 @@
 #define FETCH(textureName, pixel, s) texelFetch(textureName, pixel, 0)
 #endif
 layout(binding = 0) uniform GBUFFER_SAMPLER uAttachments[ATTACHMENT_COUNT];
-layout(binding = 15) uniform GBUFFER_SAMPLER uDepthBuffer;  // the MSAA depth buffer (encoding-agnostic)
+layout(binding = UNIT_DEPTH_STENCIL) uniform GBUFFER_SAMPLER uDepthBuffer;  // the MSAA depth buffer (encoding-agnostic)
 
 // View depth of sample s in metres; +inf for background (and for NaN, which reads as background).
 float sampleDistance(ivec2 pixel, int s) {

@@ -7,13 +7,7 @@
 #endif
 #include "common/gbuffer.glsl"
 
-#define DETECTOR_DEPTH 0
-#define DETECTOR_PLANE 1
-#define DETECTOR_NORMAL 2
-#define DETECTOR_MATERIAL 3
-#define DETECTOR_COVERAGE 4
-#define DETECTOR_EVERY_PIXEL 5
-
+// EDGE_DETECTOR is one of the DETECTOR_* values the plugin injects (shared_constants.h).
 uniform float uFootprintTan;     // tan(hfov / width)
 uniform float uDepthCloseness;   // c of the depth detector
 uniform float uNormalCosine;     // cos(angle) of the normal detector

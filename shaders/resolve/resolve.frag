@@ -10,12 +10,11 @@
 //
 #include "common/gbuffer.glsl"
 
-uniform int uWeighting;          // 0 median, 1 front, 2 back, 3 fso, 4 mean
+uniform int uWeighting;          // one of WEIGHTING_* (injected from the C++ enum)
 uniform float uFootprintTan;     // tan(hfov / width): Eq. 1's pixel footprint per metre
 uniform float uFsoFootprintTan;  // tan(hfov / height): FreeSpace Open's footprint
 uniform float uCloseness;        // c of Eq. 1
 
-const int WEIGHTING_MEDIAN = 0, WEIGHTING_FRONT = 1, WEIGHTING_BACK = 2, WEIGHTING_FSO = 3, WEIGHTING_MEAN = 4;
 const float kFsoWindow = 2.5;  // FreeSpace Open's window, in pixel footprints
 const float kInfinity = 1.0 / 0.0;
 

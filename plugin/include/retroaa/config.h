@@ -112,6 +112,24 @@ struct ConfigKey {
 };
 const std::vector<ConfigKey>& configKeys();
 
+// One method as the plugin's registry lists it (plugin/src/registry.cpp: one row per method). Tools
+// read their method lists from here; none names a method itself.
+struct MethodInfo {
+  Method method = Method::Off;
+  const char* name = "";     // as config files, the command line and reports spell it
+  const char* summary = "";  // what it does, in one line
+  bool multisampled = false;  // needs GL_MAX_SAMPLES >= 2; falls back to fxaa (with a warning) without
+  int minSamples = 1;         // fewer samples are raised to this, with a warning
+  // Method specs (app: `method[/weighting][+fxaa|+coverage][@key=value]...`), comma-separated:
+  const char* sweepSpecs = "";   // what a full sweep renders (`--methods all`, the viewer's M key)
+  const char* regressSpec = "";  // the one spec a regression run renders
+  const char* tuneSpecs = "";    // the points `retroaa tune` searches, cheapest settings first
+};
+// Every method, in listing order.
+const std::vector<MethodInfo>& methodTable();
+// The row of `method`; null for a value no row has.
+const MethodInfo* findMethod(Method method);
+
 // Whether the method renders the model pass into a multisampled G-buffer.
 bool usesMsaa(Method method);
 
@@ -133,6 +151,10 @@ Status applySettingsList(Config& config, const std::string& list, const std::str
 // with a warning). `warnings` receives what was adjusted.
 Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
                     std::vector<std::string>& warnings);
+// Checks every field of a config built in code with the rules the text parser applies to the same key
+// (ranges, allowed values, known enum values). Errors are InvalidConfig naming the key and value.
+// Plugin::create and reconfigure call it.
+Status validateConfig(const Config& config);
 // Writes a config back as `key=value` lines that applyConfigText reads.
 std::string toConfigText(const Config& config);
 

@@ -132,7 +132,9 @@ using LightingFunction = std::function<void(GLuintHandle target)>;
 
 class Plugin {
  public:
-  // Fails with InvalidConfig, InvalidLayout, UnsupportedContext, IncompleteFramebuffer or ShaderError.
+  // Fails with InvalidConfig (a field the text parser would refuse: validateConfig), InvalidLayout,
+  // UnsupportedContext (below GL 4.5), IncompleteFramebuffer (the driver refused a target built from
+  // the layout's formats) or ShaderError (a built-in shader does not build, or lacks a uniform).
   // Features the context lacks make the plugin fall back, with a warning that says which and why:
   // no multisampling (GL_MAX_SAMPLES < 2) → every multi-sample method becomes `fxaa`; no stencil export →
   // slice counts in N passes; no timer queries → no pass times. Compute shaders are not used.
@@ -147,10 +149,11 @@ class Plugin {
   // For `coverage`: a multisampled depth-only framebuffer the host draws its models into once more
   // (colour writes off), after the model pass. 0 when the method needs no such pass.
   GLuintHandle coverageFramebuffer() const;
-  // After the model pass. Errors: WrongCallOrder never; IncompleteFramebuffer after a bad resize.
+  // After the model pass. Returns the first error of a pass (none are expected once create succeeded).
   Status resolve(const FrameInfo& frame);
   // Runs `lighting` once per slice and composites; for single-slice methods, once into the host's
-  // light framebuffer.
+  // light framebuffer. Errors: WrongCallOrder when a method with an MSAA G-buffer is shaded without
+  // resolve() since the previous shade() (the host's G-buffer would hold nothing of this frame).
   Status shade(const LightingFunction& lighting);
   // After the host's tonemap, on the display target: the coverage filter, then FXAA (as configured).
   Status post();
@@ -159,7 +162,8 @@ class Plugin {
   // single-slice methods), rows bottom-up as GL stores them. Reads back from the GPU.
   std::vector<uint8_t> readSliceCounts() const;
 
-  // Applies a new config; reallocates only what the new method needs. Errors: InvalidConfig.
+  // Applies a new config; reallocates only what the new method needs. Errors: InvalidConfig (nothing
+  // changes), or an allocation error (the previous config stays, or `off` if even that fails now).
   Status reconfigure(const Config& config);
   // The host recreated its targets (window resize). Errors: InvalidLayout, IncompleteFramebuffer.
   Status resize(const GBufferLayout& layout);

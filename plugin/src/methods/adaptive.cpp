@@ -3,7 +3,8 @@
 #include <limits>
 #include <string>
 
-#include "methods.h"
+#include "../shared_constants.h"
+#include "../technique.h"
 
 namespace retroaa {
 
@@ -36,65 +37,92 @@ std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY) {
   return order;
 }
 
-Result<std::unique_ptr<AdaptivePass>> AdaptivePass::create(PluginContext& context, const MsaaGBuffer& source,
-                                                           bool stencilExport) {
-  auto pass = std::make_unique<AdaptivePass>();
-  const GBufferLayout& layout = context.layout;
-  pass->stencilExport_ = stencilExport;
-  auto geometry = context.shaders->program("common/fullscreen.vert", "adaptive/geometry_metric.frag",
-                                           source.shaderDefines(layout, false));
-  if (!geometry) return geometry.error();
-  pass->geometryProgram_ = std::move(geometry.value());
-  auto shading = context.shaders->program("common/fullscreen.vert", "adaptive/shading_metric.frag",
-                                          "#define SAMPLES " + std::to_string(source.samples()) + "\n#define STENCIL_EXPORT " +
-                                              (stencilExport ? "1" : "0") + "\n");
-  if (!shading) return shading.error();
-  pass->shadingProgram_ = std::move(shading.value());
-  pass->geometryK_ = makeTexture(context, GL_R16F, layout.width, layout.height, 0, "adaptive.geometry_k", pass->bytes_);
-  pass->geometryTarget_ = makeFramebuffer(context, "adaptive.geometry_k");
-  glNamedFramebufferTexture(pass->geometryTarget_.get(), GL_COLOR_ATTACHMENT0, pass->geometryK_.get(), 0);
-  if (Status status = checkFramebuffer(pass->geometryTarget_.get(), "adaptive.geometry_k"); !status) return status.error();
+namespace {
 
-  // The driver's own sample positions decide the order (queried, not assumed).
-  std::vector<float> positions(size_t(source.samples()) * 2, 0.5f);
-  if (source.multisampled()) readSamplePositions(source.framebuffer(), positions);
-  pass->order_ = spreadingSampleOrder(positions);
-  return pass;
-}
+class AdaptiveTechnique : public Technique {
+ public:
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
+    auto technique = std::make_unique<AdaptiveTechnique>();
+    AdaptiveTechnique& t = *technique;
+    const GBufferLayout& layout = context.layout;
+    const MsaaGBuffer& source = *shared.msaa;
+    t.stencilExport_ = context.capabilities.stencilExport;
+    auto geometry = context.shaders->program("common/fullscreen.vert", "adaptive/geometry_metric.frag",
+                                             source.shaderDefines(layout, false),
+                                             {RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan", "uDepthScale", "uNormalScale"});
+    if (!geometry) return geometry.error();
+    t.geometryProgram_ = std::move(geometry.value());
+    auto shading = context.shaders->program(
+        "common/fullscreen.vert", "adaptive/shading_metric.frag",
+        defineLine("SAMPLES", source.samples()) + defineLine("STENCIL_EXPORT", t.stencilExport_),
+        {"uShadingScale", "uThresholdMin", "uThresholdEdge", "uMinSamples"});
+    if (!shading) return shading.error();
+    t.shadingProgram_ = std::move(shading.value());
+    t.geometryK_ = makeTexture(context, GL_R16F, layout.width, layout.height, 0, "adaptive.geometry_k", t.bytes_);
+    t.geometryTarget_ = makeFramebuffer(context, "adaptive.geometry_k");
+    glNamedFramebufferTexture(t.geometryTarget_.get(), GL_COLOR_ATTACHMENT0, t.geometryK_.get(), 0);
+    if (Status status = checkFramebuffer(t.geometryTarget_.get(), "adaptive.geometry_k"); !status) return status.error();
 
-Status AdaptivePass::measureGeometry(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {
-  ScopedPass timed(context, "adaptive.geometry_metric");
-  const GBufferLayout& layout = context.layout;
-  const GLuint program = geometryProgram_.get();
-  context.beginFullscreenPass(geometryTarget_.get());
-  glUseProgram(program);
-  source.bind(layout);
-  setDepthEncodingUniforms(program, layout);
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
-  const float budget = float(context.budgetScale);  // 1 without a budget
-  glUniform1f(glGetUniformLocation(program, "uDepthScale"), context.config.adaptiveDepthScale * budget);
-  glUniform1f(glGetUniformLocation(program, "uNormalScale"), context.config.adaptiveNormalScale * budget);
-  context.drawFullscreen();
-  return Status::ok();
-}
+    // The driver's own sample positions decide the order (queried, not assumed).
+    std::vector<float> positions(size_t(source.samples()) * 2, 0.5f);
+    if (source.multisampled()) readSamplePositions(source.framebuffer(), positions);
+    t.order_ = spreadingSampleOrder(positions);
+    return std::unique_ptr<Technique>(std::move(technique));
+  }
 
-SliceRenderer::Plan AdaptivePass::plan(PluginContext& context, SliceRenderer& slices) {
-  SliceRenderer::Plan plan;
-  plan.sampleOrder = order_;
-  plan.firstSliceEverywhere = true;  // the paper lights one sample of every pixel first
-  plan.maskAfterFirstSlice = [this, &context, &slices]() {
-    ScopedPass timed(context, "adaptive.shading_metric");
-    const GLuint program = shadingProgram_.get();
-    glUseProgram(program);
-    glBindTextureUnit(0, slices.firstSliceLight());
-    glBindTextureUnit(2, geometryK_.get());
-    glUniform1f(glGetUniformLocation(program, "uShadingScale"), context.config.adaptiveShadingScale * float(context.budgetScale));
-    glUniform1f(glGetUniformLocation(program, "uThresholdMin"), context.config.adaptiveThresholdMin);
-    glUniform1f(glGetUniformLocation(program, "uThresholdEdge"), context.config.adaptiveThresholdEdge);
-    glUniform1i(glGetUniformLocation(program, "uMinSamples"), context.config.adaptiveMinSamples);
-    return slices.writeMask(context, program, stencilExport_);
-  };
-  return plan;
+  // The geometry metric, after the model pass.
+  Status afterResolve(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
+    ScopedPass timed(context, "adaptive.geometry_metric");
+    context.beginFullscreenPass(geometryTarget_.get());
+    geometryProgram_.use();
+    shared.msaa->bind(context.layout);
+    geometryProgram_.setDepthEncoding(context.layout);
+    geometryProgram_.set("uFootprintTan", context.footprintTan(frame));
+    const float budget = float(context.budgetScale);  // 1 without a budget
+    geometryProgram_.set("uDepthScale", context.config.adaptiveDepthScale * budget);
+    geometryProgram_.set("uNormalScale", context.config.adaptiveNormalScale * budget);
+    context.drawFullscreen();
+    return Status::ok();
+  }
+
+  // The shading metric on the lit first sample writes the counts (Holländer et al. light one sample
+  // of every pixel first).
+  SliceRenderer::Plan slicePlan(PluginContext& context, SharedTargets& shared) override {
+    SliceRenderer::Plan plan;
+    plan.sampleOrder = order_;
+    plan.firstSliceEverywhere = true;
+    SliceRenderer& slices = *shared.slices;
+    plan.maskAfterFirstSlice = [this, &context, &slices]() {
+      ScopedPass timed(context, "adaptive.shading_metric");
+      shadingProgram_.use();
+      glBindTextureUnit(0, slices.firstSliceLight());
+      glBindTextureUnit(2, geometryK_.get());
+      shadingProgram_.set("uShadingScale", context.config.adaptiveShadingScale * float(context.budgetScale));
+      shadingProgram_.set("uThresholdMin", context.config.adaptiveThresholdMin);
+      shadingProgram_.set("uThresholdEdge", context.config.adaptiveThresholdEdge);
+      shadingProgram_.set("uMinSamples", context.config.adaptiveMinSamples);
+      return slices.writeMask(context, shadingProgram_.get(), stencilExport_);
+    };
+    return plan;
+  }
+
+  bool followsBudget(const Config&) const override { return true; }
+  uint64_t bytes() const override { return bytes_; }
+  bool keepsObjectsFor(const Config&) const override { return true; }  // settings are uniforms
+
+ private:
+  ShaderProgram geometryProgram_, shadingProgram_;
+  GlTexture geometryK_;
+  GlFramebuffer geometryTarget_;
+  std::vector<int> order_;
+  bool stencilExport_ = false;
+  uint64_t bytes_ = 0;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<Technique>> createAdaptiveTechnique(PluginContext& context, SharedTargets& shared) {
+  return AdaptiveTechnique::create(context, shared);
 }
 
 }  // namespace retroaa

@@ -1,75 +1,110 @@
 // `aggregate` (Crassin et al., "Aggregate G-Buffer Anti-Aliasing", 2016) retrofitted: clustering and
 // aggregate attributes are computed from the MSAA G-buffer, and each aggregate is a slice the host's
-// unchanged lighting lights once.
+// unchanged lighting lights once, composited by the share of the pixel's samples it holds.
 #include <cmath>
 #include <string>
 
-#include "methods.h"
+#include "../shared_constants.h"
+#include "../technique.h"
 
 namespace retroaa {
 
-Result<std::unique_ptr<AggregatePass>> AggregatePass::create(PluginContext& context, const MsaaGBuffer& source,
-                                                             SliceRenderer& slices, bool stencilExport) {
-  auto pass = std::make_unique<AggregatePass>();
-  const GBufferLayout& layout = context.layout;
-  pass->stencilExport_ = stencilExport;
-  const int maxAggregates = std::min(context.config.aggregateCount, source.samples());
-  auto cluster = context.shaders->program(
-      "common/fullscreen.vert", "aggregate/cluster.frag",
-      source.shaderDefines(layout, false) + "#define MAX_AGGREGATES " + std::to_string(maxAggregates) +
-          "\n#define STENCIL_EXPORT " + (stencilExport ? "1" : "0") + "\n");
-  if (!cluster) return cluster.error();
-  pass->clusterProgram_ = std::move(cluster.value());
-  auto write = context.shaders->program("common/fullscreen.vert", "aggregate/write_aggregate.frag", source.shaderDefines(layout));
-  if (!write) return write.error();
-  pass->writeProgram_ = std::move(write.value());
+namespace {
 
-  pass->assignment_ = makeTexture(context, GL_RG32UI, layout.width, layout.height, 0, "aggregate.assignment", pass->bytes_);
-  pass->clusterTarget_ = makeFramebuffer(context, "aggregate.cluster");
-  const GLuint fbo = pass->clusterTarget_.get();
-  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, slices.counts(), 0);
-  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, pass->assignment_.get(), 0);
-  glNamedFramebufferTexture(fbo, GL_DEPTH_STENCIL_ATTACHMENT, slices.mask(), 0);
-  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(fbo, 2, drawBuffers);
-  if (Status status = checkFramebuffer(fbo, "aggregate.cluster"); !status) return status.error();
+class AggregateTechnique : public Technique {
+ public:
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
+    auto technique = std::make_unique<AggregateTechnique>();
+    AggregateTechnique& t = *technique;
+    const GBufferLayout& layout = context.layout;
+    const MsaaGBuffer& source = *shared.msaa;
+    t.stencilExport_ = context.capabilities.stencilExport;
+    t.aggregateCount_ = context.config.aggregateCount;
+    t.samples_ = source.samples();
+    auto cluster = context.shaders->program(
+        "common/fullscreen.vert", "aggregate/cluster.frag",
+        source.shaderDefines(layout, false) + defineLine("MAX_AGGREGATES", std::min(t.aggregateCount_, t.samples_)) +
+            defineLine("STENCIL_EXPORT", t.stencilExport_),
+        {RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan", "uLength", "uThreshold", "uSamplePositions"});
+    if (!cluster) return cluster.error();
+    t.clusterProgram_ = std::move(cluster.value());
+    auto write = context.shaders->program("common/fullscreen.vert", "aggregate/write_aggregate.frag",
+                                          source.shaderDefines(layout),
+                                          {RETROAA_DEPTH_ENCODING_UNIFORMS, "uSlice", "uHasGloss", "uGlossScale", "uGlossBias"});
+    if (!write) return write.error();
+    t.writeProgram_ = std::move(write.value());
+    auto composite = context.shaders->program("common/fullscreen.vert", "aggregate/composite_coverage.frag", "",
+                                              {"uSlice", "uSamples"});
+    if (!composite) return composite.error();
+    t.compositeProgram_ = std::move(composite.value());
 
-  pass->samplePositions_.assign(size_t(source.samples()) * 2, 0.5f);
-  if (source.multisampled()) readSamplePositions(source.framebuffer(), pass->samplePositions_);
-  return pass;
-}
+    t.assignment_ = makeTexture(context, GL_RG32UI, layout.width, layout.height, 0, "aggregate.assignment", t.bytes_);
+    t.clusterTarget_ = makeFramebuffer(context, "aggregate.cluster");
+    const GLuint fbo = t.clusterTarget_.get();
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, shared.slices->counts(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, t.assignment_.get(), 0);
+    glNamedFramebufferTexture(fbo, GL_DEPTH_STENCIL_ATTACHMENT, shared.slices->mask(), 0);
+    const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(fbo, 2, drawBuffers);
+    if (Status status = checkFramebuffer(fbo, "aggregate.cluster"); !status) return status.error();
 
-Status AggregatePass::cluster(PluginContext& context, const MsaaGBuffer& source, SliceRenderer& slices,
-                              const FrameInfo& frame) {
-  ScopedPass timed(context, "aggregate.cluster");
-  const GLuint program = clusterProgram_.get();
-  glUseProgram(program);
-  source.bind(context.layout);
-  setDepthEncodingUniforms(program, context.layout);
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
-  glUniform1f(glGetUniformLocation(program, "uLength"), context.config.aggregateLength);
-  glUniform1f(glGetUniformLocation(program, "uThreshold"), context.config.aggregateThreshold);
-  glUniform2fv(glGetUniformLocation(program, "uSamplePositions"), source.samples(), samplePositions_.data());
-  return slices.writeMask(context, program, stencilExport_, clusterTarget_.get());
-}
+    t.samplePositions_.assign(size_t(t.samples_) * 2, 0.5f);
+    if (source.multisampled()) readSamplePositions(source.framebuffer(), t.samplePositions_);
+    return std::unique_ptr<Technique>(std::move(technique));
+  }
 
-SliceRenderer::Plan AggregatePass::plan(PluginContext& context, const MsaaGBuffer& source) {
-  SliceRenderer::Plan plan;
-  plan.firstSliceEverywhere = true;  // aggregate 0 replaces the resolved value of every pixel
-  plan.sliceCount = std::min(context.config.aggregateCount, source.samples()) + 1;  // + background
-  plan.writeProgram = writeProgram_.get();
-  plan.coverageAssignment = assignment_.get();
-  const GlossEncoding gloss = context.layout.glossEncoding;
-  const GLuint program = writeProgram_.get();
-  const GBufferLayout& layout = context.layout;
-  plan.bindWriteInputs = [this, program, gloss, &layout]() {
-    glBindTextureUnit(14, assignment_.get());
-    setDepthEncodingUniforms(program, layout);
-    glUniform1i(glGetUniformLocation(program, "uHasGloss"), gloss.present ? 1 : 0);
-    glUniform1f(glGetUniformLocation(program, "uGlossScale"), gloss.log2ExponentScale);
-    glUniform1f(glGetUniformLocation(program, "uGlossBias"), gloss.log2ExponentBias);
-  };
-  return plan;
+  // Algorithm 1: the slice count (aggregates + background) and every sample's aggregate.
+  Status afterResolve(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
+    ScopedPass timed(context, "aggregate.cluster");
+    clusterProgram_.use();
+    shared.msaa->bind(context.layout);
+    clusterProgram_.setDepthEncoding(context.layout);
+    clusterProgram_.set("uFootprintTan", context.footprintTan(frame));
+    clusterProgram_.set("uLength", context.config.aggregateLength);
+    clusterProgram_.set("uThreshold", context.config.aggregateThreshold);
+    clusterProgram_.setVec2Array("uSamplePositions", samples_, samplePositions_.data());
+    return shared.slices->writeMask(context, clusterProgram_.get(), stencilExport_, clusterTarget_.get());
+  }
+
+  SliceRenderer::Plan slicePlan(PluginContext& context, SharedTargets&) override {
+    SliceRenderer::Plan plan;
+    plan.firstSliceEverywhere = true;  // aggregate 0 replaces the resolved value of every pixel
+    plan.sliceCount = std::min(aggregateCount_, samples_) + 1;  // + background
+    plan.writeProgram = &writeProgram_;
+    const GBufferLayout& layout = context.layout;
+    plan.bindWriteInputs = [this, &layout]() {
+      glBindTextureUnit(kUnitSliceWeights, assignment_.get());
+      writeProgram_.setDepthEncoding(layout);
+      writeProgram_.set("uHasGloss", layout.glossEncoding.present ? 1 : 0);
+      writeProgram_.set("uGlossScale", layout.glossEncoding.log2ExponentScale);
+      writeProgram_.set("uGlossBias", layout.glossEncoding.log2ExponentBias);
+    };
+    plan.compositeProgram = &compositeProgram_;
+    plan.bindCompositeInputs = [this]() {
+      glBindTextureUnit(kUnitSliceWeights, assignment_.get());
+      compositeProgram_.set("uSamples", samples_);
+    };
+    return plan;
+  }
+
+  uint64_t bytes() const override { return bytes_; }
+  bool keepsObjectsFor(const Config& config) const override { return config.aggregateCount == aggregateCount_; }
+
+ private:
+  ShaderProgram clusterProgram_, writeProgram_, compositeProgram_;
+  GlTexture assignment_;
+  GlFramebuffer clusterTarget_;
+  std::vector<float> samplePositions_;
+  int aggregateCount_ = 0;
+  int samples_ = 1;
+  bool stencilExport_ = false;
+  uint64_t bytes_ = 0;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<Technique>> createAggregateTechnique(PluginContext& context, SharedTargets& shared) {
+  return AggregateTechnique::create(context, shared);
 }
 
 }  // namespace retroaa

@@ -1,37 +1,63 @@
-// `edge` (Thibieroz) and `per-sample`: the per-pixel slice count from an edge detector.
+// `edge` (Thibieroz) and `per-sample`: the per-pixel slice count from an edge detector; per-sample's
+// detector marks every pixel. The slices light N samples where the count is N, with weights 1 / N.
 #include <cmath>
 #include <string>
 
-#include "methods.h"
+#include "../shared_constants.h"
+#include "../technique.h"
 
 namespace retroaa {
 
-Result<std::unique_ptr<EdgeMask>> EdgeMask::create(PluginContext& context, const MsaaGBuffer& source,
-                                                   EdgeDetector detector, bool stencilExport) {
-  auto mask = std::make_unique<EdgeMask>();
-  mask->detector_ = detector;
-  mask->stencilExport_ = stencilExport;
-  const std::string defines = source.shaderDefines(context.layout, false) +
-                              "#define EDGE_DETECTOR " + std::to_string(int(detector)) + "\n" +
-                              "#define STENCIL_EXPORT " + (stencilExport ? "1" : "0") + "\n";
-  auto program = context.shaders->program("common/fullscreen.vert", "edge/detect_edges.frag", defines);
-  if (!program) return program.error();
-  mask->program_ = std::move(program.value());
-  return mask;
+namespace {
+
+EdgeDetector detectorFor(const Config& config) {
+  return config.method == Method::PerSample ? EdgeDetector::EveryPixel : config.edgeDetector;
 }
 
-Status EdgeMask::run(PluginContext& context, const MsaaGBuffer& source, SliceRenderer& slices, const FrameInfo& frame) {
-  ScopedPass timed(context, "edge_mask");
-  const GLuint program = program_.get();
-  glUseProgram(program);
-  source.bind(context.layout);
-  setDepthEncodingUniforms(program, context.layout);
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
-  // A budget scale above 1 marks more pixels: a smaller closeness.
-  glUniform1f(glGetUniformLocation(program, "uDepthCloseness"), context.config.edgeDepthCloseness / float(context.budgetScale));
-  glUniform1f(glGetUniformLocation(program, "uNormalCosine"),
-              std::cos(context.config.edgeNormalAngleDegrees * 3.14159265f / 180.0f));
-  return slices.writeMask(context, program, stencilExport_);
+class EdgeTechnique : public Technique {
+ public:
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
+    auto technique = std::make_unique<EdgeTechnique>();
+    technique->detector_ = detectorFor(context.config);
+    technique->stencilExport_ = context.capabilities.stencilExport;
+    const std::string defines = shared.msaa->shaderDefines(context.layout, false) +
+                                defineLine("EDGE_DETECTOR", int(technique->detector_)) +
+                                defineLine("STENCIL_EXPORT", technique->stencilExport_);
+    auto program = context.shaders->program("common/fullscreen.vert", "edge/detect_edges.frag", defines,
+                                            {RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan", "uDepthCloseness", "uNormalCosine"});
+    if (!program) return program.error();
+    technique->program_ = std::move(program.value());
+    return std::unique_ptr<Technique>(std::move(technique));
+  }
+
+  Status afterResolve(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
+    ScopedPass timed(context, "edge_mask");
+    program_.use();
+    shared.msaa->bind(context.layout);
+    program_.setDepthEncoding(context.layout);
+    program_.set("uFootprintTan", context.footprintTan(frame));
+    // A budget scale above 1 marks more pixels: a smaller closeness.
+    program_.set("uDepthCloseness", context.config.edgeDepthCloseness / float(context.budgetScale));
+    program_.set("uNormalCosine", std::cos(context.config.edgeNormalAngleDegrees * 3.14159265f / 180.0f));
+    return shared.slices->writeMask(context, program_.get(), stencilExport_);
+  }
+
+  // The depth detector's closeness trades time for quality continuously.
+  bool followsBudget(const Config& config) const override {
+    return config.method == Method::Edge && config.edgeDetector == EdgeDetector::Depth;
+  }
+  bool keepsObjectsFor(const Config& config) const override { return detectorFor(config) == detector_; }
+
+ private:
+  ShaderProgram program_;
+  EdgeDetector detector_ = EdgeDetector::Coverage;
+  bool stencilExport_ = false;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<Technique>> createEdgeTechnique(PluginContext& context, SharedTargets& shared) {
+  return EdgeTechnique::create(context, shared);
 }
 
 }  // namespace retroaa

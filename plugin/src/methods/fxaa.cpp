@@ -1,11 +1,14 @@
-// `fxaa`: FXAA on the host's display target (shaders/fxaa/).
+// `fxaa`: Lottes' FXAA 3.11 (quality variant) on the tonemapped display target (shaders/fxaa/); as a
+// method, or stacked after any other (`fxaa=on`).
 #include <string>
 
-#include "methods.h"
+#include "../shared_constants.h"
+#include "../technique.h"
 
 namespace retroaa {
 
 namespace {
+
 int searchSteps(FxaaQuality quality) {
   switch (quality) {
     case FxaaQuality::Low: return 3;
@@ -14,32 +17,46 @@ int searchSteps(FxaaQuality quality) {
   }
   return 12;
 }
+
+class FxaaTechnique : public Technique {
+ public:
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets&) {
+    auto technique = std::make_unique<FxaaTechnique>();
+    technique->quality_ = context.config.fxaaQuality;
+    auto program = context.shaders->program(
+        "common/fullscreen.vert", "fxaa/fxaa.frag", defineLine("FXAA_SEARCH_STEPS", searchSteps(technique->quality_)),
+        {"uTexelSize", "uEdgeThreshold", "uEdgeThresholdMin", "uSubpixel"});
+    if (!program) return program.error();
+    technique->program_ = std::move(program.value());
+    return std::unique_ptr<Technique>(std::move(technique));
+  }
+
+  Status post(PluginContext& context, SharedTargets& shared, const FrameInfo&) override {
+    ScopedPass timed(context, "fxaa");
+    const GBufferLayout& layout = context.layout;
+    shared.post->bindAsOutput(context);
+    program_.use();
+    shared.post->bindInput(layout, 0);
+    program_.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
+    program_.set("uEdgeThreshold", context.config.fxaaEdgeThreshold);
+    program_.set("uEdgeThresholdMin", 0.0312f);
+    program_.set("uSubpixel", 0.75f);
+    context.drawFullscreen();
+    shared.post->copyBack(layout);
+    return Status::ok();
+  }
+
+  bool keepsObjectsFor(const Config& config) const override { return config.fxaaQuality == quality_; }
+
+ private:
+  ShaderProgram program_;
+  FxaaQuality quality_ = FxaaQuality::High;
+};
+
 }  // namespace
 
-Result<std::unique_ptr<FxaaPass>> FxaaPass::create(PluginContext& context) {
-  auto pass = std::make_unique<FxaaPass>();
-  Result<GlProgram> program =
-      context.shaders->program("common/fullscreen.vert", "fxaa/fxaa.frag",
-                               "#define FXAA_SEARCH_STEPS " + std::to_string(searchSteps(context.config.fxaaQuality)) + "\n");
-  if (!program) return program.error();
-  pass->program_ = std::move(program.value());
-  return pass;
-}
-
-Status FxaaPass::run(PluginContext& context, const PostTarget& post) {
-  ScopedPass timed(context, "fxaa");
-  const GBufferLayout& layout = context.layout;
-  const GLuint program = program_.get();
-  post.bindAsOutput(context);
-  glUseProgram(program);
-  post.bindInput(layout, 0);
-  glUniform2f(glGetUniformLocation(program, "uTexelSize"), 1.0f / layout.width, 1.0f / layout.height);
-  glUniform1f(glGetUniformLocation(program, "uEdgeThreshold"), context.config.fxaaEdgeThreshold);
-  glUniform1f(glGetUniformLocation(program, "uEdgeThresholdMin"), 0.0312f);
-  glUniform1f(glGetUniformLocation(program, "uSubpixel"), 0.75f);
-  context.drawFullscreen();
-  post.copyBack(layout);
-  return Status::ok();
+Result<std::unique_ptr<Technique>> createFxaaTechnique(PluginContext& context, SharedTargets& shared) {
+  return FxaaTechnique::create(context, shared);
 }
 
 }  // namespace retroaa

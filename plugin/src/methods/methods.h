@@ -1,5 +1,6 @@
-// The plugin's techniques. Each lives in one source file here and one folder of shaders/
-// (bgfx's one-technique-one-place); each owns its GL objects and frees them in its destructor.
+// The pieces every technique shares, which the plugin owns: the MSAA G-buffer, the resolve into the
+// host's G-buffer, the slice mechanism and the post target. The techniques themselves (technique.h)
+// live one per file beside this one, each with one folder of shaders/.
 #pragma once
 
 #include "../context.h"
@@ -24,7 +25,7 @@ class MsaaGBuffer {
   // The #defines shaders reading this G-buffer need (shaders/common/gbuffer.glsl): sample count,
   // attachment roles, depth encoding, and one output per host attachment with STORE_OUTPUTS(values).
   std::string shaderDefines(const GBufferLayout& layout, bool withOutputs = true) const;
-  // Binds attachment i to texture unit i and the depth-stencil to unit 15.
+  // Binds attachment i to texture unit i and the depth-stencil to kUnitDepthStencil.
   void bind(const GBufferLayout& layout) const;
   uint64_t bytes() const { return bytes_; }
 
@@ -38,8 +39,6 @@ class MsaaGBuffer {
   uint64_t bytes_ = 0;
 };
 
-void setDepthEncodingUniforms(GLuint program, const GBufferLayout& layout);
-
 // `resolve`: the depth-aware resolve of Magnussen (and FreeSpace Open's variant) from the MSAA
 // G-buffer into the host's single-sample G-buffer and depth.
 class ResolvePass {
@@ -48,7 +47,7 @@ class ResolvePass {
   Status run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
 
  private:
-  GlProgram program_;
+  ShaderProgram program_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
 };
 
@@ -75,11 +74,14 @@ class SliceRenderer {
     // sample to choose its counts writes the mask here (writeMask). Empty: the mask is already there.
     std::function<Status()> maskAfterFirstSlice;
     int sliceCount = 0;  // most slices a pixel may need (0: the sample count)
-    // A method's own slice writer (0: sample sampleOrder[s] verbatim). It gets uniform `uSlice`;
-    // `bindWriteInputs` binds what else it reads.
-    GLuint writeProgram = 0;
+    // A technique's own slice writer (null: sample sampleOrder[s] verbatim). It is given uniform
+    // `uSlice` and the G-buffer; `bindWriteInputs` binds and sets what else it reads.
+    const ShaderProgram* writeProgram = nullptr;
     std::function<void()> bindWriteInputs;
-    GLuint coverageAssignment = 0;  // non-zero: composite weights from this per-sample slice index texture
+    // A technique's own composite weights (null: 1 / count). It is given uniform `uSlice`, the slice's
+    // light on unit 0 and the counts on unit 1; `bindCompositeInputs` binds the rest.
+    const ShaderProgram* compositeProgram = nullptr;
+    std::function<void()> bindCompositeInputs;
   };
   // Lights every slice through `lighting` and composites (weight 1 / count). Counts evaluations with
   // occlusion queries.
@@ -91,63 +93,9 @@ class SliceRenderer {
  private:
   GlTexture light_, mask_, counts_;
   GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
-  GlProgram writeSlice_, composite_, markPixels_;
+  ShaderProgram writeSlice_, composite_, markPixels_;
   GlQuery pixelsQuery_;
   int maxCount_ = 1;
-  uint64_t bytes_ = 0;
-};
-
-// The edge mask of `edge` and `per-sample` (the latter marks every pixel).
-class EdgeMask {
- public:
-  static Result<std::unique_ptr<EdgeMask>> create(PluginContext& context, const MsaaGBuffer& source,
-                                                  EdgeDetector detector, bool stencilExport);
-  Status run(PluginContext& context, const MsaaGBuffer& source, SliceRenderer& slices, const FrameInfo& frame);
-  EdgeDetector detector() const { return detector_; }
-
- private:
-  GlProgram program_;
-  EdgeDetector detector_ = EdgeDetector::Coverage;
-  bool stencilExport_ = false;
-};
-
-// `adaptive` (Holländer et al.): a geometry metric before lighting, a shading metric on the lit first
-// sample, k samples per pixel taken in an order that spreads them over the pixel.
-class AdaptivePass {
- public:
-  static Result<std::unique_ptr<AdaptivePass>> create(PluginContext& context, const MsaaGBuffer& source,
-                                                      bool stencilExport);
-  // The geometry metric, after the model pass.
-  Status measureGeometry(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
-  SliceRenderer::Plan plan(PluginContext& context, SliceRenderer& slices);
-  const std::vector<int>& sampleOrder() const { return order_; }
-  uint64_t bytes() const { return bytes_; }
-
- private:
-  GlProgram geometryProgram_, shadingProgram_;
-  GlTexture geometryK_;
-  GlFramebuffer geometryTarget_;
-  std::vector<int> order_;
-  bool stencilExport_ = false;
-  uint64_t bytes_ = 0;
-};
-
-// `aggregate` (Crassin et al., AGAA): samples clustered into ≤ c aggregates per pixel (Algorithm 1),
-// each aggregate's mean attributes one slice, composited by coverage.
-class AggregatePass {
- public:
-  static Result<std::unique_ptr<AggregatePass>> create(PluginContext& context, const MsaaGBuffer& source,
-                                                       SliceRenderer& slices, bool stencilExport);
-  Status cluster(PluginContext& context, const MsaaGBuffer& source, SliceRenderer& slices, const FrameInfo& frame);
-  SliceRenderer::Plan plan(PluginContext& context, const MsaaGBuffer& source);
-  uint64_t bytes() const { return bytes_; }
-
- private:
-  GlProgram clusterProgram_, writeProgram_;
-  GlTexture assignment_;
-  GlFramebuffer clusterTarget_;
-  std::vector<float> samplePositions_;
-  bool stencilExport_ = false;
   uint64_t bytes_ = 0;
 };
 
@@ -170,37 +118,6 @@ class PostTarget {
   GlFramebuffer framebuffer_;
   GlSampler linear_;
   uint64_t bytes_ = 0;
-};
-
-// `coverage` (Pettineo, "Deferred MSAA"): the host's models once more into a multisampled depth
-// buffer (or, stacked on `resolve`, the G-buffer's own), and a filter after tonemapping.
-class CoveragePass {
- public:
-  // `resolveDepth`: the MSAA G-buffer to reuse; null allocates a depth-only target for the prepass.
-  static Result<std::unique_ptr<CoveragePass>> create(PluginContext& context, const MsaaGBuffer* resolveDepth, int samples);
-  GLuint prepassFramebuffer() const { return prepass_.get(); }  // 0 when reusing the G-buffer's depth
-  int samples() const { return samples_; }
-  Status run(PluginContext& context, const PostTarget& post, const FrameInfo& frame);
-  uint64_t bytes() const { return bytes_; }
-
- private:
-  GlProgram program_;
-  GlTexture depth_;
-  GlFramebuffer prepass_;
-  GLuint sampleDepth_ = 0;  // the multisampled depth the filter reads
-  std::vector<float> samplePositions_;
-  int samples_ = 1;
-  uint64_t bytes_ = 0;
-};
-
-// `fxaa`: Lottes' FXAA 3.11 (quality variant) on the tonemapped display target.
-class FxaaPass {
- public:
-  static Result<std::unique_ptr<FxaaPass>> create(PluginContext& context);
-  Status run(PluginContext& context, const PostTarget& post);
-
- private:
-  GlProgram program_;
 };
 
 }  // namespace retroaa

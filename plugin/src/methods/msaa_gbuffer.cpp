@@ -1,5 +1,7 @@
 #include "methods.h"
 
+#include "../shared_constants.h"
+
 #include <algorithm>
 #include <string>
 
@@ -45,17 +47,14 @@ int findRole(const GBufferLayout& layout, AttachmentRole role) {
 
 std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOutputs) const {
   const size_t count = layout.attachments.size();
-  std::string d;
-  d += "#define SAMPLES " + std::to_string(samples_) + "\n";
-  d += "#define MULTISAMPLED " + std::string(multisampled() ? "1" : "0") + "\n";
-  d += "#define ATTACHMENT_COUNT " + std::to_string(count) + "\n";
-  d += "#define POSITION_ATTACHMENT " + std::to_string(findRole(layout, AttachmentRole::ViewPosition)) + "\n";
-  d += "#define NORMAL_ATTACHMENT " + std::to_string(findRole(layout, AttachmentRole::NormalGloss)) + "\n";
-  d += "#define ALBEDO_ATTACHMENT " + std::to_string(findRole(layout, AttachmentRole::Albedo)) + "\n";
-  d += "#define SPECULAR_ATTACHMENT " + std::to_string(findRole(layout, AttachmentRole::Specular)) + "\n";
-  d += "#define DEPTH_CHANNEL " + std::to_string(layout.depthChannel) + "\n";
-  d += "#define DEPTH_ENCODING " +
-       std::string(layout.depthEncoding.kind == DepthEncoding::Kind::LogAboveKnee ? "1" : "0") + "\n";
+  std::string d = defineLine("SAMPLES", samples_) + defineLine("MULTISAMPLED", multisampled()) +
+                  defineLine("ATTACHMENT_COUNT", int(count)) +
+                  defineLine("POSITION_ATTACHMENT", findRole(layout, AttachmentRole::ViewPosition)) +
+                  defineLine("NORMAL_ATTACHMENT", findRole(layout, AttachmentRole::NormalGloss)) +
+                  defineLine("ALBEDO_ATTACHMENT", findRole(layout, AttachmentRole::Albedo)) +
+                  defineLine("SPECULAR_ATTACHMENT", findRole(layout, AttachmentRole::Specular)) +
+                  defineLine("DEPTH_CHANNEL", layout.depthChannel) +
+                  defineLine("DEPTH_ENCODING", layout.depthEncoding.kind == DepthEncoding::Kind::LogAboveKnee);
   std::string store = "#define STORE_OUTPUTS(v)";
   for (size_t i = 0; i < count && withOutputs; ++i) {
     d += "layout(location = " + std::to_string(i) + ") out vec4 out" + std::to_string(i) + ";\n";
@@ -66,12 +65,7 @@ std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOut
 
 void MsaaGBuffer::bind(const GBufferLayout& layout) const {
   for (size_t i = 0; i < layout.attachments.size(); ++i) glBindTextureUnit(GLuint(i), attachment(i));
-  glBindTextureUnit(15, depthStencil());
-}
-
-void setDepthEncodingUniforms(GLuint program, const GBufferLayout& layout) {
-  glUniform1f(glGetUniformLocation(program, "uDepthKnee"), layout.depthEncoding.knee);
-  glUniform1f(glGetUniformLocation(program, "uBackgroundAbove"), layout.depthEncoding.backgroundAbove);
+  glBindTextureUnit(kUnitDepthStencil, depthStencil());
 }
 
 }  // namespace retroaa

@@ -5,12 +5,12 @@
 
 namespace retroaa {
 
-
 Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context, const MsaaGBuffer& source) {
   auto pass = std::make_unique<ResolvePass>();
   const GBufferLayout& layout = context.layout;
-  Result<GlProgram> program =
-      context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag", source.shaderDefines(layout));
+  Result<ShaderProgram> program =
+      context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag", source.shaderDefines(layout),
+                               {RETROAA_DEPTH_ENCODING_UNIFORMS, "uWeighting", "uFootprintTan", "uFsoFootprintTan", "uCloseness"});
   if (!program) return program.error();
   pass->program_ = std::move(program.value());
 
@@ -32,19 +32,17 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
 Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {
   ScopedPass timed(context, "resolve");
   const GBufferLayout& layout = context.layout;
-  const GLuint program = program_.get();
   context.beginFullscreenPass(hostTarget_.get());
   glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
-  glUseProgram(program);
+  program_.use();
   source.bind(layout);
-  glUniform1i(glGetUniformLocation(program, "uWeighting"), int(context.config.resolveWeighting));
-  glUniform1f(glGetUniformLocation(program, "uFootprintTan"), context.footprintTan(frame));
-  glUniform1f(glGetUniformLocation(program, "uFsoFootprintTan"),
-              std::tan(frame.horizontalFovRadians / float(layout.height)));
-  glUniform1f(glGetUniformLocation(program, "uCloseness"), context.config.closeness);
-  setDepthEncodingUniforms(program, layout);
+  program_.set("uWeighting", int(context.config.resolveWeighting));
+  program_.set("uFootprintTan", context.footprintTan(frame));
+  program_.set("uFsoFootprintTan", std::tan(frame.horizontalFovRadians / float(layout.height)));
+  program_.set("uCloseness", context.config.closeness);
+  program_.setDepthEncoding(layout);
   context.drawFullscreen();
   return Status::ok();
 }

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "../gl_state.h"
+#include "../shared_constants.h"
 #include "methods.h"
 
 namespace retroaa {
@@ -46,13 +47,14 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
                                    {slices->compositeTarget_.get(), "slices.composite"}, {slices->sliceWriter_.get(), "slices.writer"}})
     if (Status status = checkFramebuffer(fbo, label); !status) return status.error();
 
-  auto writeSlice = context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag", source.shaderDefines(layout));
+  auto writeSlice = context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag", source.shaderDefines(layout),
+                                             {RETROAA_DEPTH_ENCODING_UNIFORMS, "uSample"});
   if (!writeSlice) return writeSlice.error();
   slices->writeSlice_ = std::move(writeSlice.value());
   auto composite = context.shaders->program("common/fullscreen.vert", "slices/composite.frag");
   if (!composite) return composite.error();
   slices->composite_ = std::move(composite.value());
-  auto mark = context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag");
+  auto mark = context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uAtLeast"});
   if (!mark) return mark.error();
   slices->markPixels_ = std::move(mark.value());
   GLuint query = 0;
@@ -78,10 +80,10 @@ Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool
     // every pixel whose count is at least j. Each pass reads one byte per pixel.
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-    glUseProgram(markPixels_.get());
+    markPixels_.use();
     glBindTextureUnit(1, counts_.get());
     for (int j = 1; j <= maxCount_; ++j) {
-      glUniform1i(glGetUniformLocation(markPixels_.get(), "uAtLeast"), j);
+      markPixels_.set("uAtLeast", j);
       context.drawFullscreen();
     }
   }
@@ -105,15 +107,15 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       context.beginFullscreenPass(sliceWriter_.get());
       if (slice == 0 && !plan.firstSliceEverywhere) stencilPassWhereCountAbove(1); else sliceStencil(slice);
       if (plan.writeProgram) {
-        glUseProgram(plan.writeProgram);
+        plan.writeProgram->use();
         source.bind(layout);
         if (plan.bindWriteInputs) plan.bindWriteInputs();
-        glUniform1i(glGetUniformLocation(plan.writeProgram, "uSlice"), slice);
+        plan.writeProgram->set("uSlice", slice);
       } else {
-        glUseProgram(writeSlice_.get());
+        writeSlice_.use();
         source.bind(layout);
-        setDepthEncodingUniforms(writeSlice_.get(), layout);
-        glUniform1i(glGetUniformLocation(writeSlice_.get(), "uSample"), sampleOf(slice));
+        writeSlice_.setDepthEncoding(layout);
+        writeSlice_.set("uSample", sampleOf(slice));
       }
       context.drawFullscreen();
 
@@ -121,9 +123,9 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       glBindFramebuffer(GL_FRAMEBUFFER, lightTarget_.get());
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
       sliceStencil(slice);
-      glUseProgram(markPixels_.get());
+      markPixels_.use();
       glBindTextureUnit(1, counts_.get());
-      glUniform1i(glGetUniformLocation(markPixels_.get(), "uAtLeast"), 0);
+      markPixels_.set("uAtLeast", 0);
       glBeginQuery(GL_SAMPLES_PASSED, pixelsQuery_.get());
       context.drawFullscreen();
       glEndQuery(GL_SAMPLES_PASSED);
@@ -149,13 +151,15 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
       }
-      glUseProgram(composite_.get());
       glBindTextureUnit(0, light_.get());
       glBindTextureUnit(1, counts_.get());
-      glBindTextureUnit(14, plan.coverageAssignment);
-      glUniform1i(glGetUniformLocation(composite_.get(), "uSlice"), slice);
-      glUniform1i(glGetUniformLocation(composite_.get(), "uCoverageWeights"), plan.coverageAssignment ? 1 : 0);
-      glUniform1i(glGetUniformLocation(composite_.get(), "uSamples"), source.samples());
+      if (plan.compositeProgram) {
+        plan.compositeProgram->use();
+        if (plan.bindCompositeInputs) plan.bindCompositeInputs();
+        plan.compositeProgram->set("uSlice", slice);
+      } else {
+        composite_.use();
+      }
       context.drawFullscreen();
     }
   }

@@ -1,0 +1,85 @@
+// The method registry: one row per method. Adding a method is one file in methods/ (a Technique and
+// its factory), one folder of shaders/, the enum value in config.h and one row here (DESIGN in
+// docs/architecture.md). Everything else (config parsing, `retroaa config`, the tools' method lists,
+// what the plugin allocates) reads this table.
+#include "technique.h"
+
+namespace retroaa {
+
+// The factories, each defined in its technique's file.
+Result<std::unique_ptr<Technique>> createFxaaTechnique(PluginContext&, SharedTargets&);
+Result<std::unique_ptr<Technique>> createEdgeTechnique(PluginContext&, SharedTargets&);
+Result<std::unique_ptr<Technique>> createAdaptiveTechnique(PluginContext&, SharedTargets&);
+Result<std::unique_ptr<Technique>> createAggregateTechnique(PluginContext&, SharedTargets&);
+Result<std::unique_ptr<Technique>> createCoverageTechnique(PluginContext&, SharedTargets&);
+
+namespace {
+
+constexpr uint32_t kSliced = kStorageMsaaGBuffer | kStorageSlices;
+
+std::vector<TechniqueRow>& rows() {
+  static std::vector<TechniqueRow> table = {
+      {{Method::Off, "off", "the host's stock single-sample path; the plugin holds nothing", false, 1, "off", "off", "off"},
+       kStorageNone, nullptr},
+      {{Method::Fxaa, "fxaa", "FXAA 3.11 after tonemapping (FreeSpace Open's default AA)", false, 1, "fxaa", "fxaa",
+        "fxaa@fxaa_quality=low,fxaa"},
+       kStoragePostTarget, createFxaaTechnique,
+       [](const Config& c) { return c.fxaa; }, kStoragePostTarget, /*postLast=*/true},
+      {{Method::Resolve, "resolve", "MSAA G-buffer and a depth-aware resolve into the host's G-buffer", true, 1,
+        "resolve,resolve/front,resolve/back,resolve/fso,resolve/mean,resolve+fxaa", "resolve",
+        "resolve@samples=2,resolve,resolve@samples=8,resolve/fso,resolve+fxaa,resolve+coverage"},
+       kStorageMsaaGBuffer, nullptr},
+      {{Method::Coverage, "coverage", "depth-only MSAA prepass and a coverage filter after tonemapping", true, 2,
+        "coverage,resolve+coverage", "resolve+coverage", "coverage"},
+       kStoragePostTarget, createCoverageTechnique,
+       [](const Config& c) { return c.coverageFilter && usesMsaa(c.method); }, kStoragePostTarget},
+      {{Method::Edge, "edge", "edge pixels (a detector decides) lit once per sample through slices", true, 1, "edge",
+        "edge", "edge@samples=2,edge,edge@samples=8,edge@edge_detector=plane"},
+       kSliced, createEdgeTechnique},
+      {{Method::Adaptive, "adaptive", "Holländer's metrics choose k samples per pixel, lit through slices", true, 1,
+        "adaptive", "adaptive",
+        "adaptive@adaptive_shading_scale=0.5,adaptive,adaptive@adaptive_shading_scale=8"},
+       kSliced, createAdaptiveTechnique},
+      {{Method::Aggregate, "aggregate", "AGAA's clustering: at most c aggregates per pixel, each lit once", true, 1,
+        "aggregate", "aggregate", "aggregate@aggregate_count=1,aggregate,aggregate@aggregate_count=3"},
+       kSliced, createAggregateTechnique},
+      {{Method::PerSample, "per-sample", "every sample lit through slices: the quality reference at rate N", true, 1,
+        "per-sample", "per-sample", "per-sample@samples=2,per-sample,per-sample@samples=8"},
+       kSliced, createEdgeTechnique},
+  };
+  return table;
+}
+
+}  // namespace
+
+const std::vector<TechniqueRow>& techniqueRegistry() { return rows(); }
+
+const TechniqueRow* findTechnique(Method method) {
+  for (const TechniqueRow& row : rows())
+    if (row.info.method == method) return &row;
+  return nullptr;
+}
+
+void registerTechnique(const TechniqueRow& row) { rows().push_back(row); }
+
+const std::vector<MethodInfo>& methodTable() {
+  // Rebuilt when a row is registered; the rows are few.
+  static std::vector<MethodInfo> infos;
+  if (infos.size() != rows().size()) {
+    infos.clear();
+    for (const TechniqueRow& row : rows()) infos.push_back(row.info);
+  }
+  return infos;
+}
+
+const MethodInfo* findMethod(Method method) {
+  const TechniqueRow* row = findTechnique(method);
+  return row ? &row->info : nullptr;
+}
+
+bool usesMsaa(Method method) {
+  const TechniqueRow* row = findTechnique(method);
+  return row && (row->storage & kStorageMsaaGBuffer);
+}
+
+}  // namespace retroaa

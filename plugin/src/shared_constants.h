@@ -1,0 +1,24 @@
+// The numbers C++ and GLSL must agree on: texture units, enum values, limits. The shader library
+// prepends every one as `#define NAME value` to every program it builds, so no shader numbers them
+// by hand and a renumbered enum reaches the shaders by itself.
+#pragma once
+
+#include <string>
+
+namespace retroaa {
+
+// Texture units with a fixed meaning across passes. G-buffer attachment i is bound to unit i (≤ 8).
+constexpr int kUnitSliceWeights = 14;  // a technique's per-pixel input to the slice composite
+constexpr int kUnitDepthStencil = 15;  // the MSAA G-buffer's depth-stencil
+constexpr int kMaxAttachments = 8;
+constexpr int kMaxSamples = 16;     // the largest `samples` the config accepts
+constexpr unsigned kNoSlice = 15u;  // a sample no slice lights (aggregate assignments: 4 bits per sample)
+
+// "#define NAME value\n" for every shared constant and every enum value a shader compares against
+// (WEIGHTING_*, DETECTOR_*), generated from the C++ enums themselves.
+const std::string& sharedConstantDefines();
+
+// "#define NAME value\n".
+std::string defineLine(const char* name, long long value);
+
+}  // namespace retroaa

@@ -1,0 +1,70 @@
+// A technique: what one method (or one stackable post filter) adds to the shared pieces. Each lives
+// in one file of methods/ and one folder of shaders/, and is one row of the registry (registry.cpp).
+// The plugin owns the shared pieces (MSAA G-buffer, resolve, slices, post target), allocates what
+// the active rows ask for, and calls every active technique at the points below.
+#pragma once
+
+#include "methods/methods.h"
+
+#include <memory>
+#include <vector>
+
+namespace retroaa {
+
+// The shared pieces of the running config; null where no active row asks for them.
+struct SharedTargets {
+  MsaaGBuffer* msaa = nullptr;
+  SliceRenderer* slices = nullptr;
+  PostTarget* post = nullptr;
+};
+
+class Technique {
+ public:
+  virtual ~Technique() = default;
+  // After the resolve into the host's G-buffer, before lighting (e.g. writing the slice mask).
+  virtual Status afterResolve(PluginContext&, SharedTargets&, const FrameInfo&) { return Status::ok(); }
+  // How the slices light this method (techniques whose row asks for slices). Default: 1 / count
+  // weights, sample s in slice s.
+  virtual SliceRenderer::Plan slicePlan(PluginContext&, SharedTargets&) { return {}; }
+  // After the host's tonemap, on the post target (techniques whose row asks for it).
+  virtual Status post(PluginContext&, SharedTargets&, const FrameInfo&) { return Status::ok(); }
+  // A multisampled depth-only framebuffer the host draws its models into once more (0: none).
+  virtual GLuint prepassFramebuffer() const { return 0; }
+  // Samples of storage the technique holds itself (0: none; the MSAA G-buffer's count otherwise).
+  virtual int samples() const { return 0; }
+  // Whether budget_ms can steer this technique under `config` (through PluginContext::budgetScale).
+  virtual bool followsBudget(const Config&) const { return false; }
+  virtual uint64_t bytes() const { return 0; }
+  // Whether the GL objects built for the config it was created under still serve `config`; if not,
+  // the plugin rebuilds the technique. (A new sample count or layout rebuilds every technique.)
+  virtual bool keepsObjectsFor(const Config& config) const = 0;
+};
+
+// What a row needs of the shared pieces (slices imply the MSAA G-buffer).
+enum Storage : uint32_t {
+  kStorageNone = 0,
+  kStorageMsaaGBuffer = 1u << 0,
+  kStorageSlices = 1u << 1,
+  kStoragePostTarget = 1u << 2,
+};
+
+using TechniqueFactory = Result<std::unique_ptr<Technique>> (*)(PluginContext&, SharedTargets&);
+
+struct TechniqueRow {
+  MethodInfo info;   // name, summary, what tools measure (config.h)
+  uint32_t storage;  // Storage bits when this row is the config's method
+  TechniqueFactory create;  // null: the shared pieces do all of it
+  // Non-null: the row is also active on top of another method when this says so (+fxaa,
+  // +coverage), needing `stackedStorage` then.
+  bool (*stackedOn)(const Config&) = nullptr;
+  uint32_t stackedStorage = kStorageNone;
+  bool postLast = false;  // its post pass runs after every other active technique's
+};
+
+// Every method, in the order listings use.
+const std::vector<TechniqueRow>& techniqueRegistry();
+const TechniqueRow* findTechnique(Method method);
+// Adds a row (tests: a technique that lives in a test file). Not thread-safe; before any plugin exists.
+void registerTechnique(const TechniqueRow& row);
+
+}  // namespace retroaa
