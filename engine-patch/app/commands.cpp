@@ -124,17 +124,18 @@ MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base)
 
 std::vector<std::string> expandMethodList(const std::string& list) {
   std::vector<std::string> out;
+  auto add = [&out](const std::string& items) {
+    std::stringstream in(items);
+    for (std::string item; std::getline(in, item, ',');)
+      if (!item.empty()) out.push_back(item);
+  };
   std::stringstream in(list);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    if (item == "all") {
-      for (const char* m : {"off", "fxaa", "resolve", "resolve/front", "resolve/back", "resolve/fso",
-                            "resolve/mean", "resolve+fxaa", "coverage", "resolve+coverage", "edge", "adaptive", "aggregate",
-                            "per-sample"})
-        out.push_back(m);
-    } else if (!item.empty()) {
-      out.push_back(item);
-    }
+  for (std::string item; std::getline(in, item, ',');) {
+    if (item == "all" || item == "each" || item == "grid")
+      for (const retroaa::MethodInfo& row : retroaa::methodTable())
+        add(item == "all" ? row.sweepSpecs : item == "each" ? row.regressSpec : row.tuneSpecs);
+    else
+      add(item);
   }
   return out;
 }

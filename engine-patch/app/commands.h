@@ -22,7 +22,8 @@ struct MethodSpec {
 };
 // Throws std::invalid_argument naming the bad part.
 MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base);
-// "all" expands to every method the plugin offers, with the resolve weightings and stacking.
+// Keywords expand from the plugin's method registry: "all" to every method with its variants (resolve
+// weightings, stacking), "each" to one spec per method, "grid" to the settings `tune` searches.
 std::vector<std::string> expandMethodList(const std::string& list);
 
 struct RenderOptions {

@@ -12,7 +12,7 @@ namespace app {
 
 struct RegressOptions {
   std::vector<std::string> scenes;  // empty: the five recorded scenes of integration-tests/scenes
-  std::string methods = "off,fxaa,resolve,resolve+coverage,edge,adaptive,aggregate,per-sample";
+  std::string methods = "each";  // one spec per method (expandMethodList)
   retroaa::Config base;
   int width = 240, height = 180;
   int groundTruthSamples = 6;  // per axis

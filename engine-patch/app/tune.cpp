@@ -21,13 +21,6 @@ namespace {
 
 using nlohmann::json;
 
-// The search grid: every method and the settings that move it along the cost/quality curve.
-const char* kDefaultCandidates =
-    "off,fxaa@fxaa_quality=low,fxaa,resolve@samples=2,resolve,resolve@samples=8,resolve/fso,resolve+fxaa,resolve+coverage,"
-    "coverage,edge@samples=2,edge,edge@samples=8,edge@edge_detector=plane,adaptive@adaptive_shading_scale=0.5,adaptive,"
-    "adaptive@adaptive_shading_scale=8,aggregate@aggregate_count=1,aggregate,aggregate@aggregate_count=3,per-sample@samples=2,"
-    "per-sample,per-sample@samples=8";
-
 double worstFrame(const TunePoint& point, const std::string& metric) {
   double worst = std::numeric_limits<double>::infinity();
   for (const auto& frame : point.frames) worst = std::min(worst, frame.at(metric));
@@ -90,7 +83,7 @@ int runTune(const TuneOptions& options) {
   if (options.targets.empty()) throw std::invalid_argument("tune needs at least one --target (e.g. edge_psnr=35)");
   if (options.cost != "evals" && options.cost != "gpu_ms" && options.cost != "memory")
     throw std::invalid_argument("--cost must be evals, gpu_ms or memory, got '" + options.cost + "'");
-  const std::vector<std::string> specs = expandMethodList(options.candidates.empty() ? kDefaultCandidates : options.candidates);
+  const std::vector<std::string> specs = expandMethodList(options.candidates.empty() ? "grid" : options.candidates);
   json cache = json::object();
   if (std::ifstream in(options.cache); in) cache = json::parse(in, nullptr, false);
   if (cache.is_discarded()) cache = json::object();

@@ -249,6 +249,29 @@ const std::vector<ConfigKey>& configKeys() {
   return keys;
 }
 
+std::string readSetting(const Config& config, const std::string& key) {
+  for (const Setter& s : setters())
+    if (key == s.key.name) return s.read(config);
+  return "";
+}
+
+std::vector<std::string> settingValues(const std::string& key) {
+  std::vector<std::string> values;
+  if (key == "method") {
+    for (const MethodInfo& row : methodTable()) values.push_back(row.name);
+    return values;
+  }
+  for (const Setter& s : setters()) {
+    if (key != s.key.name) continue;
+    const std::string allowed = s.key.allowed;
+    if (allowed.find("..") != std::string::npos || allowed.find(' ') == std::string::npos || allowed.find(',') == std::string::npos)
+      return values;  // a range or a folder
+    std::istringstream in(allowed);
+    for (std::string value; std::getline(in, value, ',');) values.push_back(trim(value));
+  }
+  return values;
+}
+
 Status applySetting(Config& config, const std::string& key, const std::string& value) {
   std::string known;
   for (const Setter& s : setters()) {

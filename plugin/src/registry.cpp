@@ -73,8 +73,9 @@ const std::vector<MethodInfo>& methodTable() {
 }
 
 const MethodInfo* findMethod(Method method) {
-  const TechniqueRow* row = findTechnique(method);
-  return row ? &row->info : nullptr;
+  for (const MethodInfo& info : methodTable())
+    if (info.method == method) return &info;
+  return nullptr;
 }
 
 bool usesMsaa(Method method) {

@@ -149,3 +149,32 @@ TEST(BudgetController, IgnoresNonsenseAndStaysInBounds) {
   for (int i = 0; i < 500; ++i) controller.update(0.0);
   EXPECT_DOUBLE_EQ(controller.scale(), BudgetController::kMaxScale);
 }
+
+TEST(Config, EnumeratedKeysListTheirValuesAndReadBack) {
+  const std::vector<std::string> weightings = settingValues("resolve_weighting");
+  ASSERT_EQ(weightings.size(), 5u);
+  for (const std::string& value : weightings) {
+    Config config;
+    ASSERT_TRUE(applySetting(config, "resolve_weighting", value)) << value;
+    EXPECT_EQ(readSetting(config, "resolve_weighting"), value);
+  }
+  EXPECT_EQ(settingValues("samples"), (std::vector<std::string>{"1", "2", "4", "8", "16"}));
+  EXPECT_EQ(settingValues("fxaa"), (std::vector<std::string>{"on", "off"}));
+  EXPECT_EQ(settingValues("method").size(), methodTable().size());
+  EXPECT_TRUE(settingValues("closeness").empty());
+  EXPECT_TRUE(settingValues("shader_override_dir").empty());
+  EXPECT_TRUE(settingValues("no_such_key").empty());
+  EXPECT_EQ(readSetting(Config{}, "no_such_key"), "");
+}
+
+TEST(Config, ValidationRefusesWhatTheParserRefusesAndNothingElse) {
+  Config config;
+  EXPECT_TRUE(validateConfig(config));
+  config.closeness = 100.0f;  // the range's end is inside
+  EXPECT_TRUE(validateConfig(config));
+  config.closeness = 100.001f;
+  const Status status = validateConfig(config);
+  ASSERT_FALSE(status);
+  EXPECT_EQ(status.error().code, ErrorCode::InvalidConfig);
+  EXPECT_NE(status.error().message.find("'closeness'"), std::string::npos) << status.error().message;
+}

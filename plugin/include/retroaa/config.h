@@ -138,6 +138,11 @@ const char* toString(ResolveWeighting weighting);
 const char* toString(FxaaQuality quality);
 const char* toString(EdgeDetector detector);
 
+// The value of one key as toConfigText writes it; empty for an unknown key.
+std::string readSetting(const Config& config, const std::string& key);
+// The values a key with a fixed set allows, in order (method, samples, resolve_weighting, ...; on/off
+// switches); empty for numeric ranges and folders. UIs cycle and list these.
+std::vector<std::string> settingValues(const std::string& key);
 // Sets one key; unknown keys and bad values are errors naming the key, the value and what is allowed.
 Status applySetting(Config& config, const std::string& key, const std::string& value);
 // `key=value` lines; '#' starts a comment. Errors name the source and line.

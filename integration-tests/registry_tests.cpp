@@ -1,0 +1,256 @@
+// The method registry and the plugin's error contract: a technique added as one file plus one
+// registry row runs through every layer (config, tools, plugin); every error code the headers list is
+// provoked here.
+#include "commands.h"
+#include "shared_constants.h"
+#include "technique.h"
+#include "test_support.h"
+
+#include <epoxy/egl.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+using namespace testing_support;
+
+namespace {
+
+// --- A test-only technique: this block and the one registry row below are all it takes. ---------
+// `test-every-pixel` lights every sample of every pixel through the slices with the edge shader's
+// every-pixel detector: it must equal per-sample exactly, which makes it a checkable new method.
+constexpr retroaa::Method kTestMethod = retroaa::Method(200);
+
+class EveryPixelTechnique : public retroaa::Technique {
+ public:
+  static retroaa::Result<std::unique_ptr<retroaa::Technique>> create(retroaa::PluginContext& context,
+                                                                     retroaa::SharedTargets& shared) {
+    auto technique = std::make_unique<EveryPixelTechnique>();
+    auto program = context.shaders->program(
+        "common/fullscreen.vert", "edge/detect_edges.frag",
+        shared.msaa->shaderDefines(context.layout, false) + retroaa::defineLine("EDGE_DETECTOR", int(retroaa::EdgeDetector::EveryPixel)) +
+            retroaa::defineLine("STENCIL_EXPORT", context.capabilities.stencilExport));
+    if (!program) return program.error();
+    technique->program_ = std::move(program.value());
+    return std::unique_ptr<retroaa::Technique>(std::move(technique));
+  }
+  retroaa::Status afterResolve(retroaa::PluginContext& context, retroaa::SharedTargets& shared,
+                               const retroaa::FrameInfo&) override {
+    return shared.slices->writeMask(context, program_.get(), context.capabilities.stencilExport);
+  }
+  bool keepsObjectsFor(const retroaa::Config&) const override { return true; }
+
+ private:
+  retroaa::ShaderProgram program_;
+};
+
+void registerTestTechnique() {
+  static const bool once = [] {
+    retroaa::registerTechnique({{kTestMethod, "test-every-pixel", "every sample lit (test)", true, 1, "test-every-pixel",
+                                 "test-every-pixel", "test-every-pixel"},
+                                retroaa::kStorageMsaaGBuffer | retroaa::kStorageSlices,
+                                EveryPixelTechnique::create});
+    return true;
+  }();
+  (void)once;
+}
+// -------------------------------------------------------------------------------------------------
+
+}  // namespace
+
+TEST(Registry, ATechniqueInOneFileAndOneRowRunsThroughEveryLayer) {
+  registerTestTechnique();
+  // Config: parsed, printed and listed by name.
+  retroaa::Config config;
+  ASSERT_TRUE(retroaa::applySetting(config, "method", "test-every-pixel"));
+  EXPECT_EQ(config.method, kTestMethod);
+  EXPECT_STREQ(retroaa::toString(kTestMethod), "test-every-pixel");
+  EXPECT_NE(retroaa::toConfigText(config).find("method=test-every-pixel"), std::string::npos);
+  EXPECT_TRUE(retroaa::usesMsaa(kTestMethod));
+  // The tools' lists.
+  const std::vector<std::string> all = app::expandMethodList("all");
+  EXPECT_NE(std::find(all.begin(), all.end(), "test-every-pixel"), all.end());
+  // The plugin: equal to per-sample, N evaluations per pixel, nothing left behind when switched off.
+  PatchedHost host("default", 64, 48);
+  const int objectsBefore = host.hooks->plugin().stats().glObjectsHeld;
+  const app::DisplayImage perSample = host.render("per-sample");
+  const uint64_t perSampleEvaluations = host.hooks->plugin().stats().lightingEvaluations;
+  const app::DisplayImage mine = host.render("test-every-pixel");
+  const retroaa::Stats stats = host.hooks->plugin().stats();
+  EXPECT_EQ(stats.method, kTestMethod);
+  EXPECT_EQ(mine.rgb, perSample.rgb);
+  EXPECT_EQ(stats.lightingEvaluations, perSampleEvaluations);
+  EXPECT_EQ(stats.lightingEvaluations, uint64_t(64 * 48) * uint64_t(stats.samples));
+  host.render("off");
+  EXPECT_EQ(host.hooks->plugin().stats().glObjectsHeld, objectsBefore);
+}
+
+TEST(Registry, EveryEnumValueHasOneRowAndEveryRowParses) {
+  std::set<std::string> names;
+  for (const retroaa::MethodInfo& row : retroaa::methodTable()) {
+    EXPECT_TRUE(names.insert(row.name).second) << "two rows named " << row.name;
+    retroaa::Config config;
+    ASSERT_TRUE(retroaa::applySetting(config, "method", row.name)) << row.name;
+    EXPECT_EQ(config.method, row.method);
+    EXPECT_EQ(retroaa::findMethod(row.method), &row);
+    // Every spec a tool renders for the row parses and selects the row's method.
+    for (const char* specs : {row.sweepSpecs, row.regressSpec, row.tuneSpecs})
+      for (const std::string& spec : app::expandMethodList(specs)) {
+        const retroaa::Config parsed = app::parseMethodSpec(spec, {}).config;
+        EXPECT_TRUE(parsed.method == row.method || (parsed.method == retroaa::Method::Resolve && spec.find('+') != std::string::npos))
+            << spec;
+      }
+  }
+  EXPECT_EQ(retroaa::findMethod(retroaa::Method(250)), nullptr);
+  EXPECT_STREQ(retroaa::toString(retroaa::Method(250)), "?");
+}
+
+// The same rules as the text parser, for configs built in code.
+TEST(PluginErrors, ACodeBuiltConfigIsCheckedByTheParsersRules) {
+  struct Case {
+    const char* key;
+    void (*spoil)(retroaa::Config&);
+  };
+  const Case cases[] = {
+      {"aggregate_count", [](retroaa::Config& c) { c.aggregateCount = 0; }},
+      {"samples", [](retroaa::Config& c) { c.samples = 3; }},
+      {"closeness", [](retroaa::Config& c) { c.closeness = std::numeric_limits<float>::quiet_NaN(); }},
+      {"fxaa_edge_threshold", [](retroaa::Config& c) { c.fxaaEdgeThreshold = 0.9f; }},
+      {"adaptive_min_samples", [](retroaa::Config& c) { c.adaptiveMinSamples = 17; }},
+      {"aggregate_length", [](retroaa::Config& c) { c.aggregateLength = 0.0099999f; }},  // just below its floor
+      {"method", [](retroaa::Config& c) { c.method = retroaa::Method(250); }},
+      {"edge_detector", [](retroaa::Config& c) { c.edgeDetector = retroaa::EdgeDetector(77); }},
+  };
+  PatchedHost host("default", 32, 24);
+  retroaa::Plugin& plugin = host.hooks->plugin();
+  ASSERT_TRUE(plugin.reconfigure(app::parseMethodSpec("edge", {}).config));
+  const std::string before = retroaa::toConfigText(plugin.config());
+  for (const Case& c : cases) {
+    retroaa::Config config;
+    config.method = retroaa::Method::Resolve;
+    c.spoil(config);
+    const retroaa::Status checked = retroaa::validateConfig(config);
+    ASSERT_FALSE(checked) << c.key;
+    EXPECT_EQ(checked.error().code, retroaa::ErrorCode::InvalidConfig);
+    EXPECT_NE(checked.error().message.find(std::string("'") + c.key + "'"), std::string::npos) << checked.error().message;
+    // reconfigure refuses it and changes nothing; create refuses it too.
+    const retroaa::Status refused = plugin.reconfigure(config);
+    ASSERT_FALSE(refused) << c.key;
+    EXPECT_EQ(refused.error().code, retroaa::ErrorCode::InvalidConfig);
+    EXPECT_EQ(retroaa::toConfigText(plugin.config()), before);
+    auto created = patch::RetroaaHooks::create(host.renderer->targets(), config);
+    ASSERT_FALSE(created) << c.key;
+    EXPECT_EQ(created.error().code, retroaa::ErrorCode::InvalidConfig);
+  }
+  // Defaults and every preset are valid.
+  EXPECT_TRUE(retroaa::validateConfig(retroaa::Config{}));
+  for (const char* preset : {"low", "medium", "high", "ultra"}) {
+    retroaa::Config config;
+    ASSERT_TRUE(retroaa::applySetting(config, "preset", preset));
+    EXPECT_TRUE(retroaa::validateConfig(config)) << preset;
+  }
+}
+
+TEST(PluginErrors, ShadeWithoutResolveIsAWrongCallOrder) {
+  PatchedHost host("default", 32, 24);
+  retroaa::Plugin& plugin = host.hooks->plugin();
+  int lightingRuns = 0;
+  const retroaa::LightingFunction lighting = [&lightingRuns](retroaa::GLuintHandle) { ++lightingRuns; };
+  host.render("resolve");  // a whole frame: resolve() then shade()
+  const retroaa::Status status = plugin.shade(lighting);
+  ASSERT_FALSE(status);
+  EXPECT_EQ(status.error().code, retroaa::ErrorCode::WrongCallOrder);
+  EXPECT_NE(status.error().message.find("resolve()"), std::string::npos) << status.error().message;
+  EXPECT_EQ(lightingRuns, 0);
+  // Methods without an MSAA G-buffer have nothing to resolve: shading alone is fine.
+  host.render("fxaa");
+  EXPECT_TRUE(plugin.shade(lighting));
+  EXPECT_EQ(lightingRuns, 1);
+}
+
+TEST(PluginErrors, ATargetTheDriverRefusesIsAnIncompleteFramebuffer) {
+  PatchedHost host("default", 32, 24);
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  description.layout.attachments[0].internalFormat = GL_RGB9_E5;  // shared-exponent: not colour-renderable
+  description.config.method = retroaa::Method::Resolve;
+  auto created = retroaa::Plugin::create(description);
+  ASSERT_FALSE(created);
+  EXPECT_EQ(created.error().code, retroaa::ErrorCode::IncompleteFramebuffer);
+  EXPECT_NE(created.error().message.find("msaa_gbuffer"), std::string::npos) << created.error().message;
+}
+
+TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {
+  PatchedHost host("default", 32, 24);
+  retroaa::ObjectCounter counter;
+  std::vector<std::string> warnings;
+  retroaa::ShaderLibrary library(counter, "", [&warnings](const std::string& m) { warnings.push_back(m); });
+  auto built = library.program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uAtLeast"});
+  ASSERT_TRUE(built) << built.error().message;
+  auto lacking = library.program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uAtLeast", "uNotDeclared"});
+  ASSERT_FALSE(lacking);
+  EXPECT_EQ(lacking.error().code, retroaa::ErrorCode::ShaderError);
+  EXPECT_NE(lacking.error().message.find("'uNotDeclared'"), std::string::npos) << lacking.error().message;
+  EXPECT_NE(lacking.error().message.find("slices/mark_pixels.frag"), std::string::npos) << lacking.error().message;
+  EXPECT_EQ(counter.live, 1) << "the refused program is deleted";
+
+  // An override that drops a uniform the plugin sets falls back to the built-in, saying which.
+  const auto dir = std::filesystem::temp_directory_path() / "retroaa_contract_test";
+  std::filesystem::create_directories(dir / "resolve");
+  {
+    std::ifstream in(std::string(RETROAA_SOURCE_DIR) + "/shaders/resolve/resolve.frag");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string source = text.str();
+    const std::string declaration = "uniform float uCloseness;";
+    ASSERT_NE(source.find(declaration), std::string::npos);
+    source.replace(source.find(declaration), declaration.size(), "const float uCloseness = 5.0;");
+    std::ofstream(dir / "resolve" / "resolve.frag") << source;
+  }
+  const app::DisplayImage builtIn = host.render("resolve");
+  retroaa::Config config = app::parseMethodSpec("resolve", {}).config;
+  config.shaderOverrideDirectory = dir.string();
+  ASSERT_TRUE(host.hooks->plugin().reconfigure(config));
+  const auto pluginWarnings = host.hooks->plugin().warnings();
+  ASSERT_FALSE(pluginWarnings.empty());
+  EXPECT_NE(pluginWarnings.back().find("declares no uniform 'uCloseness'"), std::string::npos) << pluginWarnings.back();
+  host.renderer->renderFrame(host.scene.camera);
+  EXPECT_EQ(app::DisplayImage::fromRgba8(32, 24, host.renderer->readDisplay()).rgb, builtIn.rgb);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PluginErrors, AContextBelowGl45IsUnsupported) {
+  PatchedHost host("default", 32, 24);
+  const EGLDisplay display = eglGetCurrentDisplay();
+  const EGLContext previous = eglGetCurrentContext();
+  ASSERT_NE(previous, EGL_NO_CONTEXT);
+  // An OpenGL ES 3 context: not desktop GL 4.5 core.
+  ASSERT_TRUE(eglBindAPI(EGL_OPENGL_ES_API));
+  const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_NONE};
+  const EGLContext es = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+  eglBindAPI(EGL_OPENGL_API);
+  if (es == EGL_NO_CONTEXT) GTEST_FAIL() << "the EGL display offers no OpenGL ES 3 context to test with";
+  ASSERT_TRUE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, es));
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  auto created = retroaa::Plugin::create(description);
+  eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, previous);
+  eglDestroyContext(display, es);
+  ASSERT_FALSE(created);
+  EXPECT_EQ(created.error().code, retroaa::ErrorCode::UnsupportedContext);
+  EXPECT_NE(created.error().message.find("needs an OpenGL 4.5 core context"), std::string::npos) << created.error().message;
+}
+
+TEST(PluginErrors, AnInconsistentLayoutIsInvalid) {
+  PatchedHost host("default", 32, 24);
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  description.layout.attachments[1].role = retroaa::AttachmentRole::Other;  // no ViewPosition left
+  auto created = retroaa::Plugin::create(description);
+  ASSERT_FALSE(created);
+  EXPECT_EQ(created.error().code, retroaa::ErrorCode::InvalidLayout);
+  EXPECT_NE(created.error().message.find("ViewPosition"), std::string::npos) << created.error().message;
+}
