@@ -79,12 +79,12 @@ test: build
 # frame of the demo and fence scenes reaches each edge-PSNR target. Rewrites presets/*.cfg, which the
 # plugin embeds at build time; the measurements are cached in out/tune/.
 PRESET_RUN = $(RETROAA) tune --scenes default,integration-tests/scenes/fence.json --frames 3 --width 160 --height 120 \
-  --gt-samples 4 --cost evals --cache out/tune/presets-cache.json
+  --gt-samples 4 --cost evals_per_pixel --cache out/tune/presets-cache.json
 presets: build
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr=16.0 --out presets/low.cfg
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr=17.5 --out presets/medium.cfg
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr=18.5 --out presets/high.cfg
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr=18.7 --out presets/ultra.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=16.0 --out presets/low.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=17.5 --out presets/medium.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=18.5 --out presets/high.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=18.7 --out presets/ultra.cfg
 	rm -f presets/*.cfg.json
 	cmake --build $(BUILD) -j$(JOBS)
 

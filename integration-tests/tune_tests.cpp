@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 namespace {
 app::TunePoint point(const std::string& spec, double cost, std::vector<double> edgePsnrPerFrame) {
   app::TunePoint p{spec, cost, {}};
-  for (double e : edgePsnrPerFrame) p.frames.push_back({{"psnr", e + 10}, {"edge_psnr", e}, {"ssim", 0.9}});
+  for (double e : edgePsnrPerFrame) p.frames.push_back({{"psnr_db", e + 10}, {"edge_psnr_db", e}, {"ssim", 0.9}});
   return p;
 }
 }  // namespace
@@ -28,17 +28,17 @@ TEST(TuneSearch, FindsTheCheapestPointThatMeetsTheTargetOnEveryFrame) {
       point("d", 4.0, {35, 35}),   // best, dearest
       point("e", 2.0, {25.5, 26}),  // same cost as b, worse worst frame
   };
-  const app::TuneChoice choice = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr=25")});
+  const app::TuneChoice choice = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr_db=25")});
   ASSERT_TRUE(choice.feasible);
   EXPECT_EQ(grid[choice.chosen].spec, "b");
   EXPECT_EQ(grid[choice.nextCheaper].spec, "c");  // the front's point below: it misses a frame
   std::vector<std::string> front;
   for (int i : choice.front) front.push_back(grid[i].spec);
   EXPECT_EQ(front, (std::vector<std::string>{"a", "c", "b", "d"}));
-  const app::TuneChoice strict = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr=36")});
+  const app::TuneChoice strict = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr_db=36")});
   EXPECT_FALSE(strict.feasible);
   EXPECT_EQ(grid[strict.chosen].spec, "d");  // the closest
-  const app::TuneChoice two = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr=25"), app::parseTuneTarget("ssim=0.95")});
+  const app::TuneChoice two = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr_db=25"), app::parseTuneTarget("ssim=0.95")});
   EXPECT_FALSE(two.feasible);
   EXPECT_THROW(app::parseTuneTarget("flicker=3"), std::invalid_argument);
 }
@@ -48,7 +48,7 @@ TEST(Tune, TheWrittenConfigReproducesThePredictedFigures) {
   fs::remove_all(dir);
   const std::string common = "tune --frames 2 --width 96 --height 72 --gt-samples 3 --candidates off,fxaa,resolve,edge,aggregate,per-sample --cache " +
                              (dir / "cache.json").string() + " --out " + (dir / "tuned.cfg").string();
-  const CliRun run = runCli(common + " --target edge_psnr=16.5");
+  const CliRun run = runCli(common + " --target edge_psnr_db=16.5");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("tune: measured 12 points, reused 0"), std::string::npos) << run.output;
   std::ifstream in(dir / "tuned.cfg.json");
@@ -67,14 +67,14 @@ TEST(Tune, TheWrittenConfigReproducesThePredictedFigures) {
                                              app::DisplayImage::fromRgba8(96, 72, truth.display), app::edgeMaskFromSpread(truth.lumaStdDev));
     worst = std::min(worst, m.edgePsnrDb);
   }
-  EXPECT_NEAR(worst, predicted["worst"]["edge_psnr"].get<double>(), 0.05) << predicted.dump();
+  EXPECT_NEAR(worst, predicted["worst"]["edge_psnr_db"].get<double>(), 0.05) << predicted.dump();
   EXPECT_GE(worst, 16.5);
   // A second run with another target measures nothing new.
-  const CliRun again = runCli(common + " --target edge_psnr=15");
+  const CliRun again = runCli(common + " --target edge_psnr_db=15");
   EXPECT_EQ(again.exitCode, 0) << again.output;
   EXPECT_NE(again.output.find("tune: measured 0 points, reused 12"), std::string::npos) << again.output;
   // And an impossible target is exit 1 naming the closest setting.
-  const CliRun impossible = runCli(common + " --target edge_psnr=60");
+  const CliRun impossible = runCli(common + " --target edge_psnr_db=60");
   EXPECT_EQ(impossible.exitCode, 1) << impossible.output;
   EXPECT_NE(impossible.output.find("tune: no setting meets the targets; the closest is"), std::string::npos) << impossible.output;
 }
@@ -85,8 +85,8 @@ TEST(Tune, PresetsAreWhatTheTunerChoosesToday) {
   const fs::path dir = fs::temp_directory_path() / "retroaa_presets";
   for (const auto& [name, target] : presets) {
     const CliRun run = runCli(std::string("tune --scenes default,") + RETROAA_SOURCE_DIR +
-                              "/integration-tests/scenes/fence.json --frames 3 --width 160 --height 120 --gt-samples 4 --cost evals"
-                              " --cache " + (dir / "cache.json").string() + " --out " + (dir / name).string() + ".cfg --target edge_psnr=" + target);
+                              "/integration-tests/scenes/fence.json --frames 3 --width 160 --height 120 --gt-samples 4 --cost evals_per_pixel"
+                              " --cache " + (dir / "cache.json").string() + " --out " + (dir / name).string() + ".cfg --target edge_psnr_db=" + target);
     ASSERT_EQ(run.exitCode, 0) << run.output;
     std::ifstream committed(std::string(RETROAA_SOURCE_DIR) + "/presets/" + name + ".cfg"), fresh(dir / (std::string(name) + ".cfg"));
     std::string committedHeader, freshHeader;

@@ -3,6 +3,7 @@
 #include "ground_truth.h"
 #include "headless_context.h"
 #include "image_io.h"
+#include "measure.h"
 #include "metrics.h"
 #include "renderer.h"
 #include "retroaa_hooks.h"
@@ -36,34 +37,7 @@ void ensureParent(const std::string& path) {
   if (!parent.empty()) std::filesystem::create_directories(parent);
 }
 
-double median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
 }  // namespace
-
-Session::Session(const host::HeadlessContext& context, const std::string& scenePath, int width, int height)
-    : context(context), scene(host::loadScene(scenePath)) {
-  renderer = std::make_unique<host::Renderer>(scene, width, height);
-  auto created = patch::RetroaaHooks::create(renderer->targets(), retroaa::Config{});
-  if (!created) throw std::runtime_error("retroaa: " + created.error().message);
-  hooks = std::move(created.value());
-  renderer->setHooks(hooks.get());
-}
-
-void Session::configure(const retroaa::Config& config) {
-  const retroaa::Status status = hooks->plugin().reconfigure(config);
-  if (!status) throw std::invalid_argument(status.error().message);
-}
-
-std::map<std::string, std::string> Session::metadata(const std::string& method) const {
-  return {{"retroaa:method", method},
-          {"retroaa:scene", scene.name},
-          {"retroaa:renderer", context.info().summary()},
-          {"retroaa:config", retroaa::toConfigText(hooks->plugin().config())}};
-}
 
 std::vector<uint8_t> visualiseCounts(const std::string& view, const std::vector<uint8_t>& countsBottomUp,
                                      const std::vector<uint8_t>& displayTopDown, int width, int height, int maxCount) {
@@ -142,7 +116,7 @@ std::vector<std::string> expandMethodList(const std::string& list) {
 
 int runRender(const RenderOptions& options) {
   host::HeadlessContext context;
-  Session session(context, options.scene, options.width, options.height);
+  Session session(options.scene, options.width, options.height, context.info().summary());
   const host::Camera camera = session.camera(options.frame);
   const std::string ext = lowerExtension(options.out);
   if (ext != ".png" && ext != ".exr") throw std::invalid_argument("--out must end in .png or .exr, got '" + options.out + "'");
@@ -160,13 +134,13 @@ int runRender(const RenderOptions& options) {
     display = session.renderer->readDisplay();
     radiance = session.renderer->readLight();
   }
-  const std::string methodName = options.method.empty() ? retroaa::toString(session.hooks->plugin().config().method) : options.method;
+  const std::string methodName = options.method.empty() ? retroaa::toString(session.plugin().config().method) : options.method;
   auto meta = session.metadata(methodName);
   if (!options.show.empty()) {
     if (options.show != "edges" && options.show != "samples" && options.show != "aggregates")
       throw std::invalid_argument("--show must be edges, samples or aggregates, got '" + options.show + "'");
-    const retroaa::Stats stats = session.hooks->plugin().stats();
-    display = visualiseCounts(options.show, session.hooks->plugin().readSliceCounts(), display, options.width,
+    const retroaa::Stats stats = session.plugin().stats();
+    display = visualiseCounts(options.show, session.plugin().readSliceCounts(), display, options.width,
                               options.height, std::max(stats.samples, 1));
     std::printf("%s: %.3f lighting evaluations per pixel\n", options.show.c_str(), stats.evaluationsPerPixel());
   }
@@ -185,126 +159,40 @@ int runRender(const RenderOptions& options) {
     std::printf("%s vs ground truth (%dx%d): PSNR %.2f dB, edge PSNR %.2f dB, SSIM %.4f\n", methodName.c_str(),
                 options.groundTruthSamples, options.groundTruthSamples, m.psnrDb, m.edgePsnrDb, m.ssim);
   }
-  std::printf("wrote %s (%s)\n", options.out.c_str(), session.context.info().summary().c_str());
+  std::printf("wrote %s (%s)\n", options.out.c_str(), session.contextSummary.c_str());
   return kExitOk;
 }
 
-int runBench(const BenchOptions& options) {
-  std::vector<MethodSpec> specs;
-  for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
-  if (specs.empty()) throw std::invalid_argument("--methods names no method");
+namespace {
 
-  host::HeadlessContext context;
-  Session session(context, options.scene, options.width, options.height);
-  const host::Camera camera = session.camera(options.frame);
-  const int w = options.width, h = options.height;
-  std::fprintf(stderr, "bench: %s, %dx%d, %zu triangles, %zu lights; ground truth %dx%d per pixel...\n",
-               session.scene.name.c_str(), w, h, session.scene.triangleCount(), session.scene.lights.size(),
-               options.groundTruthSamples, options.groundTruthSamples);
-  const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, options.groundTruthSamples);
-  const DisplayImage reference = DisplayImage::fromRgba8(w, h, truth.display);
-  const std::vector<uint8_t> edges = edgeMaskFromSpread(truth.lumaStdDev);
-  if (!options.imagesDirectory.empty()) {
-    std::filesystem::create_directories(options.imagesDirectory);
-    writeImage8(options.imagesDirectory + "/ground-truth.png", w, h, truth.display, session.metadata("ground-truth"));
-    std::vector<uint8_t> mask(size_t(w) * h * 4, 255);
-    for (size_t p = 0; p < edges.size(); ++p) mask[p * 4] = mask[p * 4 + 1] = mask[p * 4 + 2] = edges[p] ? 255 : 0;
-    writeImage8(options.imagesDirectory + "/edge-mask.png", w, h, mask);
+using nlohmann::json;
+
+std::string imageFileStem(std::string methodName) {
+  std::replace(methodName.begin(), methodName.end(), '/', '-');
+  return methodName;
+}
+
+// Times as ratios of a baseline measured in the same run (null where that method was not run).
+void addTimeRatios(json& rows) {
+  double offMs = 0, perSampleMs = 0;
+  for (const json& row : rows) {
+    if (row["method"] == "off") offMs = row["gpu_ms"].get<double>();
+    if (row["method"] == "per-sample") perSampleMs = row["gpu_ms"].get<double>();
   }
-
-  // The per-sample reference at the run's sample count: every row's error against it.
-  retroaa::Config referenceConfig = options.base;
-  referenceConfig.method = retroaa::Method::PerSample;
-  referenceConfig.fxaa = false;
-  session.configure(referenceConfig);
-  session.renderer->renderFrame(camera);
-  const DisplayImage perSampleReference = DisplayImage::fromRgba8(w, h, session.renderer->readDisplay());
-
-  nlohmann::json rows = nlohmann::json::array();
-  double offFrameMs = 0, perSampleFrameMs = 0;
-  for (const MethodSpec& spec : specs) {
-    std::fprintf(stderr, "bench: %s\n", spec.name.c_str());
-    retroaa::Config config = spec.config;
-    config.measureGpuTime = true;
-    session.configure(config);
-    session.renderer->measureTime = true;
-    session.renderer->renderFrame(camera);  // warm-up: shader compilation, first-touch allocation
-    std::vector<double> frameMs, modelMs, lightingMs, tonemapMs;
-    std::map<std::string, std::vector<double>> pluginMs;
-    for (int r = 0; r < std::max(1, options.repeats); ++r) {
-      session.renderer->renderFrame(camera);
-      const host::HostTimings& t = session.renderer->timings();
-      frameMs.push_back(t.frameMs);
-      modelMs.push_back(t.modelPassMs);
-      lightingMs.push_back(t.lightingMs);
-      tonemapMs.push_back(t.tonemapMs);
-      std::map<std::string, double> frameTotals;  // a pass runs once per slice: sum them per frame
-      for (const retroaa::PassTime& pass : session.hooks->plugin().stats().passes) frameTotals[pass.name] += pass.ms;
-      for (const auto& [name, ms] : frameTotals) pluginMs[name].push_back(ms);
-    }
-    session.renderer->measureTime = false;
-    const retroaa::Stats stats = session.hooks->plugin().stats();
-    const std::vector<uint8_t> display = session.renderer->readDisplay();
-    const DisplayImage image = DisplayImage::fromRgba8(w, h, display);
-    const ErrorMetrics m = compare(image, reference, edges);
-    if (spec.name == "off") offFrameMs = median(frameMs);
-    if (spec.name == "per-sample") perSampleFrameMs = median(frameMs);
-
-    nlohmann::json passes = {{"model_pass", median(modelMs)}, {"lighting", median(lightingMs)}, {"tonemap_post", median(tonemapMs)}};
-    for (const auto& [name, values] : pluginMs) passes["plugin." + name] = median(values);
-    nlohmann::json row = {
-        {"method", spec.name},
-        {"samples", stats.samples},
-        {"evals_per_pixel", stats.evaluationsPerPixel()},
-        {"lighting_evaluations", stats.lightingEvaluations},
-        {"gpu_ms", median(frameMs)},
-        {"passes_ms", passes},
-        {"plugin_bytes", stats.bytesHeld},
-        {"plugin_bytes_per_pixel", double(stats.bytesHeld) / (double(w) * h)},
-        {"psnr_db", m.psnrDb},
-        {"edge_psnr_db", m.edgePsnrDb},
-        {"ssim", m.ssim},
-        {"max_abs_error", m.maxAbsError},
-        {"psnr_vs_per_sample_db", compare(image, perSampleReference, {}).psnrDb},
-        {"slices", stats.slices},
-        {"budget_scale", stats.budgetScale},
-    };
-    rows.push_back(row);
-    if (!options.imagesDirectory.empty()) {
-      std::string file = spec.name;
-      std::replace(file.begin(), file.end(), '/', '-');
-      writeImage8(options.imagesDirectory + "/" + file + ".png", w, h, display, session.metadata(spec.name));
-      writeImage8(options.imagesDirectory + "/" + file + "-error.png", w, h, errorHeatmap(image, reference));
-    }
-  }
-  // Ratios of times measured in this one run (null where the baseline method was not run).
-  for (auto& row : rows) {
+  for (json& row : rows) {
     const double ms = row["gpu_ms"].get<double>();
-    row["time_vs_off"] = offFrameMs > 0 ? nlohmann::json(ms / offFrameMs) : nlohmann::json(nullptr);
-    row["time_vs_per_sample"] = perSampleFrameMs > 0 ? nlohmann::json(ms / perSampleFrameMs) : nlohmann::json(nullptr);
+    row["time_vs_off"] = offMs > 0 ? json(ms / offMs) : json(nullptr);
+    row["time_vs_per_sample"] = perSampleMs > 0 ? json(ms / perSampleMs) : json(nullptr);
   }
+}
 
-  nlohmann::json document = {
-      {"scene", session.scene.name},
-      {"width", w},
-      {"height", h},
-      {"frame", options.frame},
-      {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
-      {"edge_pixels", std::count(edges.begin(), edges.end(), 1)},
-      {"renderer", session.context.info().renderer},
-      {"gl_version", session.context.info().version},
-      {"egl_platform", session.context.info().platform},
-      {"gl_max_samples", session.context.info().maxSamples},
-      {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
-      {"rows", rows},
-  };
-
-  // A table for the terminal, and for the Markdown report.
+// The bench table, for the terminal and the Markdown report.
+std::string benchTable(const json& rows) {
   std::ostringstream table;
   table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | plugin B/px | PSNR dB | edge PSNR dB | "
            "SSIM | max err | PSNR vs per-sample |\n"
         << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  auto ratio = [](const nlohmann::json& value) {
+  auto ratio = [](const json& value) {
     if (value.is_null()) return std::string("-");
     std::ostringstream s;
     s << std::fixed << std::setprecision(2) << value.get<double>();
@@ -313,53 +201,110 @@ int runBench(const BenchOptions& options) {
   for (const auto& row : rows) {
     table << std::fixed << "| " << row["method"].get<std::string>() << " | " << row["samples"].get<int>() << " | "
           << std::setprecision(3) << row["evals_per_pixel"].get<double>() << " | " << std::setprecision(2)
-          << row["gpu_ms"].get<double>() << " | "
-          << ratio(row["time_vs_off"]) << " | " << ratio(row["time_vs_per_sample"]) << " | " << std::setprecision(1)
-          << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2) << row["psnr_db"].get<double>()
-          << " | " << row["edge_psnr_db"].get<double>() << " | " << std::setprecision(4) << row["ssim"].get<double>()
-          << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " | " << std::setprecision(2)
-          << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
+          << row["gpu_ms"].get<double>() << " | " << ratio(row["time_vs_off"]) << " | " << ratio(row["time_vs_per_sample"])
+          << " | " << std::setprecision(1) << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
+          << row["psnr_db"].get<double>() << " | " << row["edge_psnr_db"].get<double>() << " | " << std::setprecision(4)
+          << row["ssim"].get<double>() << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " | "
+          << std::setprecision(2) << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
   }
-  std::printf("%s", table.str().c_str());
-  std::printf("renderer: %s\n", session.context.info().summary().c_str());
+  return table.str();
+}
 
+void writeBenchCsv(const std::string& path, const json& rows) {
+  ensureParent(path);
+  std::ofstream csv(path);
+  const std::vector<std::string> columns = {"method", "samples", "evals_per_pixel", "gpu_ms", "time_vs_off",
+                                            "time_vs_per_sample", "plugin_bytes_per_pixel", "psnr_db", "edge_psnr_db",
+                                            "ssim", "max_abs_error", "psnr_vs_per_sample_db"};
+  for (size_t c = 0; c < columns.size(); ++c) csv << columns[c] << (c + 1 == columns.size() ? "\n" : ",");
+  for (const auto& row : rows)
+    for (size_t c = 0; c < columns.size(); ++c) {
+      const json& value = row[columns[c]];
+      csv << (value.is_string() ? value.get<std::string>() : value.dump()) << (c + 1 == columns.size() ? "\n" : ",");
+    }
+}
+
+void writeBenchReport(const BenchOptions& options, const json& document, const std::string& table) {
+  ensureParent(options.report);
+  std::ofstream md(options.report);
+  md << "# retroaa speed vs error: " << document["scene"].get<std::string>() << "\n\n"
+     << "Renderer: " << document["renderer_summary"].get<std::string>() << "  \n"
+     << "Size " << options.width << "x" << options.height << ", ground truth " << options.groundTruthSamples << "x"
+     << options.groundTruthSamples << " supersamples per pixel lit per sample (box filter on linear radiance), "
+     << document["edge_pixels"] << " edge pixels. Errors on tonemapped display values in [0,1]; times are the median of "
+     << options.repeats << " frames (GPU timer queries).\n\n"
+     << table << "\n";
+  if (options.imagesDirectory.empty()) return;
+  const auto relative =
+      std::filesystem::relative(options.imagesDirectory, std::filesystem::path(options.report).parent_path()).string();
+  md << "Ground truth: ![](" << relative << "/ground-truth.png) edge mask: ![](" << relative << "/edge-mask.png)\n\n";
+  for (const auto& row : document["rows"]) {
+    const std::string name = row["method"].get<std::string>(), file = imageFileStem(name);
+    md << "`" << name << "`: ![](" << relative << "/" << file << ".png) error: ![](" << relative << "/" << file
+       << "-error.png)\n\n";
+  }
+}
+
+void writeReferenceImages(const std::string& directory, const Session& session, const FrameReference& reference) {
+  const int w = session.renderer->width(), h = session.renderer->height();
+  std::filesystem::create_directories(directory);
+  writeImage8(directory + "/ground-truth.png", w, h, reference.truthRgba, session.metadata("ground-truth"));
+  std::vector<uint8_t> mask(size_t(w) * h * 4, 255);
+  for (size_t p = 0; p < reference.edges.size(); ++p) mask[p * 4] = mask[p * 4 + 1] = mask[p * 4 + 2] = reference.edges[p] ? 255 : 0;
+  writeImage8(directory + "/edge-mask.png", w, h, mask);
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& options) {
+  std::vector<MethodSpec> specs;
+  for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
+  if (specs.empty()) throw std::invalid_argument("--methods names no method");
+
+  host::HeadlessContext context;
+  Session session(options.scene, options.width, options.height, context.info().summary());
+  const host::Camera camera = session.camera(options.frame);
+  const int w = options.width, h = options.height;
+  std::fprintf(stderr, "bench: %s, %dx%d, %zu triangles, %zu lights; ground truth %dx%d per pixel...\n",
+               session.scene.name.c_str(), w, h, session.scene.triangleCount(), session.scene.lights.size(),
+               options.groundTruthSamples, options.groundTruthSamples);
+  const FrameReference reference = renderReference(session, camera, options.groundTruthSamples, &options.base);
+  if (!options.imagesDirectory.empty()) writeReferenceImages(options.imagesDirectory, session, reference);
+
+  json rows = json::array();
+  for (const MethodSpec& spec : specs) {
+    std::fprintf(stderr, "bench: %s\n", spec.name.c_str());
+    retroaa::Config config = spec.config;
+    config.measureGpuTime = true;
+    session.configure(config, spec.name);
+    const Measurement m = measure(session, camera, reference, options.repeats, 1);
+    json row = figures(m);
+    row["method"] = spec.name;
+    rows.push_back(row);
+    if (!options.imagesDirectory.empty()) {
+      const std::string stem = options.imagesDirectory + "/" + imageFileStem(spec.name);
+      writeImage8(stem + ".png", w, h, m.display, session.metadata(spec.name));
+      writeImage8(stem + "-error.png", w, h, errorHeatmap(m.image, reference.truth));
+    }
+  }
+  addTimeRatios(rows);
+  const host::ContextInfo& info = context.info();
+  const json document = {
+      {"scene", session.scene.name}, {"width", w}, {"height", h}, {"frame", options.frame},
+      {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
+      {"edge_pixels", std::count(reference.edges.begin(), reference.edges.end(), 1)},
+      {"renderer", info.renderer}, {"renderer_summary", info.summary()}, {"gl_version", info.version},
+      {"egl_platform", info.platform}, {"gl_max_samples", info.maxSamples},
+      {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"}, {"rows", rows}};
+  const std::string table = benchTable(rows);
+  std::printf("%s", table.c_str());
+  std::printf("renderer: %s\n", info.summary().c_str());
   if (!options.json.empty()) {
     ensureParent(options.json);
     std::ofstream(options.json) << document.dump(2) << "\n";
   }
-  if (!options.csv.empty()) {
-    ensureParent(options.csv);
-    std::ofstream csv(options.csv);
-    const char* columns[] = {"method", "samples", "evals_per_pixel", "gpu_ms", "time_vs_off", "time_vs_per_sample",
-                             "plugin_bytes_per_pixel", "psnr_db", "edge_psnr_db", "ssim", "max_abs_error",
-                             "psnr_vs_per_sample_db"};
-    for (const char* column : columns) csv << column << (column == columns[11] ? "\n" : ",");
-    for (const auto& row : rows)
-      for (const char* column : columns)
-        csv << (row[column].is_string() ? row[column].get<std::string>() : row[column].dump())
-            << (column == columns[11] ? "\n" : ",");
-  }
-  if (!options.report.empty()) {
-    ensureParent(options.report);
-    std::ofstream md(options.report);
-    md << "# retroaa speed vs error: " << session.scene.name << "\n\n"
-       << "Renderer: " << session.context.info().summary() << "  \n"
-       << "Size " << w << "x" << h << ", ground truth " << options.groundTruthSamples << "x" << options.groundTruthSamples
-       << " supersamples per pixel lit per sample (box filter on linear radiance), " << document["edge_pixels"]
-       << " edge pixels. Errors on tonemapped display values in [0,1]; times are the median of " << options.repeats
-       << " frames (GPU timer queries).\n\n"
-       << table.str() << "\n";
-    if (!options.imagesDirectory.empty()) {
-      const auto relative = std::filesystem::relative(options.imagesDirectory, std::filesystem::path(options.report).parent_path()).string();
-      md << "Ground truth: ![](" << relative << "/ground-truth.png) edge mask: ![](" << relative << "/edge-mask.png)\n\n";
-      for (const auto& row : rows) {
-        std::string file = row["method"].get<std::string>();
-        std::replace(file.begin(), file.end(), '/', '-');
-        md << "`" << row["method"].get<std::string>() << "`: ![](" << relative << "/" << file << ".png) error: ![]("
-           << relative << "/" << file << "-error.png)\n\n";
-      }
-    }
-  }
+  if (!options.csv.empty()) writeBenchCsv(options.csv, rows);
+  if (!options.report.empty()) writeBenchReport(options, document, table);
   return kExitOk;
 }
 
@@ -403,13 +348,13 @@ double residentMiB() {
 
 int runSoak(const SoakOptions& options) {
   host::HeadlessContext context;
-  Session session(context, "default", options.width, options.height);
+  Session session("default", options.width, options.height, context.info().summary());
   const std::vector<std::string> methods = expandMethodList("all");
   const int sizes[3][2] = {{options.width, options.height}, {options.width + 17, options.height + 9}, {options.width / 2 + 3, options.height / 2 + 5}};
   const int samples[] = {1, 2, 4, 8};
   session.configure(retroaa::Config{});
   session.renderer->renderFrame(session.camera(0));
-  const int objectsAtStart = session.hooks->plugin().stats().glObjectsHeld;
+  const int objectsAtStart = session.plugin().stats().glObjectsHeld;
   const int errorsAtStart = context.debugErrorCount();
   double residentAfterWarmUp = 0, residentPeak = 0;
   for (int frame = 0; frame < options.frames; ++frame) {
@@ -430,7 +375,7 @@ int runSoak(const SoakOptions& options) {
   session.renderer->resize(options.width, options.height);
   session.configure(retroaa::Config{});
   session.renderer->renderFrame(session.camera(0));
-  const int objectsAtEnd = session.hooks->plugin().stats().glObjectsHeld;
+  const int objectsAtEnd = session.plugin().stats().glObjectsHeld;
   const int glErrors = context.debugErrorCount() - errorsAtStart;
   const double growth = residentPeak - residentAfterWarmUp;
   std::printf("soak: %d frames, %zu methods x 4 sample counts x 5 detectors, 3 sizes\n", options.frames, methods.size());

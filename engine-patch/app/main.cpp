@@ -1,4 +1,4 @@
-// `retroaa`: render, bench (more subcommands land with their issues). Exit codes: 0 ok, 1 a check
+// `retroaa`: the subcommands of commands.h, regress.h, tune.h and viewer.h. Exit codes: 0 ok, 1 a check
 // failed, 2 bad usage or input (with a message naming what was wrong).
 #include "commands.h"
 #include "regress.h"
@@ -13,6 +13,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <memory>
 #include <sstream>
 
 namespace {
@@ -39,151 +41,185 @@ retroaa::Config buildConfig(const std::string& configFile, const std::vector<std
   return config;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The command line: every subcommand with its options and what it runs. The config options (--config,
+// --set, FSO flags) are shared; the config they build is handed to the subcommand that ran.
+struct CommandLine {
   CLI::App cli{"retroaa: retrofit anti-aliasing for deferred renderers"};
-  cli.require_subcommand(1);
   std::string configFile, msaa, aaPreset, samples;
   std::vector<std::string> sets;
-  auto addSizeOptions = [](CLI::App* sub, int& width, int& height) {
+  std::vector<std::pair<CLI::App*, std::function<int(const retroaa::Config&)>>> commands;
+
+  void addSizeOptions(CLI::App* sub, int& width, int& height) {
     sub->add_option("--width", width)->check(CLI::Range(16, 8192));
     sub->add_option("--height", height)->check(CLI::Range(16, 8192));
-  };
-  auto addConfigOptions = [&](CLI::App* sub) {
+  }
+  void addConfigOptions(CLI::App* sub) {
     sub->add_option("--config", configFile, "config file of key=value lines");
     sub->add_option("--set", sets, "one setting, key=value (repeatable)");
     sub->add_option("--samples", samples, "MSAA samples (same as --set samples=N)");
     sub->add_option("-m,--msaa", msaa, "FreeSpace Open's -msaa 0|4|8|16");
     sub->add_option("--aa_preset", aaPreset, "FreeSpace Open's -aa_preset 0..6");
-  };
+  }
+  retroaa::Config config() {
+    if (!samples.empty()) sets.insert(sets.begin(), "samples=" + samples);
+    return buildConfig(configFile, sets, msaa, aaPreset);
+  }
+};
 
-  app::RenderOptions render;
-  CLI::App* renderCmd = cli.add_subcommand("render", "render one frame headless");
-  renderCmd->add_option("--scene", render.scene, "scene file, or 'default'");
-  renderCmd->add_option("--method", render.method, "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
-  addSizeOptions(renderCmd, render.width, render.height);
-  renderCmd->add_option("--frame", render.frame, "camera path frame (default: the scene camera)");
-  renderCmd->add_option("--gt-samples", render.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
-  renderCmd->add_option("--out", render.out, "output image (.png display, .exr linear radiance)")->required();
-  renderCmd->add_option("--heatmap", render.heatmap, "also write the error against ground truth as a heat map");
-  renderCmd->add_option("--show", render.show, "write a visualisation instead: edges | samples | aggregates (lighting evaluations per pixel)");
-  addConfigOptions(renderCmd);
+const char* kMethodsHelp = "comma-separated method specs; 'all' (every method and variant), 'each' (one per method)";
 
-  app::BenchOptions bench;
-  CLI::App* benchCmd = cli.add_subcommand("bench", "every method on one frame: speed against error");
-  benchCmd->add_option("--scene", bench.scene, "scene file, or 'default'");
-  benchCmd->add_option("--methods", bench.methods, "comma-separated method specs, or 'all'");
-  addSizeOptions(benchCmd, bench.width, bench.height);
-  benchCmd->add_option("--frame", bench.frame, "camera path frame (default: the scene camera)");
-  benchCmd->add_option("--gt-samples", bench.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
-  benchCmd->add_option("--repeats", bench.repeats, "timed frames per method (median)")->check(CLI::Range(1, 100));
-  benchCmd->add_option("--json", bench.json, "write the rows as JSON");
-  benchCmd->add_option("--csv", bench.csv, "write the rows as CSV");
-  benchCmd->add_option("--report", bench.report, "write a Markdown report");
-  benchCmd->add_option("--images", bench.imagesDirectory, "write each method's image and error heat map here");
-  addConfigOptions(benchCmd);
+void addRender(CommandLine& line) {
+  auto options = std::make_shared<app::RenderOptions>();
+  CLI::App* sub = line.cli.add_subcommand("render", "render one frame headless");
+  sub->add_option("--scene", options->scene, "scene file, or 'default'");
+  sub->add_option("--method", options->method, "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
+  line.addSizeOptions(sub, options->width, options->height);
+  sub->add_option("--frame", options->frame, "camera path frame (default: the scene camera)");
+  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  sub->add_option("--out", options->out, "output image (.png display, .exr linear radiance)")->required();
+  sub->add_option("--heatmap", options->heatmap, "also write the error against ground truth as a heat map");
+  sub->add_option("--show", options->show, "write a visualisation instead: edges | samples | aggregates (lighting evaluations per pixel)");
+  line.addConfigOptions(sub);
+  line.commands.push_back({sub, [options](const retroaa::Config& config) {
+                             options->base = config;
+                             return app::runRender(*options);
+                           }});
+}
 
-  app::RecordOptions record;
-  CLI::App* recordCmd = cli.add_subcommand("record", "record a camera path for a scene (an orbit and dolly; no window)");
-  recordCmd->add_option("--scene", record.scene, "scene file, or 'default'");
-  recordCmd->add_option("--orbit-degrees", record.orbitDegrees, "orbit about the camera target")->check(CLI::Range(-720.0, 720.0));
-  recordCmd->add_option("--dolly", record.dolly, "final distance as a multiple of the first")->check(CLI::Range(0.01, 100.0));
-  recordCmd->add_option("--seconds", record.seconds, "length")->check(CLI::Range(0.01, 3600.0));
-  recordCmd->add_option("--fps", record.framesPerSecond, "playback frame rate")->check(CLI::Range(1.0, 1000.0));
-  recordCmd->add_option("--keys", record.keys, "keys along the path")->check(CLI::Range(2, 1000));
-  recordCmd->add_option("--out", record.out, "camera path file (JSON)")->required();
+void addBench(CommandLine& line) {
+  auto options = std::make_shared<app::BenchOptions>();
+  CLI::App* sub = line.cli.add_subcommand("bench", "every method on one frame: speed against error");
+  sub->add_option("--scene", options->scene, "scene file, or 'default'");
+  sub->add_option("--methods", options->methods, kMethodsHelp);
+  line.addSizeOptions(sub, options->width, options->height);
+  sub->add_option("--frame", options->frame, "camera path frame (default: the scene camera)");
+  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  sub->add_option("--repeats", options->repeats, "timed frames per method (median)")->check(CLI::Range(1, 100));
+  sub->add_option("--json", options->json, "write the rows as JSON");
+  sub->add_option("--csv", options->csv, "write the rows as CSV");
+  sub->add_option("--report", options->report, "write a Markdown report");
+  sub->add_option("--images", options->imagesDirectory, "write each method's image and error heat map here");
+  line.addConfigOptions(sub);
+  line.commands.push_back({sub, [options](const retroaa::Config& config) {
+                             options->base = config;
+                             return app::runBench(*options);
+                           }});
+}
 
-  app::RegressOptions regress;
-  CLI::App* regressCmd = cli.add_subcommand("regress", "every frame of recorded demo scenes with every method: report and goldens");
-  regressCmd->add_option("scenes", regress.scenes, "scene files (default: the five recorded scenes)");
-  regressCmd->add_option("--methods", regress.methods, "comma-separated method specs, or 'all'");
-  addSizeOptions(regressCmd, regress.width, regress.height);
-  regressCmd->add_option("--gt-samples", regress.groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
-  regressCmd->add_option("--stride", regress.frameStride, "every n-th frame of each path")->check(CLI::Range(1, 1000));
-  regressCmd->add_option("--frames", regress.maxFrames, "at most this many frames per scene (0: all)")->check(CLI::Range(0, 100000));
-  regressCmd->add_option("--out", regress.out, "report folder");
-  regressCmd->add_option("--golden-dir", regress.goldenDirectory, "where the goldens live");
-  regressCmd->add_flag("--check", regress.check, "compare with the goldens; exit 1 naming each figure that got worse");
-  regressCmd->add_flag("--update-golden", regress.updateGolden, "rewrite the goldens from this run");
-  addConfigOptions(regressCmd);
+void addRecord(CommandLine& line) {
+  auto options = std::make_shared<app::RecordOptions>();
+  CLI::App* sub = line.cli.add_subcommand("record", "record a camera path for a scene (an orbit and dolly; no window)");
+  sub->add_option("--scene", options->scene, "scene file, or 'default'");
+  sub->add_option("--orbit-degrees", options->orbitDegrees, "orbit about the camera target")->check(CLI::Range(-720.0, 720.0));
+  sub->add_option("--dolly", options->dolly, "final distance as a multiple of the first")->check(CLI::Range(0.01, 100.0));
+  sub->add_option("--seconds", options->seconds, "length")->check(CLI::Range(0.01, 3600.0));
+  sub->add_option("--fps", options->framesPerSecond, "playback frame rate")->check(CLI::Range(1.0, 1000.0));
+  sub->add_option("--keys", options->keys, "keys along the path")->check(CLI::Range(2, 1000));
+  sub->add_option("--out", options->out, "camera path file (JSON)")->required();
+  line.commands.push_back({sub, [options](const retroaa::Config&) { return app::runRecord(*options); }});
+}
 
-  app::SoakOptions soak;
-  CLI::App* soakCmd = cli.add_subcommand("soak", "many frames switching every setting: leaks, GL errors, memory");
-  soakCmd->add_option("--frames", soak.frames)->check(CLI::Range(1, 10000000));
-  addSizeOptions(soakCmd, soak.width, soak.height);
-  soakCmd->add_option("--max-growth-mib", soak.maxGrowthMiB, "allowed resident memory growth after warm-up");
+void addRegress(CommandLine& line) {
+  auto options = std::make_shared<app::RegressOptions>();
+  CLI::App* sub = line.cli.add_subcommand("regress", "every frame of recorded demo scenes with every method: report and goldens");
+  sub->add_option("scenes", options->scenes, "scene files (default: the five recorded scenes)");
+  sub->add_option("--methods", options->methods, kMethodsHelp);
+  line.addSizeOptions(sub, options->width, options->height);
+  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  sub->add_option("--stride", options->frameStride, "every n-th frame of each path")->check(CLI::Range(1, 1000));
+  sub->add_option("--frames", options->maxFrames, "at most this many frames per scene (0: all)")->check(CLI::Range(0, 100000));
+  sub->add_option("--out", options->out, "report folder");
+  sub->add_option("--golden-dir", options->goldenDirectory, "where the goldens live");
+  sub->add_flag("--check", options->check, "compare with the goldens; exit 1 naming each figure that got worse");
+  sub->add_flag("--update-golden", options->updateGolden, "rewrite the goldens from this run");
+  line.addConfigOptions(sub);
+  line.commands.push_back({sub, [options](const retroaa::Config& config) {
+                             options->base = config;
+                             return app::runRegress(*options);
+                           }});
+}
 
+void addSoak(CommandLine& line) {
+  auto options = std::make_shared<app::SoakOptions>();
+  CLI::App* sub = line.cli.add_subcommand("soak", "many frames switching every setting: leaks, GL errors, memory");
+  sub->add_option("--frames", options->frames)->check(CLI::Range(1, 10000000));
+  line.addSizeOptions(sub, options->width, options->height);
+  sub->add_option("--max-growth-mib", options->maxGrowthMiB, "allowed resident memory growth after warm-up");
+  line.commands.push_back({sub, [options](const retroaa::Config&) { return app::runSoak(*options); }});
+}
+
+void addView(CommandLine& line) {
 #ifdef RETROAA_HAS_VIEWER
-  app::ViewOptions view;
-  CLI::App* viewCmd = cli.add_subcommand("view", "the interactive viewer (GLFW window, Dear ImGui panel)");
-  viewCmd->add_option("--scene", view.scene, "scene file, or 'default'");
-  viewCmd->add_option("--method", view.method, "method A (left side)");
-  viewCmd->add_option("--compare", view.compare, "method B: split screen with a draggable divider");
-  addSizeOptions(viewCmd, view.width, view.height);
-  viewCmd->add_option("--script", view.script, "timed actions with a fixed time step (docs/viewer.md)");
-  viewCmd->add_option("--record-path", view.recordPath, "where R writes the recorded camera path");
-  addConfigOptions(viewCmd);
+  auto options = std::make_shared<app::ViewOptions>();
+  CLI::App* sub = line.cli.add_subcommand("view", "the interactive viewer (GLFW window, Dear ImGui panel)");
+  sub->add_option("--scene", options->scene, "scene file, or 'default'");
+  sub->add_option("--method", options->method, "method A (left side)");
+  sub->add_option("--compare", options->compare, "method B: split screen with a draggable divider");
+  line.addSizeOptions(sub, options->width, options->height);
+  sub->add_option("--script", options->script, "timed actions with a fixed time step (docs/viewer.md)");
+  sub->add_option("--record-path", options->recordPath, "where R writes the recorded camera path");
+  line.addConfigOptions(sub);
+  line.commands.push_back({sub, [options](const retroaa::Config& config) {
+                             options->base = config;
+                             return app::runView(*options);
+                           }});
+#else
+  (void)line;
 #endif
+}
 
-  app::TuneOptions tune;
-  std::vector<std::string> tuneTargets;
-  std::string tuneScenes;
-  CLI::App* tuneCmd = cli.add_subcommand("tune", "the cheapest settings that meet quality targets on every frame of your scenes");
-  tuneCmd->add_option("--scenes", tuneScenes, "comma-separated scene files (default: default)");
-  tuneCmd->add_option("--target", tuneTargets, "psnr=X, edge_psnr=X or ssim=X (repeatable)")->required();
-  tuneCmd->add_option("--cost", tune.cost, "evals | gpu_ms | memory");
-  tuneCmd->add_option("--candidates", tune.candidates, "comma-separated method specs (default: the built-in grid)");
-  addSizeOptions(tuneCmd, tune.width, tune.height);
-  tuneCmd->add_option("--gt-samples", tune.groundTruthSamples)->check(CLI::Range(1, 32));
-  tuneCmd->add_option("--frames", tune.frames, "frames of each scene's path")->check(CLI::Range(1, 10000));
-  tuneCmd->add_option("--out", tune.out, "the config file to write (a report beside it: .md, .json)");
-  tuneCmd->add_option("--cache", tune.cache, "measured points, reused by later runs");
+void addTune(CommandLine& line) {
+  auto options = std::make_shared<app::TuneOptions>();
+  auto targets = std::make_shared<std::vector<std::string>>();
+  auto scenes = std::make_shared<std::string>();
+  CLI::App* sub = line.cli.add_subcommand("tune", "the cheapest settings that meet quality targets on every frame of your scenes");
+  sub->add_option("--scenes", *scenes, "comma-separated scene files (default: default)");
+  sub->add_option("--target", *targets, "psnr_db=X, edge_psnr_db=X or ssim=X (repeatable)")->required();
+  sub->add_option("--cost", options->cost, "evals_per_pixel | gpu_ms | plugin_bytes_per_pixel");
+  sub->add_option("--candidates", options->candidates, "comma-separated method specs (default: 'grid', the registry's)");
+  line.addSizeOptions(sub, options->width, options->height);
+  sub->add_option("--gt-samples", options->groundTruthSamples)->check(CLI::Range(1, 32));
+  sub->add_option("--frames", options->frames, "frames of each scene's path")->check(CLI::Range(1, 10000));
+  sub->add_option("--out", options->out, "the config file to write (a report beside it: .md, .json)");
+  sub->add_option("--cache", options->cache, "measured points, reused by later runs");
+  line.commands.push_back({sub, [options, targets, scenes](const retroaa::Config&) {
+                             for (const std::string& t : *targets) options->targets.push_back(app::parseTuneTarget(t));
+                             if (!scenes->empty()) {
+                               options->scenes.clear();
+                               std::stringstream list(*scenes);
+                               for (std::string s; std::getline(list, s, ',');) options->scenes.push_back(s);
+                             }
+                             return app::runTune(*options);
+                           }});
+}
 
-  bool markdown = false;
-  CLI::App* configCmd = cli.add_subcommand("config", "list every config key with its default, range and effect");
-  configCmd->add_flag("--markdown", markdown, "as the Markdown table of docs/config.md");
+void addConfig(CommandLine& line) {
+  auto markdown = std::make_shared<bool>(false);
+  CLI::App* sub = line.cli.add_subcommand("config", "list every config key with its default, range and effect");
+  sub->add_flag("--markdown", *markdown, "as the Markdown table of docs/config.md");
+  line.commands.push_back({sub, [markdown](const retroaa::Config&) {
+                             std::printf("%s", app::configReference(*markdown).c_str());
+                             return app::kExitOk;
+                           }});
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  CommandLine line;
+  line.cli.require_subcommand(1);
+  for (auto add : {addRender, addBench, addRecord, addRegress, addSoak, addView, addTune, addConfig}) add(line);
   try {
-    cli.parse(argc, argv);
+    line.cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = cli.exit(e);
+    const int code = line.cli.exit(e);
     return code == 0 ? app::kExitOk : app::kExitBadInput;
   }
   try {
-    if (!samples.empty()) sets.insert(sets.begin(), "samples=" + samples);
-    const retroaa::Config config = buildConfig(configFile, sets, msaa, aaPreset);
-    if (configCmd->parsed()) {
-      std::printf("%s", app::configReference(markdown).c_str());
-      return app::kExitOk;
-    }
-    if (recordCmd->parsed()) return app::runRecord(record);
-    if (soakCmd->parsed()) return app::runSoak(soak);
-    if (tuneCmd->parsed()) {
-      for (const std::string& t : tuneTargets) tune.targets.push_back(app::parseTuneTarget(t));
-      if (!tuneScenes.empty()) {
-        tune.scenes.clear();
-        std::stringstream list(tuneScenes);
-        for (std::string s; std::getline(list, s, ',');) tune.scenes.push_back(s);
-      }
-      return app::runTune(tune);
-    }
-#ifdef RETROAA_HAS_VIEWER
-    if (viewCmd->parsed()) {
-      view.base = config;
-      return app::runView(view);
-    }
-#endif
-    if (regressCmd->parsed()) {
-      regress.base = config;
-      return app::runRegress(regress);
-    }
-    if (renderCmd->parsed()) {
-      render.base = config;
-      return app::runRender(render);
-    }
-    bench.base = config;
-    return app::runBench(bench);
+    const retroaa::Config config = line.config();
+    for (const auto& [sub, run] : line.commands)
+      if (sub->parsed()) return run(config);
+    return app::kExitBadInput;
   } catch (const host::SceneError& e) {
     std::fprintf(stderr, "retroaa: bad scene: %s\n", e.what());
     return app::kExitBadInput;

@@ -5,6 +5,8 @@
 #include "commands.h"
 #include "ground_truth.h"
 #include "image_io.h"
+#include "headless_context.h"
+#include "measure.h"
 #include "metrics.h"
 #include "session.h"
 
@@ -66,8 +68,47 @@ struct MethodTotals {
   double evaluations = 0, gpuMs = 0, flicker = 0;
   std::map<std::string, double> passMs;
   int frames = 0, flickerFrames = 0;
-  uint64_t bytes = 0;
+  double bytesPerPixel = 0;
   std::vector<float> previousError;  // signed display error of the previous frame
+
+  void add(const Measurement& m, const FrameReference& reference) {
+    psnr += m.error.psnrDb, edgePsnr += m.error.edgePsnrDb, minEdgePsnr = std::min(minEdgePsnr, m.error.edgePsnrDb);
+    psnrVsPerSample += m.psnrVsPerSampleDb.value_or(0);
+    ssim += m.error.ssim, maxError = std::max(maxError, m.error.maxAbsError);
+    evaluations += m.stats.evaluationsPerPixel(), gpuMs += m.gpuMs;
+    for (const auto& [name, ms] : m.passMs) passMs[name] += ms;
+    bytesPerPixel = m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0;
+    ++frames;
+    std::vector<float> error(m.image.rgb.size());
+    for (size_t i = 0; i < error.size(); ++i) error[i] = m.image.rgb[i] - reference.truth.rgb[i];
+    if (!previousError.empty()) {
+      double sum = 0;
+      for (size_t i = 0; i < error.size(); ++i) sum += double(error[i] - previousError[i]) * (error[i] - previousError[i]);
+      flicker += std::sqrt(sum / error.size());
+      ++flickerFrames;
+    }
+    previousError = std::move(error);
+  }
+
+  // Means over the frames (minimum and maximum where named so), by the names bench uses.
+  json row(const std::string& method) const {
+    const double n = std::max(frames, 1);
+    json passes = json::object();
+    for (const auto& [name, ms] : passMs) passes[name] = ms / n;
+    return {{"method", method},
+            {"frames", frames},
+            {"evals_per_pixel", evaluations / n},
+            {"gpu_ms", gpuMs / n},
+            {"passes_ms", passes},
+            {"plugin_bytes_per_pixel", bytesPerPixel},
+            {"psnr_db", psnr / n},
+            {"edge_psnr_db", edgePsnr / n},
+            {"min_edge_psnr_db", minEdgePsnr},
+            {"psnr_vs_per_sample_db", psnrVsPerSample / n},
+            {"ssim", ssim / n},
+            {"max_abs_error", maxError},
+            {"flicker", flickerFrames ? flicker / flickerFrames : 0.0}};
+  }
 };
 
 // The window (w × h) holding the most ground-truth edge pixels: where the hard cases are.
@@ -142,210 +183,140 @@ std::vector<std::string> defaultRegressScenes(const std::string& dir) {
           dir + "/scenes/heavy_lighting.json"};
 }
 
-int runRegress(const RegressOptions& options) {
-  std::vector<MethodSpec> specs;
-  for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
-  if (specs.empty()) throw std::invalid_argument("--methods names no method");
-  const std::vector<std::string> scenes = options.scenes.empty() ? defaultRegressScenes(RETROAA_INTEGRATION_TESTS_DIR) : options.scenes;
-  const int w = options.width, h = options.height;
-  host::HeadlessContext context;
+namespace {
 
-  // Frames per scene, for the progress bar; loading validates every scene before any work.
+// The frames of each scene a run renders; loading validates every scene before any work.
+std::vector<std::vector<int>> framesToRender(const std::vector<std::string>& scenes, const RegressOptions& options) {
   std::vector<std::vector<int>> frames;
-  int total = 0;
   for (const std::string& scene : scenes) {
     const host::Scene loaded = host::loadScene(scene);
     std::vector<int> list;
     for (int f = 0; f < loaded.path.frameCount(); f += std::max(options.frameStride, 1)) list.push_back(f);
     if (options.maxFrames > 0 && int(list.size()) > options.maxFrames) list.resize(options.maxFrames);
-    total += int(list.size());
     frames.push_back(list);
   }
-  Progress progress(total * int(specs.size()));
-  fs::create_directories(options.out);
+  return frames;
+}
 
-  json report = {{"renderer", context.info().summary()},
-                 {"width", w},
-                 {"height", h},
-                 {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
-                 {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
-                 {"flicker", "mean over frames t of the RMS over pixels of (error_t - error_(t-1)), error = image - ground truth"},
-                 {"scenes", json::array()}};
-
-  for (size_t si = 0; si < scenes.size(); ++si) {
-    Session session(context, scenes[si], w, h);
-    const std::string key = sceneKey(scenes[si]);
-    const fs::path sceneDir = fs::path(options.out) / fileSafe(key);
-    fs::create_directories(sceneDir);
-    std::map<std::string, MethodTotals> totals;
-    json images = json::object();
-    // Ground truth and the per-sample reference of every frame first, then one method at a time over
-    // all frames: each method is configured once and warmed up, so its times are steady-state.
-    struct FrameReference {
-      std::vector<uint8_t> truth;
-      std::vector<uint8_t> edges;
-      DisplayImage reference, perSample;
-    };
-    std::vector<FrameReference> references;
-    retroaa::Config perSampleConfig = options.base;
-    perSampleConfig.method = retroaa::Method::PerSample;
-    session.configure(perSampleConfig);
-    for (int frame : frames[si]) {
-      const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, session.camera(frame), options.groundTruthSamples);
-      session.renderer->renderFrame(session.camera(frame));
-      references.push_back({truth.display, edgeMaskFromSpread(truth.lumaStdDev), DisplayImage::fromRgba8(w, h, truth.display),
-                            DisplayImage::fromRgba8(w, h, session.renderer->readDisplay())});
-    }
-    const int cropW = std::min(48, w), cropH = std::min(36, h);
-    const std::pair<int, int> window = busiestWindow(references[0].edges, w, h, cropW, cropH);
-    writeImage8((sceneDir / "ground-truth.png").string(), w, h, references[0].truth);
-    writeImage8((sceneDir / "ground-truth-crop.png").string(), cropW * 4, cropH * 4,
-                crop(references[0].truth, w, window.first, window.second, cropW, cropH, 4));
-    images["crop_window"] = {window.first, window.second, cropW, cropH};
-    for (const MethodSpec& spec : specs) {
-      retroaa::Config config = spec.config;
-      config.measureGpuTime = true;
-      session.configure(config);
-      session.renderer->renderFrame(session.camera(frames[si][0]));  // warm-up: allocation, shader compilation
-      MethodTotals& t = totals[spec.name];
-      for (size_t fi = 0; fi < frames[si].size(); ++fi) {
-        const FrameReference& ref = references[fi];
-        session.renderer->measureTime = true;
-        session.renderer->renderFrame(session.camera(frames[si][fi]));
-        session.renderer->measureTime = false;
-        const retroaa::Stats stats = session.hooks->plugin().stats();
-        const std::vector<uint8_t> display = session.renderer->readDisplay();
-        const DisplayImage image = DisplayImage::fromRgba8(w, h, display);
-        const ErrorMetrics m = compare(image, ref.reference, ref.edges);
-        t.psnr += m.psnrDb, t.edgePsnr += m.edgePsnrDb, t.minEdgePsnr = std::min(t.minEdgePsnr, m.edgePsnrDb);
-        t.psnrVsPerSample += compare(image, ref.perSample, {}).psnrDb;
-        t.ssim += m.ssim, t.maxError = std::max(t.maxError, m.maxAbsError);
-        t.evaluations += stats.evaluationsPerPixel(), t.gpuMs += session.renderer->timings().frameMs;
-        t.passMs["model_pass"] += session.renderer->timings().modelPassMs;
-        t.passMs["lighting"] += session.renderer->timings().lightingMs;
-        t.passMs["tonemap_post"] += session.renderer->timings().tonemapMs;
-        for (const retroaa::PassTime& pass : stats.passes) t.passMs["plugin." + pass.name] += pass.ms;
-        t.bytes = stats.bytesHeld;
-        ++t.frames;
-        std::vector<float> error(image.rgb.size());
-        for (size_t i = 0; i < error.size(); ++i) error[i] = image.rgb[i] - ref.reference.rgb[i];
-        if (!t.previousError.empty()) {
-          double sum = 0;
-          for (size_t i = 0; i < error.size(); ++i) sum += double(error[i] - t.previousError[i]) * (error[i] - t.previousError[i]);
-          t.flicker += std::sqrt(sum / error.size());
-          ++t.flickerFrames;
-        }
-        t.previousError = std::move(error);
-        if (fi == 0) {
-          const std::string file = fileSafe(spec.name);
-          writeImage8((sceneDir / (file + ".png")).string(), w, h, display, session.metadata(spec.name));
-          writeImage8((sceneDir / (file + "-error.png")).string(), w, h, errorHeatmap(image, ref.reference));
-          writeImage8((sceneDir / (file + "-crop.png")).string(), cropW * 4, cropH * 4,
-                      crop(display, w, window.first, window.second, cropW, cropH, 4));
-          json entry = {{"image", file + ".png"}, {"error", file + "-error.png"}, {"crop", file + "-crop.png"}};
-          if (stats.slices > 1) {
-            writeImage8((sceneDir / (file + "-samples.png")).string(), w, h,
-                        visualiseCounts("samples", session.hooks->plugin().readSliceCounts(), display, w, h, stats.samples));
-            entry["samples"] = file + "-samples.png";
-          }
-          images[spec.name] = entry;
-        }
-        progress.step(key + " " + spec.name + " frame " + std::to_string(frames[si][fi]));
-      }
-    }
-    json rows = json::array();
-    for (const MethodSpec& spec : specs) {
-      const MethodTotals& t = totals[spec.name];
-      const double n = std::max(t.frames, 1);
-      json passes = json::object();
-      for (const auto& [name, ms] : t.passMs) passes[name] = ms / n;
-      rows.push_back({{"method", spec.name},
-                      {"frames", t.frames},
-                      {"evals_per_pixel", t.evaluations / n},
-                      {"gpu_ms", t.gpuMs / n},
-                      {"passes_ms", passes},
-                      {"plugin_bytes_per_pixel", double(t.bytes) / (double(w) * h)},
-                      {"psnr_db", t.psnr / n},
-                      {"edge_psnr_db", t.edgePsnr / n},
-                      {"min_edge_psnr_db", t.minEdgePsnr},
-                      {"psnr_vs_per_sample_db", t.psnrVsPerSample / n},
-                      {"ssim", t.ssim / n},
-                      {"max_abs_error", t.maxError},
-                      {"flicker", t.flickerFrames ? t.flicker / t.flickerFrames : 0.0}});
-    }
-    report["scenes"].push_back({{"scene", key},
-                                {"name", session.scene.name},
-                                {"file", scenes[si]},
-                                {"frames", frames[si].size()},
-                                {"directory", fileSafe(key)},
-                                {"images", images},
-                                {"rows", rows}});
+// The first frame's images of one method: the image, its error, the hard-case crop and, for sliced
+// methods, the samples per pixel. Returns their file names for the report.
+json writeMethodImages(Session& session, const fs::path& sceneDir, const std::string& method, const Measurement& m,
+                       const FrameReference& reference, std::pair<int, int> window, int cropW, int cropH) {
+  const int w = session.renderer->width(), h = session.renderer->height();
+  const std::string file = fileSafe(method);
+  writeImage8((sceneDir / (file + ".png")).string(), w, h, m.display, session.metadata(method));
+  writeImage8((sceneDir / (file + "-error.png")).string(), w, h, errorHeatmap(m.image, reference.truth));
+  writeImage8((sceneDir / (file + "-crop.png")).string(), cropW * 4, cropH * 4,
+              crop(m.display, w, window.first, window.second, cropW, cropH, 4));
+  json entry = {{"image", file + ".png"}, {"error", file + "-error.png"}, {"crop", file + "-crop.png"}};
+  if (m.stats.slices > 1) {
+    writeImage8((sceneDir / (file + "-samples.png")).string(), w, h,
+                visualiseCounts("samples", session.plugin().readSliceCounts(), m.display, w, h, m.stats.samples));
+    entry["samples"] = file + "-samples.png";
   }
+  return entry;
+}
 
-  // report.json and report.html
-  std::ofstream(fs::path(options.out) / "report.json") << report.dump(2) << "\n";
+// One scene: ground truth and the per-sample reference of every frame first, then one method at a
+// time over all frames (configured once and warmed up, so its times are steady-state).
+json regressScene(Session& session, const std::string& file, const std::vector<int>& frames,
+                  const std::vector<MethodSpec>& specs, const RegressOptions& options, Progress& progress) {
+  const int w = options.width, h = options.height;
+  const std::string key = sceneKey(file);
+  const fs::path sceneDir = fs::path(options.out) / fileSafe(key);
+  fs::create_directories(sceneDir);
+  std::vector<FrameReference> references;
+  for (int frame : frames)
+    references.push_back(renderReference(session, session.camera(frame), options.groundTruthSamples, &options.base));
+  const int cropW = std::min(48, w), cropH = std::min(36, h);
+  const std::pair<int, int> window = busiestWindow(references[0].edges, w, h, cropW, cropH);
+  writeImage8((sceneDir / "ground-truth.png").string(), w, h, references[0].truthRgba);
+  writeImage8((sceneDir / "ground-truth-crop.png").string(), cropW * 4, cropH * 4,
+              crop(references[0].truthRgba, w, window.first, window.second, cropW, cropH, 4));
+  json images = {{"crop_window", {window.first, window.second, cropW, cropH}}};
+  json rows = json::array();
+  for (const MethodSpec& spec : specs) {
+    retroaa::Config config = spec.config;
+    config.measureGpuTime = true;
+    session.configure(config, spec.name);
+    MethodTotals totals;
+    for (size_t fi = 0; fi < frames.size(); ++fi) {
+      const Measurement m = measure(session, session.camera(frames[fi]), references[fi], 1, fi == 0 ? 1 : 0);
+      totals.add(m, references[fi]);
+      if (fi == 0) images[spec.name] = writeMethodImages(session, sceneDir, spec.name, m, references[fi], window, cropW, cropH);
+      progress.step(key + " " + spec.name + " frame " + std::to_string(frames[fi]));
+    }
+    rows.push_back(totals.row(spec.name));
+  }
+  return {{"scene", key}, {"name", session.scene.name}, {"file", file}, {"frames", frames.size()},
+          {"directory", fileSafe(key)}, {"images", images}, {"rows", rows}};
+}
+
+void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
+  const std::string dir = scene["directory"];
+  html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
+       << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>plugin B/px</th><th>PSNR dB</th>"
+       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max err</th><th>flicker</th></tr>\n";
+  for (const auto& r : scene["rows"]) {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "<tr><td>%s</td><td>%.3f</td><td>%.2f</td><td>%.0f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.4f</td><td>%.3f</td><td>%.4f</td></tr>\n",
+                  htmlEscape(r["method"]).c_str(), r["evals_per_pixel"].get<double>(), r["gpu_ms"].get<double>(),
+                  r["plugin_bytes_per_pixel"].get<double>(), r["psnr_db"].get<double>(), r["edge_psnr_db"].get<double>(),
+                  r["min_edge_psnr_db"].get<double>(), r["psnr_vs_per_sample_db"].get<double>(), r["ssim"].get<double>(),
+                  r["max_abs_error"].get<double>(), r["flicker"].get<double>());
+    html << line;
+  }
+  std::vector<ScatterPoint> scatter;
+  for (const auto& r : scene["rows"])
+    scatter.push_back({r["method"].get<std::string>(), r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
+  html << "</table>\n" << svgScatter(scatter, "GPU ms per frame (mean)", "edge PSNR dB") << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";
+  for (const auto& r : scene["rows"]) {
+    const std::string m = r["method"];
+    html << "<figure><img src=\"" << dir << "/" << scene["images"][m]["crop"].get<std::string>() << "\" alt=\"" << htmlEscape(m)
+         << "\"><figcaption>" << htmlEscape(m) << "</figcaption></figure>";
+  }
+  html << "<figure><img src=\"" << dir << "/ground-truth-crop.png\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n"
+       << "<h3>First frame, error heat maps and samples per pixel</h3>\n<div>";
+  for (const auto& r : scene["rows"]) {
+    const std::string m = r["method"];
+    const json& im = scene["images"][m];
+    html << "<figure><img src=\"" << dir << "/" << im["image"].get<std::string>() << "\" width=\"" << w << "\" alt=\"" << htmlEscape(m)
+         << "\"><img src=\"" << dir << "/" << im["error"].get<std::string>() << "\" width=\"" << w << "\" alt=\"error\">";
+    if (im.contains("samples"))
+      html << "<img src=\"" << dir << "/" << im["samples"].get<std::string>() << "\" width=\"" << w << "\" alt=\"samples\">";
+    html << "<figcaption>" << htmlEscape(m) << "</figcaption></figure>";
+  }
+  html << "<figure><img src=\"" << dir << "/ground-truth.png\" width=\"" << w << "\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n";
+}
+
+void writeHtml(const json& report, const RegressOptions& options) {
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>retroaa regression report</title>\n"
        << "<style>body{font-family:sans-serif;margin:24px;color:#222}table{border-collapse:collapse;margin:8px 0}"
           "td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}th{background:#eee}td:first-child{text-align:left}"
           "img{image-rendering:pixelated;border:1px solid #999;margin:2px}figure{display:inline-block;margin:4px;text-align:center}"
           "figcaption{font-size:12px}.scatter text{font-size:11px}.label{fill:#246}.tick{fill:#666}</style></head><body>\n"
-       << "<h1>retroaa: speed against error on recorded demo scenes</h1>\n<p>" << htmlEscape(context.info().summary()) << "; "
-       << w << "×" << h << ", ground truth " << options.groundTruthSamples << "×" << options.groundTruthSamples
+       << "<h1>retroaa: speed against error on recorded demo scenes</h1>\n<p>" << htmlEscape(report["renderer"]) << "; "
+       << options.width << "×" << options.height << ", ground truth " << options.groundTruthSamples << "×" << options.groundTruthSamples
        << " supersamples per pixel. Figures are means over each scene's frames; errors on tonemapped display values. "
        << "<b>Flicker</b> is the frame-to-frame change of the error (RMS), what players notice as crawling edges.</p>\n";
-  for (const auto& scene : report["scenes"]) {
-    const std::string dir = scene["directory"];
-    html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
-         << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>plugin B/px</th><th>PSNR dB</th>"
-         << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max err</th><th>flicker</th></tr>\n";
-    for (const auto& r : scene["rows"]) {
-      char line[512];
-      std::snprintf(line, sizeof line,
-                    "<tr><td>%s</td><td>%.3f</td><td>%.2f</td><td>%.0f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.4f</td><td>%.3f</td><td>%.4f</td></tr>\n",
-                    htmlEscape(r["method"]).c_str(), r["evals_per_pixel"].get<double>(), r["gpu_ms"].get<double>(),
-                    r["plugin_bytes_per_pixel"].get<double>(), r["psnr_db"].get<double>(), r["edge_psnr_db"].get<double>(),
-                    r["min_edge_psnr_db"].get<double>(), r["psnr_vs_per_sample_db"].get<double>(), r["ssim"].get<double>(),
-                    r["max_abs_error"].get<double>(), r["flicker"].get<double>());
-      html << line;
-    }
-    std::vector<ScatterPoint> scatter;
-    for (const auto& r : scene["rows"])
-      scatter.push_back({r["method"].get<std::string>(), r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
-    html << "</table>\n" << svgScatter(scatter, "GPU ms per frame (mean)", "edge PSNR dB") << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";
-    for (const auto& r : scene["rows"]) {
-      const std::string m = r["method"];
-      html << "<figure><img src=\"" << dir << "/" << scene["images"][m]["crop"].get<std::string>() << "\" alt=\"" << htmlEscape(m)
-           << "\"><figcaption>" << htmlEscape(m) << "</figcaption></figure>";
-    }
-    html << "<figure><img src=\"" << dir << "/ground-truth-crop.png\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n"
-         << "<h3>First frame, error heat maps and samples per pixel</h3>\n<div>";
-    for (const auto& r : scene["rows"]) {
-      const std::string m = r["method"];
-      const json& im = scene["images"][m];
-      html << "<figure><img src=\"" << dir << "/" << im["image"].get<std::string>() << "\" width=\"" << w << "\" alt=\"" << htmlEscape(m)
-           << "\"><img src=\"" << dir << "/" << im["error"].get<std::string>() << "\" width=\"" << w << "\" alt=\"error\">";
-      if (im.contains("samples"))
-        html << "<img src=\"" << dir << "/" << im["samples"].get<std::string>() << "\" width=\"" << w << "\" alt=\"samples\">";
-      html << "<figcaption>" << htmlEscape(m) << "</figcaption></figure>";
-    }
-    html << "<figure><img src=\"" << dir << "/ground-truth.png\" width=\"" << w << "\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n";
-  }
+  for (const auto& scene : report["scenes"]) writeSceneHtml(html, scene, options.width);
   html << "</body></html>\n";
   std::ofstream(fs::path(options.out) / "report.html") << html.str();
-  std::printf("report: %s (JSON: %s)\n", (fs::path(options.out) / "report.html").string().c_str(),
-              (fs::path(options.out) / "report.json").string().c_str());
+}
 
-  // Goldens: the quality figures per scene and method, with tolerances.
+// Goldens: the quality figures per scene and method, with tolerances. Returns the exit status.
+int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
   int status = kExitOk;
   for (const auto& scene : report["scenes"]) {
     const fs::path goldenFile = fs::path(options.goldenDirectory) / (fileSafe(scene["scene"]) + ".json");
-    const json settings = {{"width", w}, {"height", h}, {"ground_truth_samples_per_axis", options.groundTruthSamples},
+    const json settings = {{"width", options.width}, {"height", options.height}, {"ground_truth_samples_per_axis", options.groundTruthSamples},
                            {"frames", scene["frames"]}, {"frame_stride", options.frameStride}};
     if (options.updateGolden) {
       json golden = {{"scene", scene["scene"]},
                      {"settings", settings},
-                     {"renderer", context.info().summary()},
+                     {"renderer", report["renderer"]},
                      {"tolerance", {{"psnr_db", 0.5}, {"edge_psnr_db", 0.5}, {"flicker_relative", 0.25}, {"flicker_absolute", 0.0005}, {"evals_relative", 0.05}}},
                      {"methods", json::object()}};
       for (const auto& r : scene["rows"])
@@ -355,21 +326,51 @@ int runRegress(const RegressOptions& options) {
       std::ofstream(goldenFile) << golden.dump(2) << "\n";
       std::printf("golden written: %s\n", goldenFile.string().c_str());
     }
-    if (options.check) {
-      std::ifstream in(goldenFile);
-      if (!in) throw std::invalid_argument(goldenFile.string() + ": no golden for scene '" + scene["scene"].get<std::string>() +
-                                           "' (run with --update-golden)");
-      const json golden = json::parse(in);
-      if (golden["settings"] != settings)
-        throw std::invalid_argument(goldenFile.string() + ": golden was made with settings " + golden["settings"].dump() +
-                                    ", this run uses " + settings.dump());
-      const std::vector<std::string> worse = compareWithGolden(golden, scene);
-      for (const std::string& line : worse) std::printf("WORSE: %s\n", line.c_str());
-      if (!worse.empty()) status = kExitCheckFailed;
-    }
+    if (!options.check) continue;
+    std::ifstream in(goldenFile);
+    if (!in) throw std::invalid_argument(goldenFile.string() + ": no golden for scene '" + scene["scene"].get<std::string>() +
+                                         "' (run with --update-golden)");
+    const json golden = json::parse(in);
+    if (golden["settings"] != settings)
+      throw std::invalid_argument(goldenFile.string() + ": golden was made with settings " + golden["settings"].dump() +
+                                  ", this run uses " + settings.dump());
+    const std::vector<std::string> worse = compareWithGolden(golden, scene);
+    for (const std::string& line : worse) std::printf("WORSE: %s\n", line.c_str());
+    if (!worse.empty()) status = kExitCheckFailed;
   }
   if (options.check) std::printf("check: %s\n", status == kExitOk ? "every figure within tolerance" : "figures got worse");
   return status;
+}
+
+}  // namespace
+
+int runRegress(const RegressOptions& options) {
+  std::vector<MethodSpec> specs;
+  for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
+  if (specs.empty()) throw std::invalid_argument("--methods names no method");
+  const std::vector<std::string> scenes = options.scenes.empty() ? defaultRegressScenes(RETROAA_INTEGRATION_TESTS_DIR) : options.scenes;
+  const std::vector<std::vector<int>> frames = framesToRender(scenes, options);
+  int total = 0;
+  for (const std::vector<int>& list : frames) total += int(list.size());
+  host::HeadlessContext context;
+  Progress progress(total * int(specs.size()));
+  fs::create_directories(options.out);
+  json report = {{"renderer", context.info().summary()},
+                 {"width", options.width},
+                 {"height", options.height},
+                 {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
+                 {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
+                 {"flicker", "mean over frames t of the RMS over pixels of (error_t - error_(t-1)), error = image - ground truth"},
+                 {"scenes", json::array()}};
+  for (size_t si = 0; si < scenes.size(); ++si) {
+    Session session(scenes[si], options.width, options.height, context.info().summary());
+    report["scenes"].push_back(regressScene(session, scenes[si], frames[si], specs, options, progress));
+  }
+  std::ofstream(fs::path(options.out) / "report.json") << report.dump(2) << "\n";
+  writeHtml(report, options);
+  std::printf("report: %s (JSON: %s)\n", (fs::path(options.out) / "report.html").string().c_str(),
+              (fs::path(options.out) / "report.json").string().c_str());
+  return updateAndCheckGoldens(report, options);
 }
 
 }  // namespace app

@@ -1,8 +1,8 @@
 #include "tune.h"
 
 #include "commands.h"
-#include "ground_truth.h"
-#include "metrics.h"
+#include "headless_context.h"
+#include "measure.h"
 #include "scatter_svg.h"
 #include "session.h"
 
@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace app {
@@ -29,12 +30,23 @@ double worstFrame(const TunePoint& point, const std::string& metric) {
 
 }  // namespace
 
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+}  // namespace
+
 TuneTarget parseTuneTarget(const std::string& text) {
   const size_t equals = text.find('=');
   TuneTarget target;
   if (equals != std::string::npos) target.metric = text.substr(0, equals);
-  if (target.metric != "psnr" && target.metric != "edge_psnr" && target.metric != "ssim")
-    throw std::invalid_argument("--target '" + text + "': expected psnr=X, edge_psnr=X or ssim=X");
+  const std::vector<std::string>& allowed = qualityFigures();
+  if (std::find(allowed.begin(), allowed.end(), target.metric) == allowed.end())
+    throw std::invalid_argument("--target '" + text + "': expected FIGURE=X with FIGURE one of " + joined(allowed));
   try {
     target.threshold = std::stod(text.substr(equals + 1));
   } catch (const std::exception&) {
@@ -79,21 +91,17 @@ TuneChoice chooseCheapest(const std::vector<TunePoint>& points, const std::vecto
   return choice;
 }
 
-int runTune(const TuneOptions& options) {
-  if (options.targets.empty()) throw std::invalid_argument("tune needs at least one --target (e.g. edge_psnr=35)");
-  if (options.cost != "evals" && options.cost != "gpu_ms" && options.cost != "memory")
-    throw std::invalid_argument("--cost must be evals, gpu_ms or memory, got '" + options.cost + "'");
-  const std::vector<std::string> specs = expandMethodList(options.candidates.empty() ? "grid" : options.candidates);
-  json cache = json::object();
-  if (std::ifstream in(options.cache); in) cache = json::parse(in, nullptr, false);
-  if (cache.is_discarded()) cache = json::object();
+namespace {
 
+// Every candidate's figures on every frame of every scene: from the cache where it has them (keyed by
+// scene, size, ground truth, frame and renderer), measured otherwise (and added to the cache).
+std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::vector<std::string>& specs, json& cache) {
   host::HeadlessContext context;
   std::vector<TunePoint> points(specs.size());
   for (size_t i = 0; i < specs.size(); ++i) points[i].spec = specs[i];
   int measured = 0, reused = 0;
   for (const std::string& scenePath : options.scenes) {
-    Session session(context, scenePath, options.width, options.height);
+    Session session(scenePath, options.width, options.height, context.info().summary());
     const int frames = std::max(1, std::min(options.frames, session.scene.path.frameCount()));
     for (int f = 0; f < frames; ++f) {
       const int frame = f * std::max(session.scene.path.frameCount() / frames, 1);
@@ -101,49 +109,82 @@ int runTune(const TuneOptions& options) {
       key << scenePath << "|" << options.width << "x" << options.height << "|gt" << options.groundTruthSamples << "|frame" << frame
           << "|" << context.info().renderer;
       json& entry = cache[key.str()];
-      std::unique_ptr<host::GroundTruth> truth;
+      std::optional<FrameReference> reference;
       for (size_t i = 0; i < specs.size(); ++i) {
-        if (!entry.contains(specs[i])) {
-          if (!truth) truth = std::make_unique<host::GroundTruth>(host::renderGroundTruth(*session.renderer, session.camera(frame), options.groundTruthSamples));
-          session.configure(parseMethodSpec(specs[i], {}).config);
-          session.renderer->measureTime = true;
-          session.renderer->renderFrame(session.camera(frame));  // warm-up
-          session.renderer->renderFrame(session.camera(frame));
-          session.renderer->measureTime = false;
-          const retroaa::Stats stats = session.hooks->plugin().stats();
-          const DisplayImage image = DisplayImage::fromRgba8(options.width, options.height, session.renderer->readDisplay());
-          const ErrorMetrics m = compare(image, DisplayImage::fromRgba8(options.width, options.height, truth->display),
-                                         edgeMaskFromSpread(truth->lumaStdDev));
-          entry[specs[i]] = {{"psnr", m.psnrDb}, {"edge_psnr", m.edgePsnrDb}, {"ssim", m.ssim}, {"evals", stats.evaluationsPerPixel()},
-                             {"gpu_ms", session.renderer->timings().frameMs},
-                             {"memory", double(stats.bytesHeld) / (double(options.width) * options.height)}};
-          ++measured;
-          std::fprintf(stderr, "\rtune: measured %d points (%d reused)   ", measured, reused);
-        } else {
+        if (entry.contains(specs[i]) && entry[specs[i]].contains(options.cost)) {
           ++reused;
+        } else {
+          if (!reference) reference = renderReference(session, session.camera(frame), options.groundTruthSamples, nullptr);
+          retroaa::Config config = parseMethodSpec(specs[i], {}).config;
+          config.measureGpuTime = true;
+          session.configure(config, specs[i]);
+          entry[specs[i]] = figures(measure(session, session.camera(frame), *reference, 1, 1));
+          std::fprintf(stderr, "\rtune: measured %d points (%d reused)   ", ++measured, reused);
         }
         const json& e = entry[specs[i]];
-        points[i].frames.push_back({{"psnr", e["psnr"]}, {"edge_psnr", e["edge_psnr"]}, {"ssim", e["ssim"]}});
+        std::map<std::string, double> quality;
+        for (const std::string& figure : qualityFigures()) quality[figure] = e[figure].get<double>();
+        points[i].frames.push_back(quality);
         points[i].cost += e[options.cost].get<double>();
       }
     }
   }
   std::fprintf(stderr, "\rtune: measured %d points, reused %d from %s\n", measured, reused, options.cache.c_str());
   for (TunePoint& p : points) p.cost /= double(std::max<size_t>(p.frames.size(), 1));
-  std::filesystem::create_directories(std::filesystem::path(options.cache).parent_path().empty() ? "." : std::filesystem::path(options.cache).parent_path());
+  return points;
+}
+
+// The written config (a comment naming the point, then its keys), the front as SVG, the report and
+// the predicted worst-frame figures.
+void writeTuneOutputs(const TuneOptions& options, const std::vector<TunePoint>& points, const TuneChoice& choice,
+                      const std::string& report) {
+  const TunePoint& chosen = points[choice.chosen];
+  const retroaa::Config config = parseMethodSpec(chosen.spec, {}).config;
+  const auto parent = std::filesystem::path(options.out).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  std::ofstream(options.out) << "# retroaa tune: " << chosen.spec << " (" << options.cost << " " << chosen.cost << ")\n"
+                             << retroaa::toConfigText(config);
+  const std::string& primary = options.targets.front().metric;
+  std::vector<ScatterPoint> scatter;
+  for (size_t i = 0; i < points.size(); ++i)
+    scatter.push_back({points[i].spec, points[i].cost, worstFrame(points[i], primary), int(i) == choice.chosen});
+  std::ofstream(options.out + ".svg") << svgScatter(scatter, options.cost + " (mean)", "worst-frame " + primary);
+  std::ofstream(options.out + ".md") << report << "\n![front](" << std::filesystem::path(options.out).filename().string()
+                                     << ".svg)\n";
+  json worst = json::object();
+  for (const std::string& figure : qualityFigures()) worst[figure] = worstFrame(chosen, figure);
+  std::ofstream(options.out + ".json") << json{{"chosen", chosen.spec}, {"cost_figure", options.cost}, {"cost", chosen.cost},
+                                               {"worst", worst}}.dump(1) << "\n";
+}
+
+}  // namespace
+
+int runTune(const TuneOptions& options) {
+  if (options.targets.empty()) throw std::invalid_argument("tune needs at least one --target (e.g. edge_psnr_db=18)");
+  const std::vector<std::string>& costs = costFigures();
+  if (std::find(costs.begin(), costs.end(), options.cost) == costs.end())
+    throw std::invalid_argument("--cost must be one of " + joined(costs) + ", got '" + options.cost + "'");
+  const std::vector<std::string> specs = expandMethodList(options.candidates.empty() ? "grid" : options.candidates);
+  json cache = json::object();
+  if (std::ifstream in(options.cache); in) cache = json::parse(in, nullptr, false);
+  if (cache.is_discarded()) cache = json::object();
+  const std::vector<TunePoint> points = measureCandidates(options, specs, cache);
+  const auto cacheParent = std::filesystem::path(options.cache).parent_path();
+  std::filesystem::create_directories(cacheParent.empty() ? "." : cacheParent);
   std::ofstream(options.cache) << cache.dump(1) << "\n";
 
   const TuneChoice choice = chooseCheapest(points, options.targets);
   auto describe = [&](int i) {
     std::ostringstream s;
     s << "`" << points[i].spec << "`: " << options.cost << " " << points[i].cost;
-    for (const char* m : {"psnr", "edge_psnr", "ssim"}) s << ", worst " << m << " " << worstFrame(points[i], m);
+    for (const std::string& figure : qualityFigures()) s << ", worst " << figure << " " << worstFrame(points[i], figure);
     return s.str();
   };
   std::ostringstream report;
   report << "# retroaa tune\n\nTargets:";
   for (const TuneTarget& t : options.targets) report << " " << t.metric << " ≥ " << t.threshold;
-  report << " on every frame; cost: " << options.cost << ".\n\nPareto front (cost against the worst frame of " << options.targets.front().metric << "):\n\n";
+  report << " on every frame; cost: " << options.cost << ".\n\nPareto front (cost against the worst frame of "
+         << options.targets.front().metric << "):\n\n";
   for (int i : choice.front) report << "- " << describe(i) << (i == choice.chosen ? "  ← chosen" : "") << "\n";
   if (!choice.feasible) {
     report << "\nNo setting meets the targets. Closest: " << describe(choice.chosen) << "\n";
@@ -153,21 +194,7 @@ int runTune(const TuneOptions& options) {
   }
   report << "\nChosen: " << describe(choice.chosen) << "\n";
   if (choice.nextCheaper >= 0) report << "The next cheaper point on the front, " << describe(choice.nextCheaper) << ", misses a target.\n";
-  const retroaa::Config config = parseMethodSpec(points[choice.chosen].spec, {}).config;
-  const auto parent = std::filesystem::path(options.out).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  std::ofstream(options.out) << "# retroaa tune: " << points[choice.chosen].spec << " (" << options.cost << " " << points[choice.chosen].cost << ")\n"
-                             << retroaa::toConfigText(config);
-  std::vector<ScatterPoint> scatter;
-  for (size_t i = 0; i < points.size(); ++i)
-    scatter.push_back({points[i].spec, points[i].cost, worstFrame(points[i], options.targets.front().metric), int(i) == choice.chosen});
-  std::ofstream(options.out + ".svg") << svgScatter(scatter, options.cost + " (mean)", "worst-frame " + options.targets.front().metric);
-  report << "\n![front](" << std::filesystem::path(options.out).filename().string() << ".svg)\n";
-  std::ofstream(options.out + ".md") << report.str();
-  std::ofstream(options.out + ".json") << json{{"chosen", points[choice.chosen].spec}, {"cost", points[choice.chosen].cost},
-                                               {"worst", {{"psnr", worstFrame(points[choice.chosen], "psnr")},
-                                                          {"edge_psnr", worstFrame(points[choice.chosen], "edge_psnr")},
-                                                          {"ssim", worstFrame(points[choice.chosen], "ssim")}}}}.dump(1) << "\n";
+  writeTuneOutputs(options, points, choice, report.str());
   std::printf("%s", report.str().c_str());
   std::printf("tune: wrote %s (%s)\n", options.out.c_str(), points[choice.chosen].spec.c_str());
   return kExitOk;

@@ -7,13 +7,13 @@
 
 namespace app {
 
-// A quality target: `metric` is one of psnr, edge_psnr, ssim (at least `threshold`) or flicker-free
-// metrics added later; it must hold on every frame of every scene.
+// A quality target: `metric` is a quality figure (measure.h: psnr_db, edge_psnr_db, ssim) that must
+// reach `threshold` on every frame of every scene.
 struct TuneTarget {
   std::string metric;
   double threshold = 0;
 };
-TuneTarget parseTuneTarget(const std::string& text);  // "edge_psnr=35"; throws std::invalid_argument
+TuneTarget parseTuneTarget(const std::string& text);  // "edge_psnr_db=35"; throws std::invalid_argument
 
 // One candidate setting, measured: its cost (mean over frames) and its metrics on every frame.
 struct TunePoint {
@@ -35,7 +35,7 @@ TuneChoice chooseCheapest(const std::vector<TunePoint>& points, const std::vecto
 struct TuneOptions {
   std::vector<std::string> scenes = {"default"};
   std::vector<TuneTarget> targets;
-  std::string cost = "evals";  // evals | gpu_ms | memory
+  std::string cost = "evals_per_pixel";  // a cost figure (measure.h): evals_per_pixel | gpu_ms | plugin_bytes_per_pixel
   std::string candidates;      // comma-separated specs; empty: the built-in grid
   int width = 160, height = 120, groundTruthSamples = 4, frames = 4;
   std::string out = "out/tune/config.cfg";

@@ -1,0 +1,96 @@
+#include "measure.h"
+
+#include "ground_truth.h"
+
+#include <algorithm>
+
+namespace app {
+
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+}  // namespace
+
+FrameReference renderReference(Session& session, const host::Camera& camera, int samplesPerAxis,
+                               const retroaa::Config* perSampleBase) {
+  const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, samplesPerAxis);
+  const int w = session.renderer->width(), h = session.renderer->height();
+  FrameReference reference{truth.display, DisplayImage::fromRgba8(w, h, truth.display),
+                           edgeMaskFromSpread(truth.lumaStdDev), std::nullopt};
+  if (perSampleBase) {
+    retroaa::Config config = *perSampleBase;
+    config.method = retroaa::Method::PerSample;
+    config.fxaa = false;
+    session.configure(config);
+    session.renderer->renderFrame(camera);
+    reference.perSample = DisplayImage::fromRgba8(w, h, session.renderer->readDisplay());
+  }
+  return reference;
+}
+
+Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
+                    int warmUpFrames) {
+  host::Renderer& renderer = *session.renderer;
+  renderer.measureTime = true;
+  for (int i = 0; i < warmUpFrames; ++i) renderer.renderFrame(camera);
+  std::vector<double> frameMs;
+  std::map<std::string, std::vector<double>> passMs;
+  for (int i = 0; i < std::max(timedFrames, 1); ++i) {
+    renderer.renderFrame(camera);
+    const host::HostTimings& t = renderer.timings();
+    frameMs.push_back(t.frameMs);
+    passMs["model_pass"].push_back(t.modelPassMs);
+    passMs["lighting"].push_back(t.lightingMs);
+    passMs["tonemap_post"].push_back(t.tonemapMs);
+    std::map<std::string, double> frameTotals;  // a pass runs once per slice: sum them per frame
+    for (const retroaa::PassTime& pass : session.plugin().stats().passes) frameTotals["plugin." + pass.name] += pass.ms;
+    for (const auto& [name, ms] : frameTotals) passMs[name].push_back(ms);
+  }
+  renderer.measureTime = false;
+  Measurement m;
+  m.stats = session.plugin().stats();
+  m.display = renderer.readDisplay();
+  m.image = DisplayImage::fromRgba8(renderer.width(), renderer.height(), m.display);
+  m.gpuMs = median(frameMs);
+  for (const auto& [name, values] : passMs) m.passMs[name] = median(values);
+  m.error = compare(m.image, reference.truth, reference.edges);
+  if (reference.perSample) m.psnrVsPerSampleDb = compare(m.image, *reference.perSample, {}).psnrDb;
+  return m;
+}
+
+nlohmann::json figures(const Measurement& m) {
+  nlohmann::json out = {
+      {"samples", m.stats.samples},
+      {"evals_per_pixel", m.stats.evaluationsPerPixel()},
+      {"lighting_evaluations", m.stats.lightingEvaluations},
+      {"slices", m.stats.slices},
+      {"gpu_ms", m.gpuMs},
+      {"passes_ms", m.passMs},
+      {"plugin_bytes", m.stats.bytesHeld},
+      {"plugin_bytes_per_pixel", m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0},
+      {"budget_scale", m.stats.budgetScale},
+      {"psnr_db", m.error.psnrDb},
+      {"edge_psnr_db", m.error.edgePsnrDb},
+      {"ssim", m.error.ssim},
+      {"max_abs_error", m.error.maxAbsError},
+  };
+  if (m.psnrVsPerSampleDb) out["psnr_vs_per_sample_db"] = *m.psnrVsPerSampleDb;
+  return out;
+}
+
+const std::vector<std::string>& qualityFigures() {
+  static const std::vector<std::string> names = {"psnr_db", "edge_psnr_db", "ssim"};
+  return names;
+}
+
+const std::vector<std::string>& costFigures() {
+  static const std::vector<std::string> names = {"evals_per_pixel", "gpu_ms", "plugin_bytes_per_pixel"};
+  return names;
+}
+
+}  // namespace app

@@ -1,0 +1,52 @@
+// The one measurement routine of bench, regress and tune: render a method on a frame, time it, count
+// it, compare it; and the one set of field names every JSON and CSV report uses for the result.
+#pragma once
+
+#include "metrics.h"
+#include "session.h"
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace app {
+
+// What a frame's renders are judged against.
+struct FrameReference {
+  std::vector<uint8_t> truthRgba;        // ground truth, display RGBA8 top-down
+  DisplayImage truth;                    // the same as metric values
+  std::vector<uint8_t> edges;            // ground-truth edge pixels (metrics.h)
+  std::optional<DisplayImage> perSample;  // the per-sample render at the run's sample count
+};
+// Ground truth of `camera` (`samplesPerAxis`² lit supersamples per pixel) and, with
+// `perSampleBase`, the per-sample render under that config (its method and FXAA replaced).
+FrameReference renderReference(Session& session, const host::Camera& camera, int samplesPerAxis,
+                               const retroaa::Config* perSampleBase);
+
+struct Measurement {
+  std::vector<uint8_t> display;  // RGBA8 top-down, of the last frame
+  DisplayImage image;
+  retroaa::Stats stats;          // of the last frame
+  double gpuMs = 0;              // the host's frame on the GPU: median of the timed frames
+  std::map<std::string, double> passMs;  // medians: model_pass, lighting, tonemap_post, plugin.<pass>
+  ErrorMetrics error;                    // against the ground truth, edge figures on its edges
+  std::optional<double> psnrVsPerSampleDb;
+};
+// Renders `camera` with the session's config: `warmUpFrames` frames first (shader compilation,
+// first-touch allocation), then `timedFrames` with GPU timers; compares the last.
+Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
+                    int warmUpFrames);
+
+// The figures of a measurement by the names every report uses: samples, evals_per_pixel,
+// lighting_evaluations, slices, gpu_ms, passes_ms, plugin_bytes, plugin_bytes_per_pixel, budget_scale,
+// psnr_db, edge_psnr_db, ssim, max_abs_error, psnr_vs_per_sample_db (when measured).
+nlohmann::json figures(const Measurement& measurement);
+
+// The quality figures a target can name, and the cost figures tune can minimise.
+const std::vector<std::string>& qualityFigures();  // psnr_db, edge_psnr_db, ssim
+const std::vector<std::string>& costFigures();     // evals_per_pixel, gpu_ms, plugin_bytes_per_pixel
+
+}  // namespace app
