@@ -29,10 +29,11 @@ class EveryPixelTechnique : public retroaa::Technique {
   static retroaa::Result<std::unique_ptr<retroaa::Technique>> create(retroaa::PluginContext& context,
                                                                      retroaa::SharedTargets& shared) {
     auto technique = std::make_unique<EveryPixelTechnique>();
-    auto program = context.shaders->program(
-        "common/fullscreen.vert", "edge/detect_edges.frag",
-        shared.msaa->shaderDefines(context.layout, false) + retroaa::defineLine("EDGE_DETECTOR", int(retroaa::EdgeDetector::EveryPixel)) +
-            retroaa::defineLine("STENCIL_EXPORT", context.capabilities.stencilExport));
+    auto program =
+        context.shaders->program("common/fullscreen.vert", "edge/detect_edges.frag",
+                                 shared.msaa->shaderDefines(context.layout, false) +
+                                     retroaa::defineLine("EDGE_DETECTOR", int(retroaa::EdgeDetector::EveryPixel)) +
+                                     retroaa::defineLine("STENCIL_EXPORT", context.capabilities.stencilExport));
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
     return std::unique_ptr<retroaa::Technique>(std::move(technique));
@@ -49,8 +50,8 @@ class EveryPixelTechnique : public retroaa::Technique {
 
 void registerTestTechnique() {
   static const bool once = [] {
-    retroaa::registerTechnique({{kTestMethod, "test-every-pixel", "every sample lit (test)", true, 1, "test-every-pixel",
-                                 "test-every-pixel", "test-every-pixel"},
+    retroaa::registerTechnique({{kTestMethod, "test-every-pixel", "every sample lit (test)", true, 1,
+                                 "test-every-pixel", "test-every-pixel", "test-every-pixel"},
                                 retroaa::kStorageMsaaGBuffer | retroaa::kStorageSlices,
                                 EveryPixelTechnique::create});
     return true;
@@ -58,6 +59,11 @@ void registerTestTechnique() {
   (void)once;
 }
 // -------------------------------------------------------------------------------------------------
+
+void expectError(const retroaa::Error& error, retroaa::ErrorCode code, const std::string& fragment) {
+  EXPECT_EQ(error.code, code) << error.message;
+  EXPECT_NE(error.message.find(fragment), std::string::npos) << error.message;
+}
 
 }  // namespace
 
@@ -100,7 +106,8 @@ TEST(Registry, EveryEnumValueHasOneRowAndEveryRowParses) {
     for (const char* specs : {row.sweepSpecs, row.regressSpec, row.tuneSpecs})
       for (const std::string& spec : app::expandMethodList(specs)) {
         const retroaa::Config parsed = app::parseMethodSpec(spec, {}).config;
-        EXPECT_TRUE(parsed.method == row.method || (parsed.method == retroaa::Method::Resolve && spec.find('+') != std::string::npos))
+        EXPECT_TRUE(parsed.method == row.method ||
+                    (parsed.method == retroaa::Method::Resolve && spec.find('+') != std::string::npos))
             << spec;
       }
   }
@@ -134,8 +141,7 @@ TEST(PluginErrors, ACodeBuiltConfigIsCheckedByTheParsersRules) {
     c.spoil(config);
     const retroaa::Status checked = retroaa::validateConfig(config);
     ASSERT_FALSE(checked) << c.key;
-    EXPECT_EQ(checked.error().code, retroaa::ErrorCode::InvalidConfig);
-    EXPECT_NE(checked.error().message.find(std::string("'") + c.key + "'"), std::string::npos) << checked.error().message;
+    expectError(checked.error(), retroaa::ErrorCode::InvalidConfig, std::string("'") + c.key + "'");
     // reconfigure refuses it and changes nothing; create refuses it too.
     const retroaa::Status refused = plugin.reconfigure(config);
     ASSERT_FALSE(refused) << c.key;
@@ -162,8 +168,7 @@ TEST(PluginErrors, ShadeWithoutResolveIsAWrongCallOrder) {
   host.render("resolve");  // a whole frame: resolve() then shade()
   const retroaa::Status status = plugin.shade(lighting);
   ASSERT_FALSE(status);
-  EXPECT_EQ(status.error().code, retroaa::ErrorCode::WrongCallOrder);
-  EXPECT_NE(status.error().message.find("resolve()"), std::string::npos) << status.error().message;
+  expectError(status.error(), retroaa::ErrorCode::WrongCallOrder, "resolve()");
   EXPECT_EQ(lightingRuns, 0);
   // Methods without an MSAA G-buffer have nothing to resolve: shading alone is fine.
   host.render("fxaa");
@@ -179,8 +184,7 @@ TEST(PluginErrors, ATargetTheDriverRefusesIsAnIncompleteFramebuffer) {
   description.config.method = retroaa::Method::Resolve;
   auto created = retroaa::Plugin::create(description);
   ASSERT_FALSE(created);
-  EXPECT_EQ(created.error().code, retroaa::ErrorCode::IncompleteFramebuffer);
-  EXPECT_NE(created.error().message.find("msaa_gbuffer"), std::string::npos) << created.error().message;
+  expectError(created.error(), retroaa::ErrorCode::IncompleteFramebuffer, "msaa_gbuffer");
 }
 
 TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {
@@ -192,8 +196,7 @@ TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {
   ASSERT_TRUE(built) << built.error().message;
   auto lacking = library.program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uAtLeast", "uNotDeclared"});
   ASSERT_FALSE(lacking);
-  EXPECT_EQ(lacking.error().code, retroaa::ErrorCode::ShaderError);
-  EXPECT_NE(lacking.error().message.find("'uNotDeclared'"), std::string::npos) << lacking.error().message;
+  expectError(lacking.error(), retroaa::ErrorCode::ShaderError, "'uNotDeclared'");
   EXPECT_NE(lacking.error().message.find("slices/mark_pixels.frag"), std::string::npos) << lacking.error().message;
   EXPECT_EQ(counter.live, 1) << "the refused program is deleted";
 
@@ -240,8 +243,7 @@ TEST(PluginErrors, AContextBelowGl45IsUnsupported) {
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, previous);
   eglDestroyContext(display, es);
   ASSERT_FALSE(created);
-  EXPECT_EQ(created.error().code, retroaa::ErrorCode::UnsupportedContext);
-  EXPECT_NE(created.error().message.find("needs an OpenGL 4.5 core context"), std::string::npos) << created.error().message;
+  expectError(created.error(), retroaa::ErrorCode::UnsupportedContext, "needs an OpenGL 4.5 core context");
 }
 
 TEST(PluginErrors, AnInconsistentLayoutIsInvalid) {
@@ -251,6 +253,5 @@ TEST(PluginErrors, AnInconsistentLayoutIsInvalid) {
   description.layout.attachments[1].role = retroaa::AttachmentRole::Other;  // no ViewPosition left
   auto created = retroaa::Plugin::create(description);
   ASSERT_FALSE(created);
-  EXPECT_EQ(created.error().code, retroaa::ErrorCode::InvalidLayout);
-  EXPECT_NE(created.error().message.find("ViewPosition"), std::string::npos) << created.error().message;
+  expectError(created.error(), retroaa::ErrorCode::InvalidLayout, "ViewPosition");
 }

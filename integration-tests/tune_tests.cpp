@@ -22,10 +22,10 @@ app::TunePoint point(const std::string& spec, double cost, std::vector<double> e
 
 TEST(TuneSearch, FindsTheCheapestPointThatMeetsTheTargetOnEveryFrame) {
   const std::vector<app::TunePoint> grid = {
-      point("a", 1.0, {20, 30}),   // cheap, one bad frame
-      point("b", 2.0, {26, 27}),   // meets 25 on every frame
-      point("c", 1.5, {24, 40}),   // good on average, misses one frame
-      point("d", 4.0, {35, 35}),   // best, dearest
+      point("a", 1.0, {20, 30}),    // cheap, one bad frame
+      point("b", 2.0, {26, 27}),    // meets 25 on every frame
+      point("c", 1.5, {24, 40}),    // good on average, misses one frame
+      point("d", 4.0, {35, 35}),    // best, dearest
       point("e", 2.0, {25.5, 26}),  // same cost as b, worse worst frame
   };
   const app::TuneChoice choice = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr_db=25")});
@@ -38,7 +38,8 @@ TEST(TuneSearch, FindsTheCheapestPointThatMeetsTheTargetOnEveryFrame) {
   const app::TuneChoice strict = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr_db=36")});
   EXPECT_FALSE(strict.feasible);
   EXPECT_EQ(grid[strict.chosen].spec, "d");  // the closest
-  const app::TuneChoice two = app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr_db=25"), app::parseTuneTarget("ssim=0.95")});
+  const app::TuneChoice two =
+      app::chooseCheapest(grid, {app::parseTuneTarget("edge_psnr_db=25"), app::parseTuneTarget("ssim=0.95")});
   EXPECT_FALSE(two.feasible);
   EXPECT_THROW(app::parseTuneTarget("flicker=3"), std::invalid_argument);
 }
@@ -46,8 +47,10 @@ TEST(TuneSearch, FindsTheCheapestPointThatMeetsTheTargetOnEveryFrame) {
 TEST(Tune, TheWrittenConfigReproducesThePredictedFigures) {
   const fs::path dir = fs::temp_directory_path() / "retroaa_tune";
   fs::remove_all(dir);
-  const std::string common = "tune --frames 2 --width 96 --height 72 --gt-samples 3 --candidates off,fxaa,resolve,edge,aggregate,per-sample --cache " +
-                             (dir / "cache.json").string() + " --out " + (dir / "tuned.cfg").string();
+  const std::string common =
+      "tune --frames 2 --width 96 --height 72 --gt-samples 3 --candidates off,fxaa,resolve,edge,aggregate,per-sample "
+      "--cache " +
+      (dir / "cache.json").string() + " --out " + (dir / "tuned.cfg").string();
   const CliRun run = runCli(common + " --target edge_psnr_db=16.5");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("tune: measured 12 points, reused 0"), std::string::npos) << run.output;
@@ -63,8 +66,9 @@ TEST(Tune, TheWrittenConfigReproducesThePredictedFigures) {
     const host::Camera camera = host.scene.path.at(host.scene.camera, frame);
     const host::GroundTruth truth = host::renderGroundTruth(*host.renderer, camera, 3);
     host.renderer->renderFrame(camera);
-    const app::ErrorMetrics m = app::compare(app::DisplayImage::fromRgba8(96, 72, host.renderer->readDisplay()),
-                                             app::DisplayImage::fromRgba8(96, 72, truth.display), app::edgeMaskFromSpread(truth.lumaStdDev));
+    const app::ErrorMetrics m =
+        app::compare(app::DisplayImage::fromRgba8(96, 72, host.renderer->readDisplay()),
+                     app::DisplayImage::fromRgba8(96, 72, truth.display), app::edgeMaskFromSpread(truth.lumaStdDev));
     worst = std::min(worst, m.edgePsnrDb);
   }
   EXPECT_NEAR(worst, predicted["worst"]["edge_psnr_db"].get<double>(), 0.05) << predicted.dump();
@@ -76,19 +80,24 @@ TEST(Tune, TheWrittenConfigReproducesThePredictedFigures) {
   // And an impossible target is exit 1 naming the closest setting.
   const CliRun impossible = runCli(common + " --target edge_psnr_db=60");
   EXPECT_EQ(impossible.exitCode, 1) << impossible.output;
-  EXPECT_NE(impossible.output.find("tune: no setting meets the targets; the closest is"), std::string::npos) << impossible.output;
+  EXPECT_NE(impossible.output.find("tune: no setting meets the targets; the closest is"), std::string::npos)
+      << impossible.output;
 }
 
 TEST(Tune, PresetsAreWhatTheTunerChoosesToday) {
   // `make presets` ran these exact commands; the committed presets must still be their answer.
-  const std::pair<const char*, const char*> presets[] = {{"low", "16.0"}, {"medium", "17.5"}, {"high", "18.5"}, {"ultra", "18.7"}};
+  const std::pair<const char*, const char*> presets[] = {
+      {"low", "16.0"}, {"medium", "17.5"}, {"high", "18.5"}, {"ultra", "18.7"}};
   const fs::path dir = fs::temp_directory_path() / "retroaa_presets";
   for (const auto& [name, target] : presets) {
-    const CliRun run = runCli(std::string("tune --scenes default,") + RETROAA_SOURCE_DIR +
-                              "/integration-tests/scenes/fence.json --frames 3 --width 160 --height 120 --gt-samples 4 --cost evals_per_pixel"
-                              " --cache " + (dir / "cache.json").string() + " --out " + (dir / name).string() + ".cfg --target edge_psnr_db=" + target);
+    const CliRun run = runCli(
+        std::string("tune --scenes default,") + RETROAA_SOURCE_DIR +
+        "/integration-tests/scenes/fence.json --frames 3 --width 160 --height 120 --gt-samples 4 --cost evals_per_pixel"
+        " --cache " +
+        (dir / "cache.json").string() + " --out " + (dir / name).string() + ".cfg --target edge_psnr_db=" + target);
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    std::ifstream committed(std::string(RETROAA_SOURCE_DIR) + "/presets/" + name + ".cfg"), fresh(dir / (std::string(name) + ".cfg"));
+    std::ifstream committed(std::string(RETROAA_SOURCE_DIR) + "/presets/" + name + ".cfg"),
+        fresh(dir / (std::string(name) + ".cfg"));
     std::string committedHeader, freshHeader;
     std::getline(committed, committedHeader);
     std::getline(fresh, freshHeader);

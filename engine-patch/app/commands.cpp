@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,7 +20,6 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
-#include <unistd.h>
 #include <stdexcept>
 
 namespace app {
@@ -70,7 +70,8 @@ MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base)
     const size_t equals = setting.find('=');
     if (equals == std::string::npos)
       throw std::invalid_argument("method '" + spec + "': expected key=value after '@', got '" + setting + "'");
-    const retroaa::Status status = retroaa::applySetting(out.config, setting.substr(0, equals), setting.substr(equals + 1));
+    const retroaa::Status status =
+        retroaa::applySetting(out.config, setting.substr(0, equals), setting.substr(equals + 1));
     if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
     rest = rest.substr(0, at);
   }
@@ -119,7 +120,8 @@ int runRender(const RenderOptions& options) {
   Session session(options.scene, options.width, options.height, context.info().summary());
   const host::Camera camera = session.camera(options.frame);
   const std::string ext = lowerExtension(options.out);
-  if (ext != ".png" && ext != ".exr") throw std::invalid_argument("--out must end in .png or .exr, got '" + options.out + "'");
+  if (ext != ".png" && ext != ".exr")
+    throw std::invalid_argument("--out must end in .png or .exr, got '" + options.out + "'");
   ensureParent(options.out);
 
   std::vector<uint8_t> display;
@@ -134,14 +136,15 @@ int runRender(const RenderOptions& options) {
     display = session.renderer->readDisplay();
     radiance = session.renderer->readLight();
   }
-  const std::string methodName = options.method.empty() ? retroaa::toString(session.plugin().config().method) : options.method;
+  const std::string methodName =
+      options.method.empty() ? retroaa::toString(session.plugin().config().method) : options.method;
   auto meta = session.metadata(methodName);
   if (!options.show.empty()) {
     if (options.show != "edges" && options.show != "samples" && options.show != "aggregates")
       throw std::invalid_argument("--show must be edges, samples or aggregates, got '" + options.show + "'");
     const retroaa::Stats stats = session.plugin().stats();
-    display = visualiseCounts(options.show, session.plugin().readSliceCounts(), display, options.width,
-                              options.height, std::max(stats.samples, 1));
+    display = visualiseCounts(options.show, session.plugin().readSliceCounts(), display, options.width, options.height,
+                              std::max(stats.samples, 1));
     std::printf("%s: %.3f lighting evaluations per pixel\n", options.show.c_str(), stats.evaluationsPerPixel());
   }
   if (ext == ".exr")
@@ -189,7 +192,8 @@ void addTimeRatios(json& rows) {
 // The bench table, for the terminal and the Markdown report.
 std::string benchTable(const json& rows) {
   std::ostringstream table;
-  table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | plugin B/px | PSNR dB | edge PSNR dB | "
+  table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | plugin B/px | PSNR dB | edge "
+           "PSNR dB | "
            "SSIM | max err | PSNR vs per-sample |\n"
         << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   auto ratio = [](const json& value) {
@@ -201,8 +205,9 @@ std::string benchTable(const json& rows) {
   for (const auto& row : rows) {
     table << std::fixed << "| " << row["method"].get<std::string>() << " | " << row["samples"].get<int>() << " | "
           << std::setprecision(3) << row["evals_per_pixel"].get<double>() << " | " << std::setprecision(2)
-          << row["gpu_ms"].get<double>() << " | " << ratio(row["time_vs_off"]) << " | " << ratio(row["time_vs_per_sample"])
-          << " | " << std::setprecision(1) << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
+          << row["gpu_ms"].get<double>() << " | " << ratio(row["time_vs_off"]) << " | "
+          << ratio(row["time_vs_per_sample"]) << " | " << std::setprecision(1)
+          << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
           << row["psnr_db"].get<double>() << " | " << row["edge_psnr_db"].get<double>() << " | " << std::setprecision(4)
           << row["ssim"].get<double>() << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " | "
           << std::setprecision(2) << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
@@ -213,9 +218,18 @@ std::string benchTable(const json& rows) {
 void writeBenchCsv(const std::string& path, const json& rows) {
   ensureParent(path);
   std::ofstream csv(path);
-  const std::vector<std::string> columns = {"method", "samples", "evals_per_pixel", "gpu_ms", "time_vs_off",
-                                            "time_vs_per_sample", "plugin_bytes_per_pixel", "psnr_db", "edge_psnr_db",
-                                            "ssim", "max_abs_error", "psnr_vs_per_sample_db"};
+  const std::vector<std::string> columns = {"method",
+                                            "samples",
+                                            "evals_per_pixel",
+                                            "gpu_ms",
+                                            "time_vs_off",
+                                            "time_vs_per_sample",
+                                            "plugin_bytes_per_pixel",
+                                            "psnr_db",
+                                            "edge_psnr_db",
+                                            "ssim",
+                                            "max_abs_error",
+                                            "psnr_vs_per_sample_db"};
   for (size_t c = 0; c < columns.size(); ++c) csv << columns[c] << (c + 1 == columns.size() ? "\n" : ",");
   for (const auto& row : rows)
     for (size_t c = 0; c < columns.size(); ++c) {
@@ -231,8 +245,9 @@ void writeBenchReport(const BenchOptions& options, const json& document, const s
      << "Renderer: " << document["renderer_summary"].get<std::string>() << "  \n"
      << "Size " << options.width << "x" << options.height << ", ground truth " << options.groundTruthSamples << "x"
      << options.groundTruthSamples << " supersamples per pixel lit per sample (box filter on linear radiance), "
-     << document["edge_pixels"] << " edge pixels. Errors on tonemapped display values in [0,1]; times are the median of "
-     << options.repeats << " frames (GPU timer queries).\n\n"
+     << document["edge_pixels"]
+     << " edge pixels. Errors on tonemapped display values in [0,1]; times are the median of " << options.repeats
+     << " frames (GPU timer queries).\n\n"
      << table << "\n";
   if (options.imagesDirectory.empty()) return;
   const auto relative =
@@ -250,7 +265,8 @@ void writeReferenceImages(const std::string& directory, const Session& session, 
   std::filesystem::create_directories(directory);
   writeImage8(directory + "/ground-truth.png", w, h, reference.truthRgba, session.metadata("ground-truth"));
   std::vector<uint8_t> mask(size_t(w) * h * 4, 255);
-  for (size_t p = 0; p < reference.edges.size(); ++p) mask[p * 4] = mask[p * 4 + 1] = mask[p * 4 + 2] = reference.edges[p] ? 255 : 0;
+  for (size_t p = 0; p < reference.edges.size(); ++p)
+    mask[p * 4] = mask[p * 4 + 1] = mask[p * 4 + 2] = reference.edges[p] ? 255 : 0;
   writeImage8(directory + "/edge-mask.png", w, h, mask);
 }
 
@@ -258,7 +274,8 @@ void writeReferenceImages(const std::string& directory, const Session& session, 
 
 int runBench(const BenchOptions& options) {
   std::vector<MethodSpec> specs;
-  for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
+  for (const std::string& name : expandMethodList(options.methods))
+    specs.push_back(parseMethodSpec(name, options.base));
   if (specs.empty()) throw std::invalid_argument("--methods names no method");
 
   host::HeadlessContext context;
@@ -289,13 +306,19 @@ int runBench(const BenchOptions& options) {
   }
   addTimeRatios(rows);
   const host::ContextInfo& info = context.info();
-  const json document = {
-      {"scene", session.scene.name}, {"width", w}, {"height", h}, {"frame", options.frame},
-      {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
-      {"edge_pixels", std::count(reference.edges.begin(), reference.edges.end(), 1)},
-      {"renderer", info.renderer}, {"renderer_summary", info.summary()}, {"gl_version", info.version},
-      {"egl_platform", info.platform}, {"gl_max_samples", info.maxSamples},
-      {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"}, {"rows", rows}};
+  const json document = {{"scene", session.scene.name},
+                         {"width", w},
+                         {"height", h},
+                         {"frame", options.frame},
+                         {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
+                         {"edge_pixels", std::count(reference.edges.begin(), reference.edges.end(), 1)},
+                         {"renderer", info.renderer},
+                         {"renderer_summary", info.summary()},
+                         {"gl_version", info.version},
+                         {"egl_platform", info.platform},
+                         {"gl_max_samples", info.maxSamples},
+                         {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
+                         {"rows", rows}};
   const std::string table = benchTable(rows);
   std::printf("%s", table.c_str());
   std::printf("renderer: %s\n", info.summary().c_str());
@@ -326,14 +349,14 @@ int runRecord(const RecordOptions& options) {
                     {"position", {position.x, position.y, position.z}},
                     {"target", {camera.target.x, camera.target.y, camera.target.z}}});
   }
-  const nlohmann::json path = {
-      {"comment", "recorded by retroaa record: " + std::to_string(options.orbitDegrees) + " degree orbit, dolly " +
-                      std::to_string(options.dolly)},
-      {"fps", options.framesPerSecond},
-      {"keys", keys}};
+  const nlohmann::json path = {{"comment", "recorded by retroaa record: " + std::to_string(options.orbitDegrees) +
+                                               " degree orbit, dolly " + std::to_string(options.dolly)},
+                               {"fps", options.framesPerSecond},
+                               {"keys", keys}};
   ensureParent(options.out);
   std::ofstream(options.out) << path.dump(1) << "\n";
-  std::printf("wrote %s: %d frames\n", options.out.c_str(), int(std::floor(options.seconds * options.framesPerSecond)) + 1);
+  std::printf("wrote %s: %d frames\n", options.out.c_str(),
+              int(std::floor(options.seconds * options.framesPerSecond)) + 1);
   return kExitOk;
 }
 
@@ -350,7 +373,9 @@ int runSoak(const SoakOptions& options) {
   host::HeadlessContext context;
   Session session("default", options.width, options.height, context.info().summary());
   const std::vector<std::string> methods = expandMethodList("all");
-  const int sizes[3][2] = {{options.width, options.height}, {options.width + 17, options.height + 9}, {options.width / 2 + 3, options.height / 2 + 5}};
+  const int sizes[3][2] = {{options.width, options.height},
+                           {options.width + 17, options.height + 9},
+                           {options.width / 2 + 3, options.height / 2 + 5}};
   const int samples[] = {1, 2, 4, 8};
   session.configure(retroaa::Config{});
   session.renderer->renderFrame(session.camera(0));
@@ -378,9 +403,12 @@ int runSoak(const SoakOptions& options) {
   const int objectsAtEnd = session.plugin().stats().glObjectsHeld;
   const int glErrors = context.debugErrorCount() - errorsAtStart;
   const double growth = residentPeak - residentAfterWarmUp;
-  std::printf("soak: %d frames, %zu methods x 4 sample counts x 5 detectors, 3 sizes\n", options.frames, methods.size());
-  std::printf("soak: plugin GL objects %d at start, %d at end; GL errors %d; resident memory %.1f MiB after warm-up, peak %.1f MiB (growth %.1f, bound %.0f)\n",
-              objectsAtStart, objectsAtEnd, glErrors, residentAfterWarmUp, residentPeak, growth, options.maxGrowthMiB);
+  std::printf("soak: %d frames, %zu methods x 4 sample counts x 5 detectors, 3 sizes\n", options.frames,
+              methods.size());
+  std::printf(
+      "soak: plugin GL objects %d at start, %d at end; GL errors %d; resident memory %.1f MiB after warm-up, peak %.1f "
+      "MiB (growth %.1f, bound %.0f)\n",
+      objectsAtStart, objectsAtEnd, glErrors, residentAfterWarmUp, residentPeak, growth, options.maxGrowthMiB);
   const bool ok = objectsAtEnd == objectsAtStart && glErrors == 0 && growth <= options.maxGrowthMiB &&
                   session.hooks->lastError().empty();
   if (!session.hooks->lastError().empty()) std::printf("soak: plugin error: %s\n", session.hooks->lastError().c_str());

@@ -28,8 +28,8 @@ std::vector<std::string> expandMethodList(const std::string& list);
 
 struct RenderOptions {
   std::string scene = "default";
-  std::string method;          // a MethodSpec, "ground-truth", or empty: the config's own method
-  retroaa::Config base;        // from --config / --set / FSO flags
+  std::string method;    // a MethodSpec, "ground-truth", or empty: the config's own method
+  retroaa::Config base;  // from --config / --set / FSO flags
   int width = 320, height = 240;
   int frame = -1;              // camera path frame; -1: the scene's camera
   int groundTruthSamples = 8;  // per axis, for --method ground-truth and --heatmap
@@ -52,7 +52,7 @@ struct BenchOptions {
   int width = 320, height = 240;
   int frame = -1;
   int groundTruthSamples = 8;
-  int repeats = 3;             // timed frames per method; the median is reported
+  int repeats = 3;                // timed frames per method; the median is reported
   std::string json, csv, report;  // outputs (any may be empty)
   std::string imagesDirectory;    // per-method PNGs and heat maps (optional)
 };

@@ -27,7 +27,8 @@ retroaa::Config buildConfig(const std::string& configFile, const std::vector<std
   auto check = [](const retroaa::Status& status) {
     if (!status) throw std::invalid_argument(status.error().message);
   };
-  if (const char* env = std::getenv("RETROAA_SETTINGS")) check(retroaa::applySettingsList(config, env, "RETROAA_SETTINGS"));
+  if (const char* env = std::getenv("RETROAA_SETTINGS"))
+    check(retroaa::applySettingsList(config, env, "RETROAA_SETTINGS"));
   if (!configFile.empty()) check(retroaa::applyConfigFile(config, configFile));
   std::vector<std::string> warnings;
   if (!msaa.empty()) check(retroaa::applyFsoFlag(config, "-msaa", msaa, warnings));
@@ -72,13 +73,16 @@ void addRender(CommandLine& line) {
   auto options = std::make_shared<app::RenderOptions>();
   CLI::App* sub = line.cli.add_subcommand("render", "render one frame headless");
   sub->add_option("--scene", options->scene, "scene file, or 'default'");
-  sub->add_option("--method", options->method, "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
+  sub->add_option("--method", options->method,
+                  "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
   line.addSizeOptions(sub, options->width, options->height);
   sub->add_option("--frame", options->frame, "camera path frame (default: the scene camera)");
-  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")
+      ->check(CLI::Range(1, 32));
   sub->add_option("--out", options->out, "output image (.png display, .exr linear radiance)")->required();
   sub->add_option("--heatmap", options->heatmap, "also write the error against ground truth as a heat map");
-  sub->add_option("--show", options->show, "write a visualisation instead: edges | samples | aggregates (lighting evaluations per pixel)");
+  sub->add_option("--show", options->show,
+                  "write a visualisation instead: edges | samples | aggregates (lighting evaluations per pixel)");
   line.addConfigOptions(sub);
   line.commands.push_back({sub, [options](const retroaa::Config& config) {
                              options->base = config;
@@ -93,7 +97,8 @@ void addBench(CommandLine& line) {
   sub->add_option("--methods", options->methods, kMethodsHelp);
   line.addSizeOptions(sub, options->width, options->height);
   sub->add_option("--frame", options->frame, "camera path frame (default: the scene camera)");
-  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")
+      ->check(CLI::Range(1, 32));
   sub->add_option("--repeats", options->repeats, "timed frames per method (median)")->check(CLI::Range(1, 100));
   sub->add_option("--json", options->json, "write the rows as JSON");
   sub->add_option("--csv", options->csv, "write the rows as CSV");
@@ -110,8 +115,10 @@ void addRecord(CommandLine& line) {
   auto options = std::make_shared<app::RecordOptions>();
   CLI::App* sub = line.cli.add_subcommand("record", "record a camera path for a scene (an orbit and dolly; no window)");
   sub->add_option("--scene", options->scene, "scene file, or 'default'");
-  sub->add_option("--orbit-degrees", options->orbitDegrees, "orbit about the camera target")->check(CLI::Range(-720.0, 720.0));
-  sub->add_option("--dolly", options->dolly, "final distance as a multiple of the first")->check(CLI::Range(0.01, 100.0));
+  sub->add_option("--orbit-degrees", options->orbitDegrees, "orbit about the camera target")
+      ->check(CLI::Range(-720.0, 720.0));
+  sub->add_option("--dolly", options->dolly, "final distance as a multiple of the first")
+      ->check(CLI::Range(0.01, 100.0));
   sub->add_option("--seconds", options->seconds, "length")->check(CLI::Range(0.01, 3600.0));
   sub->add_option("--fps", options->framesPerSecond, "playback frame rate")->check(CLI::Range(1.0, 1000.0));
   sub->add_option("--keys", options->keys, "keys along the path")->check(CLI::Range(2, 1000));
@@ -121,13 +128,16 @@ void addRecord(CommandLine& line) {
 
 void addRegress(CommandLine& line) {
   auto options = std::make_shared<app::RegressOptions>();
-  CLI::App* sub = line.cli.add_subcommand("regress", "every frame of recorded demo scenes with every method: report and goldens");
+  CLI::App* sub =
+      line.cli.add_subcommand("regress", "every frame of recorded demo scenes with every method: report and goldens");
   sub->add_option("scenes", options->scenes, "scene files (default: the five recorded scenes)");
   sub->add_option("--methods", options->methods, kMethodsHelp);
   line.addSizeOptions(sub, options->width, options->height);
-  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")
+      ->check(CLI::Range(1, 32));
   sub->add_option("--stride", options->frameStride, "every n-th frame of each path")->check(CLI::Range(1, 1000));
-  sub->add_option("--frames", options->maxFrames, "at most this many frames per scene (0: all)")->check(CLI::Range(0, 100000));
+  sub->add_option("--frames", options->maxFrames, "at most this many frames per scene (0: all)")
+      ->check(CLI::Range(0, 100000));
   sub->add_option("--out", options->out, "report folder");
   sub->add_option("--golden-dir", options->goldenDirectory, "where the goldens live");
   sub->add_flag("--check", options->check, "compare with the goldens; exit 1 naming each figure that got worse");
@@ -172,11 +182,13 @@ void addTune(CommandLine& line) {
   auto options = std::make_shared<app::TuneOptions>();
   auto targets = std::make_shared<std::vector<std::string>>();
   auto scenes = std::make_shared<std::string>();
-  CLI::App* sub = line.cli.add_subcommand("tune", "the cheapest settings that meet quality targets on every frame of your scenes");
+  CLI::App* sub =
+      line.cli.add_subcommand("tune", "the cheapest settings that meet quality targets on every frame of your scenes");
   sub->add_option("--scenes", *scenes, "comma-separated scene files (default: default)");
   sub->add_option("--target", *targets, "psnr_db=X, edge_psnr_db=X or ssim=X (repeatable)")->required();
   sub->add_option("--cost", options->cost, "evals_per_pixel | gpu_ms | plugin_bytes_per_pixel");
-  sub->add_option("--candidates", options->candidates, "comma-separated method specs (default: 'grid', the registry's)");
+  sub->add_option("--candidates", options->candidates,
+                  "comma-separated method specs (default: 'grid', the registry's)");
   line.addSizeOptions(sub, options->width, options->height);
   sub->add_option("--gt-samples", options->groundTruthSamples)->check(CLI::Range(1, 32));
   sub->add_option("--frames", options->frames, "frames of each scene's path")->check(CLI::Range(1, 10000));

@@ -16,9 +16,9 @@ namespace app {
 
 // What a frame's renders are judged against.
 struct FrameReference {
-  std::vector<uint8_t> truthRgba;        // ground truth, display RGBA8 top-down
-  DisplayImage truth;                    // the same as metric values
-  std::vector<uint8_t> edges;            // ground-truth edge pixels (metrics.h)
+  std::vector<uint8_t> truthRgba;         // ground truth, display RGBA8 top-down
+  DisplayImage truth;                     // the same as metric values
+  std::vector<uint8_t> edges;             // ground-truth edge pixels (metrics.h)
   std::optional<DisplayImage> perSample;  // the per-sample render at the run's sample count
 };
 // Ground truth of `camera` (`samplesPerAxis`² lit supersamples per pixel) and, with
@@ -29,8 +29,8 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
 struct Measurement {
   std::vector<uint8_t> display;  // RGBA8 top-down, of the last frame
   DisplayImage image;
-  retroaa::Stats stats;          // of the last frame
-  double gpuMs = 0;              // the host's frame on the GPU: median of the timed frames
+  retroaa::Stats stats;                  // of the last frame
+  double gpuMs = 0;                      // the host's frame on the GPU: median of the timed frames
   std::map<std::string, double> passMs;  // medians: model_pass, lighting, tonemap_post, plugin.<pass>
   ErrorMetrics error;                    // against the ground truth, edge figures on its edges
   std::optional<double> psnrVsPerSampleDb;

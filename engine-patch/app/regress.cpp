@@ -4,14 +4,14 @@
 
 #include "commands.h"
 #include "ground_truth.h"
-#include "image_io.h"
 #include "headless_context.h"
+#include "image_io.h"
 #include "measure.h"
 #include "metrics.h"
 #include "session.h"
 
-#include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -83,7 +83,8 @@ struct MethodTotals {
     for (size_t i = 0; i < error.size(); ++i) error[i] = m.image.rgb[i] - reference.truth.rgb[i];
     if (!previousError.empty()) {
       double sum = 0;
-      for (size_t i = 0; i < error.size(); ++i) sum += double(error[i] - previousError[i]) * (error[i] - previousError[i]);
+      for (size_t i = 0; i < error.size(); ++i)
+        sum += double(error[i] - previousError[i]) * (error[i] - previousError[i]);
       flicker += std::sqrt(sum / error.size());
       ++flickerFrames;
     }
@@ -154,8 +155,8 @@ std::vector<std::string> compareWithGolden(const json& golden, const json& scene
       const double now = row[figure], then = g[figure];
       if (now < then - allowed) {
         std::ostringstream m;
-        m << scene["scene"].get<std::string>() << " / " << method << ": " << figure << " fell from " << then << " to " << now
-          << " (tolerance " << allowed << ")";
+        m << scene["scene"].get<std::string>() << " / " << method << ": " << figure << " fell from " << then << " to "
+          << now << " (tolerance " << allowed << ")";
         worse.push_back(m.str());
       }
     };
@@ -163,8 +164,8 @@ std::vector<std::string> compareWithGolden(const json& golden, const json& scene
       const double now = row[figure], then = g[figure];
       if (now > then * (1.0 + relative) + absolute) {
         std::ostringstream m;
-        m << scene["scene"].get<std::string>() << " / " << method << ": " << figure << " rose from " << then << " to " << now
-          << " (tolerance +" << relative * 100 << " % + " << absolute << ")";
+        m << scene["scene"].get<std::string>() << " / " << method << ": " << figure << " rose from " << then << " to "
+          << now << " (tolerance +" << relative * 100 << " % + " << absolute << ")";
         worse.push_back(m.str());
       }
     };
@@ -243,64 +244,84 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
     for (size_t fi = 0; fi < frames.size(); ++fi) {
       const Measurement m = measure(session, session.camera(frames[fi]), references[fi], 1, fi == 0 ? 1 : 0);
       totals.add(m, references[fi]);
-      if (fi == 0) images[spec.name] = writeMethodImages(session, sceneDir, spec.name, m, references[fi], window, cropW, cropH);
+      if (fi == 0)
+        images[spec.name] = writeMethodImages(session, sceneDir, spec.name, m, references[fi], window, cropW, cropH);
       progress.step(key + " " + spec.name + " frame " + std::to_string(frames[fi]));
     }
     rows.push_back(totals.row(spec.name));
   }
-  return {{"scene", key}, {"name", session.scene.name}, {"file", file}, {"frames", frames.size()},
-          {"directory", fileSafe(key)}, {"images", images}, {"rows", rows}};
+  return {{"scene", key},
+          {"name", session.scene.name},
+          {"file", file},
+          {"frames", frames.size()},
+          {"directory", fileSafe(key)},
+          {"images", images},
+          {"rows", rows}};
 }
 
 void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
   const std::string dir = scene["directory"];
   html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
        << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>plugin B/px</th><th>PSNR dB</th>"
-       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max err</th><th>flicker</th></tr>\n";
+       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max "
+          "err</th><th>flicker</th></tr>\n";
   for (const auto& r : scene["rows"]) {
     char line[512];
     std::snprintf(line, sizeof line,
-                  "<tr><td>%s</td><td>%.3f</td><td>%.2f</td><td>%.0f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.2f</td><td>%.4f</td><td>%.3f</td><td>%.4f</td></tr>\n",
+                  "<tr><td>%s</td><td>%.3f</td><td>%.2f</td><td>%.0f</td><td>%.2f</td><td>%.2f</td><td>%.2f</"
+                  "td><td>%.2f</td><td>%.4f</td><td>%.3f</td><td>%.4f</td></tr>\n",
                   htmlEscape(r["method"]).c_str(), r["evals_per_pixel"].get<double>(), r["gpu_ms"].get<double>(),
-                  r["plugin_bytes_per_pixel"].get<double>(), r["psnr_db"].get<double>(), r["edge_psnr_db"].get<double>(),
-                  r["min_edge_psnr_db"].get<double>(), r["psnr_vs_per_sample_db"].get<double>(), r["ssim"].get<double>(),
-                  r["max_abs_error"].get<double>(), r["flicker"].get<double>());
+                  r["plugin_bytes_per_pixel"].get<double>(), r["psnr_db"].get<double>(),
+                  r["edge_psnr_db"].get<double>(), r["min_edge_psnr_db"].get<double>(),
+                  r["psnr_vs_per_sample_db"].get<double>(), r["ssim"].get<double>(), r["max_abs_error"].get<double>(),
+                  r["flicker"].get<double>());
     html << line;
   }
   std::vector<ScatterPoint> scatter;
   for (const auto& r : scene["rows"])
     scatter.push_back({r["method"].get<std::string>(), r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
-  html << "</table>\n" << svgScatter(scatter, "GPU ms per frame (mean)", "edge PSNR dB") << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";
+  html << "</table>\n"
+       << svgScatter(scatter, "GPU ms per frame (mean)", "edge PSNR dB")
+       << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";
   for (const auto& r : scene["rows"]) {
     const std::string m = r["method"];
-    html << "<figure><img src=\"" << dir << "/" << scene["images"][m]["crop"].get<std::string>() << "\" alt=\"" << htmlEscape(m)
-         << "\"><figcaption>" << htmlEscape(m) << "</figcaption></figure>";
+    html << "<figure><img src=\"" << dir << "/" << scene["images"][m]["crop"].get<std::string>() << "\" alt=\""
+         << htmlEscape(m) << "\"><figcaption>" << htmlEscape(m) << "</figcaption></figure>";
   }
-  html << "<figure><img src=\"" << dir << "/ground-truth-crop.png\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n"
+  html << "<figure><img src=\"" << dir
+       << "/ground-truth-crop.png\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n"
        << "<h3>First frame, error heat maps and samples per pixel</h3>\n<div>";
   for (const auto& r : scene["rows"]) {
     const std::string m = r["method"];
     const json& im = scene["images"][m];
-    html << "<figure><img src=\"" << dir << "/" << im["image"].get<std::string>() << "\" width=\"" << w << "\" alt=\"" << htmlEscape(m)
-         << "\"><img src=\"" << dir << "/" << im["error"].get<std::string>() << "\" width=\"" << w << "\" alt=\"error\">";
+    html << "<figure><img src=\"" << dir << "/" << im["image"].get<std::string>() << "\" width=\"" << w << "\" alt=\""
+         << htmlEscape(m) << "\"><img src=\"" << dir << "/" << im["error"].get<std::string>() << "\" width=\"" << w
+         << "\" alt=\"error\">";
     if (im.contains("samples"))
-      html << "<img src=\"" << dir << "/" << im["samples"].get<std::string>() << "\" width=\"" << w << "\" alt=\"samples\">";
+      html << "<img src=\"" << dir << "/" << im["samples"].get<std::string>() << "\" width=\"" << w
+           << "\" alt=\"samples\">";
     html << "<figcaption>" << htmlEscape(m) << "</figcaption></figure>";
   }
-  html << "<figure><img src=\"" << dir << "/ground-truth.png\" width=\"" << w << "\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n";
+  html << "<figure><img src=\"" << dir << "/ground-truth.png\" width=\"" << w
+       << "\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n";
 }
 
 void writeHtml(const json& report, const RegressOptions& options) {
   std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>retroaa regression report</title>\n"
-       << "<style>body{font-family:sans-serif;margin:24px;color:#222}table{border-collapse:collapse;margin:8px 0}"
-          "td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}th{background:#eee}td:first-child{text-align:left}"
-          "img{image-rendering:pixelated;border:1px solid #999;margin:2px}figure{display:inline-block;margin:4px;text-align:center}"
-          "figcaption{font-size:12px}.scatter text{font-size:11px}.label{fill:#246}.tick{fill:#666}</style></head><body>\n"
-       << "<h1>retroaa: speed against error on recorded demo scenes</h1>\n<p>" << htmlEscape(report["renderer"]) << "; "
-       << options.width << "×" << options.height << ", ground truth " << options.groundTruthSamples << "×" << options.groundTruthSamples
-       << " supersamples per pixel. Figures are means over each scene's frames; errors on tonemapped display values. "
-       << "<b>Flicker</b> is the frame-to-frame change of the error (RMS), what players notice as crawling edges.</p>\n";
+  html
+      << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>retroaa regression report</title>\n"
+      << "<style>body{font-family:sans-serif;margin:24px;color:#222}table{border-collapse:collapse;margin:8px 0}"
+         "td,th{border:1px solid #ccc;padding:3px "
+         "8px;text-align:right}th{background:#eee}td:first-child{text-align:left}"
+         "img{image-rendering:pixelated;border:1px solid "
+         "#999;margin:2px}figure{display:inline-block;margin:4px;text-align:center}"
+         "figcaption{font-size:12px}.scatter "
+         "text{font-size:11px}.label{fill:#246}.tick{fill:#666}</style></head><body>\n"
+      << "<h1>retroaa: speed against error on recorded demo scenes</h1>\n<p>" << htmlEscape(report["renderer"]) << "; "
+      << options.width << "×" << options.height << ", ground truth " << options.groundTruthSamples << "×"
+      << options.groundTruthSamples
+      << " supersamples per pixel. Figures are means over each scene's frames; errors on tonemapped display values. "
+      << "<b>Flicker</b> is the frame-to-frame change of the error (RMS), what players notice as crawling edges.</p>\n";
   for (const auto& scene : report["scenes"]) writeSceneHtml(html, scene, options.width);
   html << "</body></html>\n";
   std::ofstream(fs::path(options.out) / "report.html") << html.str();
@@ -311,25 +332,36 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
   int status = kExitOk;
   for (const auto& scene : report["scenes"]) {
     const fs::path goldenFile = fs::path(options.goldenDirectory) / (fileSafe(scene["scene"]) + ".json");
-    const json settings = {{"width", options.width}, {"height", options.height}, {"ground_truth_samples_per_axis", options.groundTruthSamples},
-                           {"frames", scene["frames"]}, {"frame_stride", options.frameStride}};
+    const json settings = {{"width", options.width},
+                           {"height", options.height},
+                           {"ground_truth_samples_per_axis", options.groundTruthSamples},
+                           {"frames", scene["frames"]},
+                           {"frame_stride", options.frameStride}};
     if (options.updateGolden) {
       json golden = {{"scene", scene["scene"]},
                      {"settings", settings},
                      {"renderer", report["renderer"]},
-                     {"tolerance", {{"psnr_db", 0.5}, {"edge_psnr_db", 0.5}, {"flicker_relative", 0.25}, {"flicker_absolute", 0.0005}, {"evals_relative", 0.05}}},
+                     {"tolerance",
+                      {{"psnr_db", 0.5},
+                       {"edge_psnr_db", 0.5},
+                       {"flicker_relative", 0.25},
+                       {"flicker_absolute", 0.0005},
+                       {"evals_relative", 0.05}}},
                      {"methods", json::object()}};
       for (const auto& r : scene["rows"])
-        golden["methods"][r["method"].get<std::string>()] = {{"psnr_db", r["psnr_db"]}, {"edge_psnr_db", r["edge_psnr_db"]},
-                                                             {"flicker", r["flicker"]}, {"evals_per_pixel", r["evals_per_pixel"]}};
+        golden["methods"][r["method"].get<std::string>()] = {{"psnr_db", r["psnr_db"]},
+                                                             {"edge_psnr_db", r["edge_psnr_db"]},
+                                                             {"flicker", r["flicker"]},
+                                                             {"evals_per_pixel", r["evals_per_pixel"]}};
       fs::create_directories(options.goldenDirectory);
       std::ofstream(goldenFile) << golden.dump(2) << "\n";
       std::printf("golden written: %s\n", goldenFile.string().c_str());
     }
     if (!options.check) continue;
     std::ifstream in(goldenFile);
-    if (!in) throw std::invalid_argument(goldenFile.string() + ": no golden for scene '" + scene["scene"].get<std::string>() +
-                                         "' (run with --update-golden)");
+    if (!in)
+      throw std::invalid_argument(goldenFile.string() + ": no golden for scene '" + scene["scene"].get<std::string>() +
+                                  "' (run with --update-golden)");
     const json golden = json::parse(in);
     if (golden["settings"] != settings)
       throw std::invalid_argument(goldenFile.string() + ": golden was made with settings " + golden["settings"].dump() +
@@ -338,7 +370,8 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
     for (const std::string& line : worse) std::printf("WORSE: %s\n", line.c_str());
     if (!worse.empty()) status = kExitCheckFailed;
   }
-  if (options.check) std::printf("check: %s\n", status == kExitOk ? "every figure within tolerance" : "figures got worse");
+  if (options.check)
+    std::printf("check: %s\n", status == kExitOk ? "every figure within tolerance" : "figures got worse");
   return status;
 }
 
@@ -346,22 +379,25 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
 
 int runRegress(const RegressOptions& options) {
   std::vector<MethodSpec> specs;
-  for (const std::string& name : expandMethodList(options.methods)) specs.push_back(parseMethodSpec(name, options.base));
+  for (const std::string& name : expandMethodList(options.methods))
+    specs.push_back(parseMethodSpec(name, options.base));
   if (specs.empty()) throw std::invalid_argument("--methods names no method");
-  const std::vector<std::string> scenes = options.scenes.empty() ? defaultRegressScenes(RETROAA_INTEGRATION_TESTS_DIR) : options.scenes;
+  const std::vector<std::string> scenes =
+      options.scenes.empty() ? defaultRegressScenes(RETROAA_INTEGRATION_TESTS_DIR) : options.scenes;
   const std::vector<std::vector<int>> frames = framesToRender(scenes, options);
   int total = 0;
   for (const std::vector<int>& list : frames) total += int(list.size());
   host::HeadlessContext context;
   Progress progress(total * int(specs.size()));
   fs::create_directories(options.out);
-  json report = {{"renderer", context.info().summary()},
-                 {"width", options.width},
-                 {"height", options.height},
-                 {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
-                 {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
-                 {"flicker", "mean over frames t of the RMS over pixels of (error_t - error_(t-1)), error = image - ground truth"},
-                 {"scenes", json::array()}};
+  json report = {
+      {"renderer", context.info().summary()},
+      {"width", options.width},
+      {"height", options.height},
+      {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
+      {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
+      {"flicker", "mean over frames t of the RMS over pixels of (error_t - error_(t-1)), error = image - ground truth"},
+      {"scenes", json::array()}};
   for (size_t si = 0; si < scenes.size(); ++si) {
     Session session(scenes[si], options.width, options.height, context.info().summary());
     report["scenes"].push_back(regressScene(session, scenes[si], frames[si], specs, options, progress));

@@ -12,7 +12,7 @@ namespace app {
 
 struct RegressOptions {
   std::vector<std::string> scenes;  // empty: the five recorded scenes of integration-tests/scenes
-  std::string methods = "each";  // one spec per method (expandMethodList)
+  std::string methods = "each";     // one spec per method (expandMethodList)
   retroaa::Config base;
   int width = 240, height = 180;
   int groundTruthSamples = 6;  // per axis
@@ -20,8 +20,8 @@ struct RegressOptions {
   int maxFrames = 0;           // at most this many frames per scene (0: all)
   std::string out = "out/regress";
   std::string goldenDirectory = "integration-tests/golden";
-  bool check = false;          // compare with the goldens; exit 1 naming what got worse
-  bool updateGolden = false;   // rewrite the goldens from this run
+  bool check = false;         // compare with the goldens; exit 1 naming what got worse
+  bool updateGolden = false;  // rewrite the goldens from this run
 };
 
 // The scenes `regress` runs when none are named: relative to the source tree's integration-tests/.

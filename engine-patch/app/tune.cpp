@@ -95,7 +95,8 @@ namespace {
 
 // Every candidate's figures on every frame of every scene: from the cache where it has them (keyed by
 // scene, size, ground truth, frame and renderer), measured otherwise (and added to the cache).
-std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::vector<std::string>& specs, json& cache) {
+std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::vector<std::string>& specs,
+                                         json& cache) {
   host::HeadlessContext context;
   std::vector<TunePoint> points(specs.size());
   for (size_t i = 0; i < specs.size(); ++i) points[i].spec = specs[i];
@@ -106,15 +107,16 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
     for (int f = 0; f < frames; ++f) {
       const int frame = f * std::max(session.scene.path.frameCount() / frames, 1);
       std::ostringstream key;
-      key << scenePath << "|" << options.width << "x" << options.height << "|gt" << options.groundTruthSamples << "|frame" << frame
-          << "|" << context.info().renderer;
+      key << scenePath << "|" << options.width << "x" << options.height << "|gt" << options.groundTruthSamples
+          << "|frame" << frame << "|" << context.info().renderer;
       json& entry = cache[key.str()];
       std::optional<FrameReference> reference;
       for (size_t i = 0; i < specs.size(); ++i) {
         if (entry.contains(specs[i]) && entry[specs[i]].contains(options.cost)) {
           ++reused;
         } else {
-          if (!reference) reference = renderReference(session, session.camera(frame), options.groundTruthSamples, nullptr);
+          if (!reference)
+            reference = renderReference(session, session.camera(frame), options.groundTruthSamples, nullptr);
           retroaa::Config config = parseMethodSpec(specs[i], {}).config;
           config.measureGpuTime = true;
           session.configure(config, specs[i]);
@@ -149,12 +151,13 @@ void writeTuneOutputs(const TuneOptions& options, const std::vector<TunePoint>& 
   for (size_t i = 0; i < points.size(); ++i)
     scatter.push_back({points[i].spec, points[i].cost, worstFrame(points[i], primary), int(i) == choice.chosen});
   std::ofstream(options.out + ".svg") << svgScatter(scatter, options.cost + " (mean)", "worst-frame " + primary);
-  std::ofstream(options.out + ".md") << report << "\n![front](" << std::filesystem::path(options.out).filename().string()
-                                     << ".svg)\n";
+  std::ofstream(options.out + ".md") << report << "\n![front]("
+                                     << std::filesystem::path(options.out).filename().string() << ".svg)\n";
   json worst = json::object();
   for (const std::string& figure : qualityFigures()) worst[figure] = worstFrame(chosen, figure);
-  std::ofstream(options.out + ".json") << json{{"chosen", chosen.spec}, {"cost_figure", options.cost}, {"cost", chosen.cost},
-                                               {"worst", worst}}.dump(1) << "\n";
+  std::ofstream(options.out + ".json")
+      << json{{"chosen", chosen.spec}, {"cost_figure", options.cost}, {"cost", chosen.cost}, {"worst", worst}}.dump(1)
+      << "\n";
 }
 
 }  // namespace
@@ -177,7 +180,8 @@ int runTune(const TuneOptions& options) {
   auto describe = [&](int i) {
     std::ostringstream s;
     s << "`" << points[i].spec << "`: " << options.cost << " " << points[i].cost;
-    for (const std::string& figure : qualityFigures()) s << ", worst " << figure << " " << worstFrame(points[i], figure);
+    for (const std::string& figure : qualityFigures())
+      s << ", worst " << figure << " " << worstFrame(points[i], figure);
     return s.str();
   };
   std::ostringstream report;
@@ -193,7 +197,8 @@ int runTune(const TuneOptions& options) {
     return kExitCheckFailed;
   }
   report << "\nChosen: " << describe(choice.chosen) << "\n";
-  if (choice.nextCheaper >= 0) report << "The next cheaper point on the front, " << describe(choice.nextCheaper) << ", misses a target.\n";
+  if (choice.nextCheaper >= 0)
+    report << "The next cheaper point on the front, " << describe(choice.nextCheaper) << ", misses a target.\n";
   writeTuneOutputs(options, points, choice, report.str());
   std::printf("%s", report.str().c_str());
   std::printf("tune: wrote %s (%s)\n", options.out.c_str(), points[choice.chosen].spec.c_str());

@@ -24,9 +24,9 @@ struct TunePoint {
 
 struct TuneChoice {
   bool feasible = false;
-  int chosen = -1;          // the cheapest feasible point, or (infeasible) the one closest to the targets
-  int nextCheaper = -1;     // the cheapest point below the chosen one on the front, if any
-  std::vector<int> front;   // Pareto front of cost against the first target's worst frame, cheapest first
+  int chosen = -1;         // the cheapest feasible point, or (infeasible) the one closest to the targets
+  int nextCheaper = -1;    // the cheapest point below the chosen one on the front, if any
+  std::vector<int> front;  // Pareto front of cost against the first target's worst frame, cheapest first
 };
 
 // Pure and deterministic: ties in cost go to the better worst frame, then to the earlier point.
@@ -36,7 +36,7 @@ struct TuneOptions {
   std::vector<std::string> scenes = {"default"};
   std::vector<TuneTarget> targets;
   std::string cost = "evals_per_pixel";  // a cost figure (measure.h): evals_per_pixel | gpu_ms | plugin_bytes_per_pixel
-  std::string candidates;      // comma-separated specs; empty: the built-in grid
+  std::string candidates;                // comma-separated specs; empty: the built-in grid
   int width = 160, height = 120, groundTruthSamples = 4, frames = 4;
   std::string out = "out/tune/config.cfg";
   std::string cache = "out/tune/cache.json";  // measured points, reused by later runs

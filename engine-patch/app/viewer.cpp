@@ -12,9 +12,9 @@
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -30,7 +30,8 @@ namespace app {
 namespace {
 
 int glErrors = 0;
-void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message, const void*) {
+void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
+                               const void*) {
   if (type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH) {
     ++glErrors;
     std::fprintf(stderr, "GL debug: %s\n", message);
@@ -54,7 +55,8 @@ std::vector<ScriptAction> readScript(const std::string& path) {
     std::istringstream words(text);
     ScriptAction action{0, "", {}, line};
     if (!(words >> action.frame)) continue;
-    if (!(words >> action.verb)) throw std::invalid_argument(path + ":" + std::to_string(line) + ": expected 'FRAME ACTION [ARGUMENTS]'");
+    if (!(words >> action.verb))
+      throw std::invalid_argument(path + ":" + std::to_string(line) + ": expected 'FRAME ACTION [ARGUMENTS]'");
     for (std::string word; words >> word;) action.arguments.push_back(word);
     actions.push_back(action);
   }
@@ -106,14 +108,16 @@ class Viewer {
     for (int frame = 0; !quit_ && !glfwWindowShouldClose(window_); ++frame) {
       glfwPollEvents();
       screenshot_.clear(), screenshotWithPanel_.clear();
-      for (; nextAction_ < script_.size() && script_[nextAction_].frame <= frame; ++nextAction_) runAction(script_[nextAction_]);
+      for (; nextAction_ < script_.size() && script_[nextAction_].frame <= frame; ++nextAction_)
+        runAction(script_[nextAction_]);
       followWindowSize();
       if (options_.script.empty() && !ImGui::GetIO().WantCaptureKeyboard) handleInput(frame);
       renderAndCompose();
       if (!screenshot_.empty()) writeScreenshot(screenshot_);
       drawPanel();
       if (!screenshotWithPanel_.empty()) {
-        writeImage8(screenshotWithPanel_, width_, height_, readWindow(width_, height_), {{"retroaa:method", a_->method}});
+        writeImage8(screenshotWithPanel_, width_, height_, readWindow(width_, height_),
+                    {{"retroaa:method", a_->method}});
         std::printf("view: screenshot with the panel %s\n", screenshotWithPanel_.c_str());
       }
       glfwSwapBuffers(window_);
@@ -126,7 +130,8 @@ class Viewer {
     configureSpec(*a_, "off");
     a_->renderer->renderFrame(camera_);
     const int objectsAtEnd = a_->plugin().stats().glObjectsHeld;
-    std::printf("view: %d GL errors; plugin GL objects %d at start, %d at the end (method off)\n", glErrors, objectsAtStart_, objectsAtEnd);
+    std::printf("view: %d GL errors; plugin GL objects %d at start, %d at the end (method off)\n", glErrors,
+                objectsAtStart_, objectsAtEnd);
     if (glErrors > 0 || objectsAtEnd != objectsAtStart_) status = kExitCheckFailed;
     return status;
   }
@@ -144,7 +149,9 @@ class Viewer {
     config.measureGpuTime = true;
     side.configure(config, spec);
   }
-  void configureSpec(Session& side, const std::string& spec) { configure(side, parseMethodSpec(spec, options_.base).config, spec); }
+  void configureSpec(Session& side, const std::string& spec) {
+    configure(side, parseMethodSpec(spec, options_.base).config, spec);
+  }
   // The next of a key's values (samples, resolve_weighting, edge_detector), after the current one.
   void cycle(const std::string& key) {
     const std::vector<std::string> values = retroaa::settingValues(key);
@@ -164,15 +171,20 @@ class Viewer {
     const std::string& path = options_.script;
     auto need = [&](size_t n) {
       if (args.size() < n)
-        throw std::invalid_argument(path + ":" + std::to_string(act.line) + ": '" + act.verb + "' needs " + std::to_string(n) + " arguments");
+        throw std::invalid_argument(path + ":" + std::to_string(act.line) + ": '" + act.verb + "' needs " +
+                                    std::to_string(n) + " arguments");
     };
     auto at = [&](size_t i) { return number(act, i, path); };
-    if (act.verb == "method") need(1), configureSpec(*a_, args[0]);
+    if (act.verb == "method")
+      need(1), configureSpec(*a_, args[0]);
     else if (act.verb == "compare") {
       need(1);
-      if (args[0] == "off-split") b_.reset();
-      else if (b_) configureSpec(*b_, args[0]);
-      else b_ = makeSide(args[0]);
+      if (args[0] == "off-split")
+        b_.reset();
+      else if (b_)
+        configureSpec(*b_, args[0]);
+      else
+        b_ = makeSide(args[0]);
     } else if (act.verb == "set") {
       need(2);
       for (Session* side : {a_.get(), b_.get()}) {
@@ -188,18 +200,26 @@ class Viewer {
       camera.position = {at(0), at(1), at(2)};
       camera.target = {at(3), at(4), at(5)};
       setCamera(camera);
-    } else if (act.verb == "path") need(1), pathFrame_ = int(at(0)), camera_ = a_->scene.path.at(a_->scene.camera, pathFrame_);
-    else if (act.verb == "resize") need(2), glfwSetWindowSize(window_, int(at(0)), int(at(1)));
-    else if (act.verb == "divider") need(1), divider_ = at(0);
+    } else if (act.verb == "path")
+      need(1), pathFrame_ = int(at(0)), camera_ = a_->scene.path.at(a_->scene.camera, pathFrame_);
+    else if (act.verb == "resize")
+      need(2), glfwSetWindowSize(window_, int(at(0)), int(at(1)));
+    else if (act.verb == "divider")
+      need(1), divider_ = at(0);
     else if (act.verb == "magnifier") {
       need(1);
       magnifier_ = args[0] != "off";
       if (magnifier_) need(3), magnifierAt_ = {at(0), at(1)}, magnifierZoom_ = int(at(2));
-    } else if (act.verb == "screenshot") need(1), screenshot_ = args[0];
-    else if (act.verb == "screenshot-panel") need(1), screenshotWithPanel_ = args[0];
-    else if (act.verb == "quit") quit_ = true;
-    else throw std::invalid_argument(path + ":" + std::to_string(act.line) + ": unknown action '" + act.verb +
-                                     "' (allowed: method, compare, set, camera, path, resize, divider, magnifier, screenshot, screenshot-panel, quit)");
+    } else if (act.verb == "screenshot")
+      need(1), screenshot_ = args[0];
+    else if (act.verb == "screenshot-panel")
+      need(1), screenshotWithPanel_ = args[0];
+    else if (act.verb == "quit")
+      quit_ = true;
+    else
+      throw std::invalid_argument(path + ":" + std::to_string(act.line) + ": unknown action '" + act.verb +
+                                  "' (allowed: method, compare, set, camera, path, resize, divider, magnifier, "
+                                  "screenshot, screenshot-panel, quit)");
   }
 
   // The window's size is the renderers' size; the plugin reallocates through the engine patch.
@@ -231,7 +251,8 @@ class Viewer {
     if (down(GLFW_KEY_D)) move += right;
     if (down(GLFW_KEY_A)) move -= right;
     if (!io.WantCaptureMouse) {
-      if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) yaw_ += io.MouseDelta.x * 0.004f, pitch_ = glm::clamp(pitch_ - io.MouseDelta.y * 0.004f, -1.5f, 1.5f);
+      if (ImGui::IsMouseDown(ImGuiMouseButton_Right))
+        yaw_ += io.MouseDelta.x * 0.004f, pitch_ = glm::clamp(pitch_ - io.MouseDelta.y * 0.004f, -1.5f, 1.5f);
       speed_ *= std::pow(1.25f, io.MouseWheel);  // 10 m and 50 km are both a few wheel turns away
       if (b_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) divider_ = glm::clamp(io.MousePos.x / width_, 0.0f, 1.0f);
       magnifierAt_ = {io.MousePos.x, io.MousePos.y};
@@ -251,7 +272,8 @@ class Viewer {
     camera_.target = camera_.position + forward;
     const host::Scene& scene = a_->scene;
     if (playing_) camera_ = scene.path.at(scene.camera, pathFrame_++ % std::max(scene.path.frameCount(), 1));
-    if (recording_ && frame % 8 == 0) recorded_.push_back({float(recorded_.size() * 8 * kTimeStep), camera_.position, camera_.target});
+    if (recording_ && frame % 8 == 0)
+      recorded_.push_back({float(recorded_.size() * 8 * kTimeStep), camera_.position, camera_.target});
     if (pressed(GLFW_KEY_G)) measureAgainstGroundTruth();
   }
 
@@ -260,7 +282,9 @@ class Viewer {
     if (!recording_ && recorded_.size() >= 2) {
       nlohmann::json keys = nlohmann::json::array();
       for (const auto& k : recorded_)
-        keys.push_back({{"t", k.time}, {"position", {k.position.x, k.position.y, k.position.z}}, {"target", {k.target.x, k.target.y, k.target.z}}});
+        keys.push_back({{"t", k.time},
+                        {"position", {k.position.x, k.position.y, k.position.z}},
+                        {"target", {k.target.x, k.target.y, k.target.z}}});
       std::ofstream(options_.recordPath) << nlohmann::json{{"fps", 30}, {"keys", keys}}.dump(1) << "\n";
       std::printf("view: recorded %zu keys to %s\n", recorded_.size(), options_.recordPath.c_str());
     }
@@ -270,10 +294,12 @@ class Viewer {
   void measureAgainstGroundTruth() {
     const host::GroundTruth truth = host::renderGroundTruth(*a_->renderer, camera_, 8);
     a_->renderer->renderFrame(camera_);
-    const ErrorMetrics m = compare(DisplayImage::fromRgba8(width_, height_, a_->renderer->readDisplay()),
-                                   DisplayImage::fromRgba8(width_, height_, truth.display), edgeMaskFromSpread(truth.lumaStdDev));
+    const ErrorMetrics m =
+        compare(DisplayImage::fromRgba8(width_, height_, a_->renderer->readDisplay()),
+                DisplayImage::fromRgba8(width_, height_, truth.display), edgeMaskFromSpread(truth.lumaStdDev));
     char text[160];
-    std::snprintf(text, sizeof text, "%s vs 8×8 ground truth: PSNR %.2f dB, edge PSNR %.2f dB", a_->method.c_str(), m.psnrDb, m.edgePsnrDb);
+    std::snprintf(text, sizeof text, "%s vs 8×8 ground truth: PSNR %.2f dB, edge PSNR %.2f dB", a_->method.c_str(),
+                  m.psnrDb, m.edgePsnrDb);
     groundTruthText_ = text;
   }
 
@@ -287,8 +313,8 @@ class Viewer {
     const GLuint aDisplay = a_->renderer->targets().displayFramebuffer;
     glBlitNamedFramebuffer(aDisplay, 0, 0, 0, split, height_, 0, 0, split, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     if (b_) {
-      glBlitNamedFramebuffer(b_->renderer->targets().displayFramebuffer, 0, split, 0, width_, height_, split, 0, width_, height_,
-                             GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      glBlitNamedFramebuffer(b_->renderer->targets().displayFramebuffer, 0, split, 0, width_, height_, split, 0, width_,
+                             height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
       glEnable(GL_SCISSOR_TEST);  // the divider: a 2-pixel white line
       glScissor(std::max(split - 1, 0), 0, 2, height_);
       glClearColor(1, 1, 1, 1);
@@ -325,7 +351,8 @@ class Viewer {
     bool changed = false;
     if (ImGui::BeginCombo(label, current.c_str())) {
       for (const std::string& value : retroaa::settingValues(key))
-        if (ImGui::Selectable(value.c_str(), value == current)) changed = bool(retroaa::applySetting(config, key, value));
+        if (ImGui::Selectable(value.c_str(), value == current))
+          changed = bool(retroaa::applySetting(config, key, value));
       ImGui::EndCombo();
     }
     return changed;
@@ -364,9 +391,10 @@ class Viewer {
     if (ImGui::InputText("key=value", setting_, sizeof setting_, ImGuiInputTextFlags_EnterReturnsTrue)) {
       const std::string text = setting_;
       const size_t equals = text.find('=');
-      const retroaa::Status s = equals == std::string::npos
-                                    ? retroaa::Status(retroaa::Error{retroaa::ErrorCode::InvalidConfig, "expected key=value"})
-                                    : retroaa::applySetting(config, text.substr(0, equals), text.substr(equals + 1));
+      const retroaa::Status s =
+          equals == std::string::npos
+              ? retroaa::Status(retroaa::Error{retroaa::ErrorCode::InvalidConfig, "expected key=value"})
+              : retroaa::applySetting(config, text.substr(0, equals), text.substr(equals + 1));
       settingError_ = s ? "" : s.error().message;
       if (s) return true;
     }
@@ -377,15 +405,18 @@ class Viewer {
   void drawStats() {
     const retroaa::Stats stats = a_->plugin().stats();
     ImGui::Separator();
-    ImGui::Text("%d×%d, %d samples, %.3f lighting evaluations/pixel", width_, height_, stats.samples, stats.evaluationsPerPixel());
+    ImGui::Text("%d×%d, %d samples, %.3f lighting evaluations/pixel", width_, height_, stats.samples,
+                stats.evaluationsPerPixel());
     ImGui::Text("plugin memory %.1f MiB (%.0f B/px), %d GL objects", stats.bytesHeld / 1048576.0,
                 double(stats.bytesHeld) / (double(width_) * height_), stats.glObjectsHeld);
     std::map<std::string, double> passTotals;  // a pass runs once per slice: one line each
     for (const retroaa::PassTime& pass : stats.passes) passTotals[pass.name] += pass.ms;
     for (const auto& [name, ms] : passTotals) ImGui::Text("  %s: %.2f ms", name.c_str(), ms);
     ImGui::TextWrapped("%s", groundTruthText_.c_str());
-    ImGui::TextWrapped("WASD + right mouse: fly; wheel: speed %.1f m/s; P: play path; R: record path%s; M: next method; N/B/E: samples/weighting/detector; Z: magnifier; G: ground truth; F12: screenshot%s",
-                       speed_, recording_ ? " (recording)" : "", b_ ? "; left drag: divider" : "");
+    ImGui::TextWrapped(
+        "WASD + right mouse: fly; wheel: speed %.1f m/s; P: play path; R: record path%s; M: next method; N/B/E: "
+        "samples/weighting/detector; Z: magnifier; G: ground truth; F12: screenshot%s",
+        speed_, recording_ ? " (recording)" : "", b_ ? "; left drag: divider" : "");
     if (b_) ImGui::Text("split: %s | %s", a_->method.c_str(), b_->method.c_str());
   }
 
@@ -412,7 +443,8 @@ class Viewer {
 };
 
 GLFWwindow* openWindow(const ViewOptions& options) {
-  if (!glfwInit()) throw std::runtime_error("GLFW cannot initialise (no display? run under xvfb-run for a virtual one)");
+  if (!glfwInit())
+    throw std::runtime_error("GLFW cannot initialise (no display? run under xvfb-run for a virtual one)");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);

@@ -42,8 +42,8 @@ Status parseFloat(const std::string& key, const std::string& value, float minimu
   if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(parsed) || parsed < minimum ||
       parsed > maximum) {
     std::ostringstream message;
-    message << "config key '" << key << "': value '" << value << "' is not a number in [" << minimum << ", "
-            << maximum << "]";
+    message << "config key '" << key << "': value '" << value << "' is not a number in [" << minimum << ", " << maximum
+            << "]";
     return invalid(message.str());
   }
   out = static_cast<float>(parsed);
@@ -75,9 +75,8 @@ const char* methodNames() {
 }
 constexpr EdgeDetector kEdgeDetectors[] = {EdgeDetector::Depth,    EdgeDetector::Plane,    EdgeDetector::Normal,
                                            EdgeDetector::Material, EdgeDetector::Coverage, EdgeDetector::EveryPixel};
-constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
-                                            ResolveWeighting::Back, ResolveWeighting::Fso,
-                                            ResolveWeighting::Mean};
+constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front, ResolveWeighting::Back,
+                                            ResolveWeighting::Fso, ResolveWeighting::Mean};
 constexpr FxaaQuality kFxaaQualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
 
 struct Setter {
@@ -101,85 +100,129 @@ const std::vector<Setter>& setters() {
       {{"method", "off", methodNames(), "which AA method runs; changing it reallocates only what it needs"},
        [](Config& c, const std::string& v) { return parseMethod(v, c.method); },
        [](const Config& c) { return std::string(toString(c.method)); }},
-      {{"samples", "4", "1, 2, 4, 8, 16", "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
+      {{"samples", "4", "1, 2, 4, 8, 16",
+        "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
        [](Config& c, const std::string& v) -> Status {
          for (int allowed : {1, 2, 4, 8, 16})
            if (v == std::to_string(allowed)) return c.samples = allowed, Status::ok();
          return invalid("config key 'samples': unsupported sample count '" + v + "' (allowed: 1, 2, 4, 8, 16)");
        },
        [](const Config& c) { return std::to_string(c.samples); }},
-      {{"resolve_weighting", "median", "median, front, back, fso, mean", "how resolve weights a pixel's samples; free per frame"},
-       [](Config& c, const std::string& v) { return parseEnum("resolve_weighting", v, kWeightings, c.resolveWeighting); },
+      {{"resolve_weighting", "median", "median, front, back, fso, mean",
+        "how resolve weights a pixel's samples; free per frame"},
+       [](Config& c, const std::string& v) {
+         return parseEnum("resolve_weighting", v, kWeightings, c.resolveWeighting);
+       },
        [](const Config& c) { return std::string(toString(c.resolveWeighting)); }},
-      {{"closeness", "5", "0 .. 100", "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"},
+      {{"closeness", "5", "0 .. 100",
+        "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"},
        [](Config& c, const std::string& v) { return parseFloat("closeness", v, 0.0f, 100.0f, c.closeness); },
        [](const Config& c) { return formatFloat(c.closeness); }},
-      {{"edge_detector", "coverage", "depth, plane, normal, material, coverage, every_pixel", "how `edge` finds pixels to light per sample; free per frame"},
+      {{"edge_detector", "coverage", "depth, plane, normal, material, coverage, every_pixel",
+        "how `edge` finds pixels to light per sample; free per frame"},
        [](Config& c, const std::string& v) { return parseEnum("edge_detector", v, kEdgeDetectors, c.edgeDetector); },
        [](const Config& c) { return std::string(toString(c.edgeDetector)); }},
-      {{"edge_depth_closeness", "1", "0 .. 100", "c of the depth detector; smaller marks more pixels (slower, closer to per-sample)"},
-       [](Config& c, const std::string& v) { return parseFloat("edge_depth_closeness", v, 0.0f, 100.0f, c.edgeDepthCloseness); },
+      {{"edge_depth_closeness", "1", "0 .. 100",
+        "c of the depth detector; smaller marks more pixels (slower, closer to per-sample)"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("edge_depth_closeness", v, 0.0f, 100.0f, c.edgeDepthCloseness);
+       },
        [](const Config& c) { return formatFloat(c.edgeDepthCloseness); }},
       {{"edge_normal_angle_deg", "25", "0 .. 180", "angle of the normal detector; smaller marks more pixels"},
-       [](Config& c, const std::string& v) { return parseFloat("edge_normal_angle_deg", v, 0.0f, 180.0f, c.edgeNormalAngleDegrees); },
+       [](Config& c, const std::string& v) {
+         return parseFloat("edge_normal_angle_deg", v, 0.0f, 180.0f, c.edgeNormalAngleDegrees);
+       },
        [](const Config& c) { return formatFloat(c.edgeNormalAngleDegrees); }},
-      {{"adaptive_depth_scale", "0.5", "0 .. 1000", "adaptive: k_d per unit of depth variance (in pixel footprints²); larger refines more"},
-       [](Config& c, const std::string& v) { return parseFloat("adaptive_depth_scale", v, 0.0f, 1000.0f, c.adaptiveDepthScale); },
+      {{"adaptive_depth_scale", "0.5", "0 .. 1000",
+        "adaptive: k_d per unit of depth variance (in pixel footprints²); larger refines more"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("adaptive_depth_scale", v, 0.0f, 1000.0f, c.adaptiveDepthScale);
+       },
        [](const Config& c) { return formatFloat(c.adaptiveDepthScale); }},
-      {{"adaptive_normal_scale", "8", "0 .. 1000", "adaptive: k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"},
-       [](Config& c, const std::string& v) { return parseFloat("adaptive_normal_scale", v, 0.0f, 1000.0f, c.adaptiveNormalScale); },
+      {{"adaptive_normal_scale", "8", "0 .. 1000",
+        "adaptive: k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("adaptive_normal_scale", v, 0.0f, 1000.0f, c.adaptiveNormalScale);
+       },
        [](const Config& c) { return formatFloat(c.adaptiveNormalScale); }},
-      {{"adaptive_shading_scale", "2", "0 .. 1000", "adaptive: k_s = scale * N * luma range of the first lit sample; larger refines more"},
-       [](Config& c, const std::string& v) { return parseFloat("adaptive_shading_scale", v, 0.0f, 1000.0f, c.adaptiveShadingScale); },
+      {{"adaptive_shading_scale", "2", "0 .. 1000",
+        "adaptive: k_s = scale * N * luma range of the first lit sample; larger refines more"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("adaptive_shading_scale", v, 0.0f, 1000.0f, c.adaptiveShadingScale);
+       },
        [](const Config& c) { return formatFloat(c.adaptiveShadingScale); }},
-      {{"adaptive_threshold_min", "0.0312", "0 .. 1", "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"},
-       [](Config& c, const std::string& v) { return parseFloat("adaptive_threshold_min", v, 0.0f, 1.0f, c.adaptiveThresholdMin); },
+      {{"adaptive_threshold_min", "0.0312", "0 .. 1",
+        "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("adaptive_threshold_min", v, 0.0f, 1.0f, c.adaptiveThresholdMin);
+       },
        [](const Config& c) { return formatFloat(c.adaptiveThresholdMin); }},
-      {{"adaptive_threshold_edge", "0.125", "0 .. 1", "adaptive: luma ranges below this fraction of the local maximum never refine"},
-       [](Config& c, const std::string& v) { return parseFloat("adaptive_threshold_edge", v, 0.0f, 1.0f, c.adaptiveThresholdEdge); },
+      {{"adaptive_threshold_edge", "0.125", "0 .. 1",
+        "adaptive: luma ranges below this fraction of the local maximum never refine"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("adaptive_threshold_edge", v, 0.0f, 1.0f, c.adaptiveThresholdEdge);
+       },
        [](const Config& c) { return formatFloat(c.adaptiveThresholdEdge); }},
       {{"adaptive_min_samples", "1", "1 .. 16", "adaptive: floor of the per-pixel sample count; N lights every sample"},
        [](Config& c, const std::string& v) -> Status {
          float value = 0;
          if (Status s = parseFloat("adaptive_min_samples", v, 1.0f, 16.0f, value); !s) return s;
-         if (value != std::floor(value)) return invalid("config key 'adaptive_min_samples': value '" + v + "' is not an integer in [1, 16]");
+         if (value != std::floor(value))
+           return invalid("config key 'adaptive_min_samples': value '" + v + "' is not an integer in [1, 16]");
          return c.adaptiveMinSamples = int(value), Status::ok();
        },
        [](const Config& c) { return std::to_string(c.adaptiveMinSamples); }},
-      {{"aggregate_count", "2", "1 .. 4", "aggregate: at most this many aggregates per pixel (plus background); more is closer to per-sample"},
+      {{"aggregate_count", "2", "1 .. 4",
+        "aggregate: at most this many aggregates per pixel (plus background); more is closer to per-sample"},
        [](Config& c, const std::string& v) -> Status {
          for (int allowed : {1, 2, 3, 4})
            if (v == std::to_string(allowed)) return c.aggregateCount = allowed, Status::ok();
          return invalid("config key 'aggregate_count': value '" + v + "' is not one of 1, 2, 3, 4");
        },
        [](const Config& c) { return std::to_string(c.aggregateCount); }},
-      {{"aggregate_threshold", "0.1", "0 .. 10", "aggregate: t, the distance beyond which a sample seeds a new aggregate; 0 splits every distinct sample"},
-       [](Config& c, const std::string& v) { return parseFloat("aggregate_threshold", v, 0.0f, 10.0f, c.aggregateThreshold); },
+      {{"aggregate_threshold", "0.1", "0 .. 10",
+        "aggregate: t, the distance beyond which a sample seeds a new aggregate; 0 splits every distinct sample"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("aggregate_threshold", v, 0.0f, 10.0f, c.aggregateThreshold);
+       },
        [](const Config& c) { return formatFloat(c.aggregateThreshold); }},
-      {{"aggregate_length", "4", "0.01 .. 1000", "aggregate: k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"},
-       [](Config& c, const std::string& v) { return parseFloat("aggregate_length", v, 0.01f, 1000.0f, c.aggregateLength); },
+      {{"aggregate_length", "4", "0.01 .. 1000",
+        "aggregate: k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("aggregate_length", v, 0.01f, 1000.0f, c.aggregateLength);
+       },
        [](const Config& c) { return formatFloat(c.aggregateLength); }},
-      {{"coverage_filter", "off", "on, off", "the coverage filter on top of resolve (reuses its MSAA depth; no prepass)"},
+      {{"coverage_filter", "off", "on, off",
+        "the coverage filter on top of resolve (reuses its MSAA depth; no prepass)"},
        [](Config& c, const std::string& v) { return parseBool("coverage_filter", v, c.coverageFilter); },
        [](const Config& c) { return std::string(c.coverageFilter ? "on" : "off"); }},
-      {{"coverage_tolerance", "2", "0 .. 100", "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"},
-       [](Config& c, const std::string& v) { return parseFloat("coverage_tolerance", v, 0.0f, 100.0f, c.coverageTolerance); },
+      {{"coverage_tolerance", "2", "0 .. 100",
+        "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("coverage_tolerance", v, 0.0f, 100.0f, c.coverageTolerance);
+       },
        [](const Config& c) { return formatFloat(c.coverageTolerance); }},
-      {{"preset", "none", "none, low, medium, high, ultra", "a bundle of the keys above, tuned by `make presets` (docs/presets.md); keys after it override"},
+      {{"preset", "none", "none, low, medium, high, ultra",
+        "a bundle of the keys above, tuned by `make presets` (docs/presets.md); keys after it override"},
        [](Config& c, const std::string& v) -> Status {
          if (v == "none") return Status::ok();
          const auto& files = presets::embeddedFiles();
          const auto found = files.find(v + ".cfg");
-         if (found == files.end()) return invalid("config key 'preset': unknown value '" + v + "' (allowed: none, low, medium, high, ultra)");
+         if (found == files.end())
+           return invalid("config key 'preset': unknown value '" + v + "' (allowed: none, low, medium, high, ultra)");
          // Quality keys only: where shaders come from and whether to time them stay the user's.
          std::string lines;
          std::istringstream in(found->second);
          for (std::string line; std::getline(in, line);)
-           if (line.rfind("shader_override_dir", 0) != 0 && line.rfind("measure_gpu_time", 0) != 0 && line.rfind("preset", 0) != 0) lines += line + "\n";
+           if (line.rfind("shader_override_dir", 0) != 0 && line.rfind("measure_gpu_time", 0) != 0 &&
+               line.rfind("preset", 0) != 0)
+             lines += line + "\n";
          return applyConfigText(c, lines, "preset " + v);
        },
        [](const Config&) { return std::string("none"); }},
-      {{"budget_ms", "0", "0 .. 1000", "GPU budget of the plugin's passes; adaptive (and edge/depth) adjust their refinement frame to frame to keep it; 0 is off"},
+      {{"budget_ms", "0", "0 .. 1000",
+        "GPU budget of the plugin's passes; adaptive (and edge/depth) adjust their refinement frame to frame to keep "
+        "it; 0 is off"},
        [](Config& c, const std::string& v) { return parseFloat("budget_ms", v, 0.0f, 1000.0f, c.budgetMs); },
        [](const Config& c) { return formatFloat(c.budgetMs); }},
       {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
@@ -189,9 +232,12 @@ const std::vector<Setter>& setters() {
        [](Config& c, const std::string& v) { return parseEnum("fxaa_quality", v, kFxaaQualities, c.fxaaQuality); },
        [](const Config& c) { return std::string(toString(c.fxaaQuality)); }},
       {{"fxaa_edge_threshold", "0.125", "0.063 .. 0.333", "FXAA local contrast needed to filter; lower softens more"},
-       [](Config& c, const std::string& v) { return parseFloat("fxaa_edge_threshold", v, 0.063f, 0.333f, c.fxaaEdgeThreshold); },
+       [](Config& c, const std::string& v) {
+         return parseFloat("fxaa_edge_threshold", v, 0.063f, 0.333f, c.fxaaEdgeThreshold);
+       },
        [](const Config& c) { return formatFloat(c.fxaaEdgeThreshold); }},
-      {{"shader_override_dir", "", "a folder", "files there replace built-in shaders of the same path; compile errors fall back"},
+      {{"shader_override_dir", "", "a folder",
+        "files there replace built-in shaders of the same path; compile errors fall back"},
        [](Config& c, const std::string& v) { return c.shaderOverrideDirectory = v, Status::ok(); },
        [](const Config& c) { return c.shaderOverrideDirectory; }},
       {{"measure_gpu_time", "off", "on, off", "timer query per plugin pass, read back at once (waits for the GPU)"},
@@ -264,7 +310,8 @@ std::vector<std::string> settingValues(const std::string& key) {
   for (const Setter& s : setters()) {
     if (key != s.key.name) continue;
     const std::string allowed = s.key.allowed;
-    if (allowed.find("..") != std::string::npos || allowed.find(' ') == std::string::npos || allowed.find(',') == std::string::npos)
+    if (allowed.find("..") != std::string::npos || allowed.find(' ') == std::string::npos ||
+        allowed.find(',') == std::string::npos)
       return values;  // a range or a folder
     std::istringstream in(allowed);
     for (std::string value; std::getline(in, value, ',');) values.push_back(trim(value));
@@ -330,7 +377,7 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
       if (usesMsaa(config.method)) config.method = Method::Off;
     } else {
       config.samples = static_cast<int>(n);
-      if (config.method == Method::Fxaa) config.fxaa = true;  // -aa_preset came first: keep FXAA
+      if (config.method == Method::Fxaa) config.fxaa = true;          // -aa_preset came first: keep FXAA
       if (!usesMsaa(config.method)) config.method = Method::Resolve;  // FSO's MSAA is the resolve
     }
     return Status::ok();
@@ -338,10 +385,13 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
   if (flag == "-aa_preset") {
     if (!isInteger || n < 0 || n > 6) return invalid("-aa_preset: value '" + value + "' is not an integer in 0..6");
     static const FxaaQuality qualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
-    if (n >= 3) warnings.push_back("-aa_preset " + value + " selects SMAA in FreeSpace Open; retroaa uses FXAA high instead");
+    if (n >= 3)
+      warnings.push_back("-aa_preset " + value + " selects SMAA in FreeSpace Open; retroaa uses FXAA high instead");
     config.fxaaQuality = n >= 3 ? FxaaQuality::High : qualities[n];
-    if (config.method == Method::Off) config.method = Method::Fxaa;
-    else if (config.method != Method::Fxaa) config.fxaa = true;
+    if (config.method == Method::Off)
+      config.method = Method::Fxaa;
+    else if (config.method != Method::Fxaa)
+      config.fxaa = true;
     return Status::ok();
   }
   return invalid("unknown FreeSpace Open flag '" + flag + "' (known: -msaa, -aa_preset)");

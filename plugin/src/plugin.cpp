@@ -1,7 +1,7 @@
 #include "retroaa/plugin.h"
 
-#include "context.h"
 #include "budget_controller.h"
+#include "context.h"
 #include "gl_state.h"
 #include "technique.h"
 
@@ -22,7 +22,8 @@ Status validateLayout(const GBufferLayout& layout) {
     if (!a.texture || !a.internalFormat) return invalid("an attachment has no texture or no format");
     positions += a.role == AttachmentRole::ViewPosition;
   }
-  if (positions != 1) return invalid("layout needs exactly one ViewPosition attachment (has " + std::to_string(positions) + ")");
+  if (positions != 1)
+    return invalid("layout needs exactly one ViewPosition attachment (has " + std::to_string(positions) + ")");
   if (layout.depthChannel < 0 || layout.depthChannel > 3) return invalid("depthChannel must be 0..3");
   if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer || !layout.lightTexture ||
       !layout.displayFramebuffer || !layout.displayTexture)
@@ -79,12 +80,14 @@ struct Plugin::Impl {
     if (const TechniqueRow* own = findTechnique(config.method)) rows.push_back(own);
     for (const TechniqueRow& row : techniqueRegistry())
       if (row.info.method != config.method && row.stackedOn && row.stackedOn(config)) rows.push_back(&row);
-    std::stable_partition(rows.begin() + (rows.empty() ? 0 : 1), rows.end(), [](const TechniqueRow* row) { return !row->postLast; });
+    std::stable_partition(rows.begin() + (rows.empty() ? 0 : 1), rows.end(),
+                          [](const TechniqueRow* row) { return !row->postLast; });
     return rows;
   }
   static uint32_t storageOf(const Config& config, const std::vector<const TechniqueRow*>& rows) {
     uint32_t storage = kStorageNone;
-    for (const TechniqueRow* row : rows) storage |= row->info.method == config.method ? row->storage : row->stackedStorage;
+    for (const TechniqueRow* row : rows)
+      storage |= row->info.method == config.method ? row->storage : row->stackedStorage;
     if (storage & kStorageSlices) storage |= kStorageMsaaGBuffer;
     return storage;
   }
@@ -198,7 +201,8 @@ struct Plugin::Impl {
   }
 
   uint64_t bytesHeld() const {
-    uint64_t bytes = (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (postTarget ? postTarget->bytes() : 0);
+    uint64_t bytes =
+        (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (postTarget ? postTarget->bytes() : 0);
     for (const ActiveTechnique& active : techniques) bytes += active.technique->bytes();
     return bytes;
   }
@@ -339,9 +343,11 @@ Stats Plugin::stats() const {
   Stats stats = context.frameStats;
   stats.method = context.config.method;
   stats.samples = 1;
-  if (impl_->msaa) stats.samples = impl_->msaa->samples();
+  if (impl_->msaa)
+    stats.samples = impl_->msaa->samples();
   else
-    for (const ActiveTechnique& active : impl_->techniques) stats.samples = std::max(stats.samples, active.technique->samples());
+    for (const ActiveTechnique& active : impl_->techniques)
+      stats.samples = std::max(stats.samples, active.technique->samples());
   stats.pixels = context.pixelCount();
   stats.bytesHeld = impl_->bytesHeld();
   stats.glObjectsHeld = context.objects.live;

@@ -1,5 +1,5 @@
 // The method registry: one row per method. Adding a method is one file in methods/ (a Technique and
-// its factory), one folder of shaders/, the enum value in config.h and one row here (DESIGN in
+// its factory), one folder of shaders/, the enum value in config.h and one row here (how, in
 // docs/architecture.md). Everything else (config parsing, `retroaa config`, the tools' method lists,
 // what the plugin allocates) reads this table.
 #include "technique.h"
@@ -17,35 +17,48 @@ namespace {
 
 constexpr uint32_t kSliced = kStorageMsaaGBuffer | kStorageSlices;
 
+// Each row: {{method, name, summary, needs multisampling, least samples, sweep specs, regression spec,
+//             tune specs}, storage, factory[, stacked when, storage when stacked, post pass last]}
 std::vector<TechniqueRow>& rows() {
   static std::vector<TechniqueRow> table = {
-      {{Method::Off, "off", "the host's stock single-sample path; the plugin holds nothing", false, 1, "off", "off", "off"},
-       kStorageNone, nullptr},
+      {{Method::Off, "off", "the host's stock single-sample path; the plugin holds nothing", false, 1, "off", "off",
+        "off"},
+       kStorageNone,
+       nullptr},
       {{Method::Fxaa, "fxaa", "FXAA 3.11 after tonemapping (FreeSpace Open's default AA)", false, 1, "fxaa", "fxaa",
         "fxaa@fxaa_quality=low,fxaa"},
-       kStoragePostTarget, createFxaaTechnique,
-       [](const Config& c) { return c.fxaa; }, kStoragePostTarget, /*postLast=*/true},
+       kStoragePostTarget,
+       createFxaaTechnique,
+       [](const Config& c) { return c.fxaa; },
+       kStoragePostTarget,
+       /*postLast=*/true},
       {{Method::Resolve, "resolve", "MSAA G-buffer and a depth-aware resolve into the host's G-buffer", true, 1,
         "resolve,resolve/front,resolve/back,resolve/fso,resolve/mean,resolve+fxaa", "resolve",
         "resolve@samples=2,resolve,resolve@samples=8,resolve/fso,resolve+fxaa,resolve+coverage"},
-       kStorageMsaaGBuffer, nullptr},
+       kStorageMsaaGBuffer,
+       nullptr},
       {{Method::Coverage, "coverage", "depth-only MSAA prepass and a coverage filter after tonemapping", true, 2,
         "coverage,resolve+coverage", "resolve+coverage", "coverage"},
-       kStoragePostTarget, createCoverageTechnique,
-       [](const Config& c) { return c.coverageFilter && usesMsaa(c.method); }, kStoragePostTarget},
+       kStoragePostTarget,
+       createCoverageTechnique,
+       [](const Config& c) { return c.coverageFilter && usesMsaa(c.method); },
+       kStoragePostTarget},
       {{Method::Edge, "edge", "edge pixels (a detector decides) lit once per sample through slices", true, 1, "edge",
         "edge", "edge@samples=2,edge,edge@samples=8,edge@edge_detector=plane"},
-       kSliced, createEdgeTechnique},
+       kSliced,
+       createEdgeTechnique},
       {{Method::Adaptive, "adaptive", "Holländer's metrics choose k samples per pixel, lit through slices", true, 1,
-        "adaptive", "adaptive",
-        "adaptive@adaptive_shading_scale=0.5,adaptive,adaptive@adaptive_shading_scale=8"},
-       kSliced, createAdaptiveTechnique},
+        "adaptive", "adaptive", "adaptive@adaptive_shading_scale=0.5,adaptive,adaptive@adaptive_shading_scale=8"},
+       kSliced,
+       createAdaptiveTechnique},
       {{Method::Aggregate, "aggregate", "AGAA's clustering: at most c aggregates per pixel, each lit once", true, 1,
         "aggregate", "aggregate", "aggregate@aggregate_count=1,aggregate,aggregate@aggregate_count=3"},
-       kSliced, createAggregateTechnique},
+       kSliced,
+       createAggregateTechnique},
       {{Method::PerSample, "per-sample", "every sample lit through slices: the quality reference at rate N", true, 1,
         "per-sample", "per-sample", "per-sample@samples=2,per-sample,per-sample@samples=8"},
-       kSliced, createEdgeTechnique},
+       kSliced,
+       createEdgeTechnique},
   };
   return table;
 }

@@ -51,8 +51,8 @@ enum Storage : uint32_t {
 using TechniqueFactory = Result<std::unique_ptr<Technique>> (*)(PluginContext&, SharedTargets&);
 
 struct TechniqueRow {
-  MethodInfo info;   // name, summary, what tools measure (config.h)
-  uint32_t storage;  // Storage bits when this row is the config's method
+  MethodInfo info;          // name, summary, what tools measure (config.h)
+  uint32_t storage;         // Storage bits when this row is the config's method
   TechniqueFactory create;  // null: the shared pieces do all of it
   // Non-null: the row is also active on top of another method when this says so (+fxaa,
   // +coverage), needing `stackedStorage` then.

@@ -8,8 +8,7 @@ using namespace retroaa;
 TEST(Config, DefaultsAreDocumentedOnce) {
   const Config defaults;
   Config parsed;
-  for (const ConfigKey& key : configKeys())
-    ASSERT_TRUE(applySetting(parsed, key.name, key.defaultValue)) << key.name;
+  for (const ConfigKey& key : configKeys()) ASSERT_TRUE(applySetting(parsed, key.name, key.defaultValue)) << key.name;
   EXPECT_EQ(toConfigText(parsed), toConfigText(defaults));
 }
 
@@ -25,7 +24,8 @@ TEST(Config, UnknownKeyNamesKnownKeys) {
 TEST(Config, BadValuesNameKeyValueAndAllowedSet) {
   Config config;
   Status s = applySetting(config, "method", "taa");
-  EXPECT_NE(s.error().message.find("'method': unknown value 'taa' (allowed: off, fxaa, resolve"), std::string::npos) << s.error().message;
+  EXPECT_NE(s.error().message.find("'method': unknown value 'taa' (allowed: off, fxaa, resolve"), std::string::npos)
+      << s.error().message;
   s = applySetting(config, "samples", "3");
   EXPECT_NE(s.error().message.find("unsupported sample count '3' (allowed: 1, 2, 4, 8, 16)"), std::string::npos);
   s = applySetting(config, "closeness", "1e9");
@@ -50,7 +50,8 @@ TEST(Config, TextNamesTheLineAndLeavesTheConfigUntouchedOnError) {
 
 TEST(Config, RoundTripsThroughText) {
   Config config;
-  ASSERT_TRUE(applySettingsList(config, "method=resolve, samples=2; resolve_weighting=fso,closeness=2.5,fxaa=on", "env"));
+  ASSERT_TRUE(
+      applySettingsList(config, "method=resolve, samples=2; resolve_weighting=fso,closeness=2.5,fxaa=on", "env"));
   Config reread;
   ASSERT_TRUE(applyConfigText(reread, toConfigText(config), "roundtrip"));
   EXPECT_EQ(toConfigText(reread), toConfigText(config));
@@ -99,7 +100,7 @@ TEST(Config, PresetsApplyTheirTunedBundleAndLaterKeysOverride) {
   Config config;
   config.shaderOverrideDirectory = "mods/shaders";
   ASSERT_TRUE(applyConfigText(config, "preset=high\nsamples=2\n", "user.cfg"));
-  EXPECT_EQ(config.samples, 2);                              // a later key overrides the preset
+  EXPECT_EQ(config.samples, 2);                               // a later key overrides the preset
   EXPECT_EQ(config.shaderOverrideDirectory, "mods/shaders");  // not a quality key: left alone
   EXPECT_FALSE(applySetting(config, "preset", "extreme"));
 }

@@ -14,9 +14,9 @@
 namespace retroaa {
 
 enum class Method : uint8_t {
-  Off,      // the host's stock single-sample path; the plugin holds nothing (1 lighting eval/pixel)
-  Fxaa,     // Lottes' FXAA after tonemapping (1 eval/pixel)
-  Resolve,  // MSAA G-buffer + depth-aware resolve into the host's G-buffer (1 eval/pixel)
+  Off,        // the host's stock single-sample path; the plugin holds nothing (1 lighting eval/pixel)
+  Fxaa,       // Lottes' FXAA after tonemapping (1 eval/pixel)
+  Resolve,    // MSAA G-buffer + depth-aware resolve into the host's G-buffer (1 eval/pixel)
   Edge,       // Thibieroz: edge pixels lit once per sample, the rest once (1 + (N-1)·edge fraction)
   PerSample,  // every sample of every pixel lit: the quality reference at rate N (N evals/pixel)
   Adaptive,   // Holländer et al.: k samples per pixel from geometry and shading metrics (1 + Σ(k−1)/pixels)
@@ -69,16 +69,17 @@ struct Config {
   float edgeNormalAngleDegrees = 25.0f;
   // `adaptive` (Holländer et al. 2013): k = clamp(max(k_d, k_n, k_s), adaptive_min_samples, N).
   // Each scale multiplies its metric; larger refines more pixels (slower, closer to per-sample).
-  float adaptiveDepthScale = 0.5f;    // k_d = scale · variance of depth in pixel footprints, [0, 1000]
-  float adaptiveNormalScale = 8.0f;   // k_n = scale · sqrt(1 − min |n̄·n_i|), [0, 1000]
-  float adaptiveShadingScale = 2.0f;  // k_s = scale · N · luma range of the first lit sample, [0, 1000]
-  float adaptiveThresholdMin = 0.0312f;   // k_s = 0 below this luma range (FXAA's), [0, 1]
-  float adaptiveThresholdEdge = 0.125f;   // … or below this fraction of the local max luma, [0, 1]
-  int adaptiveMinSamples = 1;  // floor of k, [1, 16]; N forces every sample (equals per-sample)
+  float adaptiveDepthScale = 0.5f;       // k_d = scale · variance of depth in pixel footprints, [0, 1000]
+  float adaptiveNormalScale = 8.0f;      // k_n = scale · sqrt(1 − min |n̄·n_i|), [0, 1000]
+  float adaptiveShadingScale = 2.0f;     // k_s = scale · N · luma range of the first lit sample, [0, 1000]
+  float adaptiveThresholdMin = 0.0312f;  // k_s = 0 below this luma range (FXAA's), [0, 1]
+  float adaptiveThresholdEdge = 0.125f;  // … or below this fraction of the local max luma, [0, 1]
+  int adaptiveMinSamples = 1;            // floor of k, [1, 16]; N forces every sample (equals per-sample)
   // `aggregate` (Crassin et al. 2016): at most c aggregates per pixel (plus one for background).
-  int aggregateCount = 2;           // c, [1, 4]; more aggregates: closer to per-sample, more evaluations
-  float aggregateThreshold = 0.1f;  // t, [0, 10]: a new aggregate only beyond this distance; 0 splits all distinct samples
-  float aggregateLength = 4.0f;     // k in pixel footprints, [0.01, 1000]: depth gaps beyond ~k·sqrt(t) split
+  int aggregateCount = 2;  // c, [1, 4]; more aggregates: closer to per-sample, more evaluations
+  float aggregateThreshold =
+      0.1f;                      // t, [0, 10]: a new aggregate only beyond this distance; 0 splits all distinct samples
+  float aggregateLength = 4.0f;  // k in pixel footprints, [0.01, 1000]: depth gaps beyond ~k·sqrt(t) split
   // The coverage filter after tonemapping, stacked on `resolve` (which supplies its MSAA depth, so no
   // prepass): intra-model smoothing plus silhouette blending at one lighting evaluation per pixel.
   bool coverageFilter = false;
@@ -116,8 +117,8 @@ const std::vector<ConfigKey>& configKeys();
 // read their method lists from here; none names a method itself.
 struct MethodInfo {
   Method method = Method::Off;
-  const char* name = "";     // as config files, the command line and reports spell it
-  const char* summary = "";  // what it does, in one line
+  const char* name = "";      // as config files, the command line and reports spell it
+  const char* summary = "";   // what it does, in one line
   bool multisampled = false;  // needs GL_MAX_SAMPLES >= 2; falls back to fxaa (with a warning) without
   int minSamples = 1;         // fewer samples are raised to this, with a warning
   // Method specs (app: `method[/weighting][+fxaa|+coverage][@key=value]...`), comma-separated:

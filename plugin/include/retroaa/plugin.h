@@ -45,14 +45,14 @@ struct DepthEncoding {
     LogAboveKnee,  // stored = d below `knee`, knee·(1 + log2(d/knee)) above it
   };
   Kind kind = Kind::Linear;
-  float knee = 8192.0f;             // metres
+  float knee = 8192.0f;              // metres
   float backgroundAbove = 65280.0f;  // stored values at or above this mark "no geometry"
 };
 
 // How the host maps its gloss channel (NormalGloss.w) to a specular exponent; retroaa's aggregates
 // lower gloss by the spread of the normals they merge (Toksvig) in exponent space.
 struct GlossEncoding {
-  bool present = false;            // false: gloss is averaged like any channel
+  bool present = false;             // false: gloss is averaged like any channel
   float log2ExponentScale = 10.0f;  // exponent = exp2(gloss · scale + bias)
   float log2ExponentBias = 1.0f;
 };
@@ -77,11 +77,11 @@ struct GBufferLayout {
   DepthEncoding depthEncoding;
   GlossEncoding glossEncoding;
   DepthBufferEncoding depthBufferEncoding = DepthBufferEncoding::Perspective;
-  GLuintHandle gbufferFramebuffer = 0;  // the host's single-sample G-buffer (attachments + depth)
-  GLuintHandle depthStencilTexture = 0;  // DEPTH24_STENCIL8
-  uint8_t hostStencilBits = 0x00;       // stencil bits the host owns; retroaa leaves them alone
-  GLuintHandle lightFramebuffer = 0;    // where the host's lighting accumulates (RGBA16F)
-  GLuintHandle lightTexture = 0;        // its colour texture (slices composite into it)
+  GLuintHandle gbufferFramebuffer = 0;                      // the host's single-sample G-buffer (attachments + depth)
+  GLuintHandle depthStencilTexture = 0;                     // DEPTH24_STENCIL8
+  uint8_t hostStencilBits = 0x00;                           // stencil bits the host owns; retroaa leaves them alone
+  GLuintHandle lightFramebuffer = 0;                        // where the host's lighting accumulates (RGBA16F)
+  GLuintHandle lightTexture = 0;                            // its colour texture (slices composite into it)
   GLuintHandle displayFramebuffer = 0, displayTexture = 0;  // tonemapped RGBA8, for post()
 };
 
@@ -98,7 +98,7 @@ enum Feature : uint32_t {
 struct Description {
   Config config;
   GBufferLayout layout;
-  LogCallback log;  // receives every warning (clamps, fallbacks); may be empty
+  LogCallback log;                // receives every warning (clamps, fallbacks); may be empty
   uint32_t disabledFeatures = 0;  // Feature bits to treat as missing
   int maxSamplesLimit = 0;        // treat GL_MAX_SAMPLES as at most this (0: the context's own; 1: no MSAA)
 };
@@ -116,15 +116,15 @@ struct PassTime {
 
 struct Stats {
   Method method = Method::Off;
-  int samples = 1;                    // samples granted (after clamping)
-  uint64_t pixels = 0;                // width × height
-  uint64_t lightingEvaluations = 0;   // pixels lit, summed over lighting calls of the last frame
+  int samples = 1;                   // samples granted (after clamping)
+  uint64_t pixels = 0;               // width × height
+  uint64_t lightingEvaluations = 0;  // pixels lit, summed over lighting calls of the last frame
   double evaluationsPerPixel() const { return pixels ? double(lightingEvaluations) / pixels : 0; }
-  std::vector<PassTime> passes;       // plugin passes of the last frame (measureGpuTime)
-  uint64_t bytesHeld = 0;             // GPU memory of the plugin's own targets
-  int glObjectsHeld = 0;              // live GL objects owned by the plugin
-  int slices = 1;                     // lighting passes of the last frame
-  double budgetScale = 1.0;           // the budget controller's quality scale (1 without a budget)
+  std::vector<PassTime> passes;  // plugin passes of the last frame (measureGpuTime)
+  uint64_t bytesHeld = 0;        // GPU memory of the plugin's own targets
+  int glObjectsHeld = 0;         // live GL objects owned by the plugin
+  int slices = 1;                // lighting passes of the last frame
+  double budgetScale = 1.0;      // the budget controller's quality scale (1 without a budget)
 };
 
 // The host's lighting pass, rendering into `target` from the host's single-sample G-buffer.

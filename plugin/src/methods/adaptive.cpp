@@ -49,7 +49,7 @@ class AdaptiveTechnique : public Technique {
     t.stencilExport_ = context.capabilities.stencilExport;
     auto geometry = context.shaders->program("common/fullscreen.vert", "adaptive/geometry_metric.frag",
                                              source.shaderDefines(layout, false),
-                                             {RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan", "uDepthScale", "uNormalScale"});
+                                             {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthScale", "uNormalScale"});
     if (!geometry) return geometry.error();
     t.geometryProgram_ = std::move(geometry.value());
     auto shading = context.shaders->program(
@@ -61,7 +61,8 @@ class AdaptiveTechnique : public Technique {
     t.geometryK_ = makeTexture(context, GL_R16F, layout.width, layout.height, 0, "adaptive.geometry_k", t.bytes_);
     t.geometryTarget_ = makeFramebuffer(context, "adaptive.geometry_k");
     glNamedFramebufferTexture(t.geometryTarget_.get(), GL_COLOR_ATTACHMENT0, t.geometryK_.get(), 0);
-    if (Status status = checkFramebuffer(t.geometryTarget_.get(), "adaptive.geometry_k"); !status) return status.error();
+    if (Status status = checkFramebuffer(t.geometryTarget_.get(), "adaptive.geometry_k"); !status)
+      return status.error();
 
     // The driver's own sample positions decide the order (queried, not assumed).
     std::vector<float> positions(size_t(source.samples()) * 2, 0.5f);
@@ -74,10 +75,7 @@ class AdaptiveTechnique : public Technique {
   Status afterResolve(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     ScopedPass timed(context, "adaptive.geometry_metric");
     context.beginFullscreenPass(geometryTarget_.get());
-    geometryProgram_.use();
-    shared.msaa->bind(context.layout);
-    geometryProgram_.setDepthEncoding(context.layout);
-    geometryProgram_.set("uFootprintTan", context.footprintTan(frame));
+    shared.msaa->beginPass(geometryProgram_, context, frame);
     const float budget = float(context.budgetScale);  // 1 without a budget
     geometryProgram_.set("uDepthScale", context.config.adaptiveDepthScale * budget);
     geometryProgram_.set("uNormalScale", context.config.adaptiveNormalScale * budget);

@@ -25,12 +25,12 @@ class AggregateTechnique : public Technique {
         "common/fullscreen.vert", "aggregate/cluster.frag",
         source.shaderDefines(layout, false) + defineLine("MAX_AGGREGATES", std::min(t.aggregateCount_, t.samples_)) +
             defineLine("STENCIL_EXPORT", t.stencilExport_),
-        {RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan", "uLength", "uThreshold", "uSamplePositions"});
+        {RETROAA_GBUFFER_PASS_UNIFORMS, "uLength", "uThreshold", "uSamplePositions"});
     if (!cluster) return cluster.error();
     t.clusterProgram_ = std::move(cluster.value());
-    auto write = context.shaders->program("common/fullscreen.vert", "aggregate/write_aggregate.frag",
-                                          source.shaderDefines(layout),
-                                          {RETROAA_DEPTH_ENCODING_UNIFORMS, "uSlice", "uHasGloss", "uGlossScale", "uGlossBias"});
+    auto write = context.shaders->program(
+        "common/fullscreen.vert", "aggregate/write_aggregate.frag", source.shaderDefines(layout),
+        {RETROAA_DEPTH_ENCODING_UNIFORMS, "uSlice", "uHasGloss", "uGlossScale", "uGlossBias"});
     if (!write) return write.error();
     t.writeProgram_ = std::move(write.value());
     auto composite = context.shaders->program("common/fullscreen.vert", "aggregate/composite_coverage.frag", "",
@@ -56,10 +56,7 @@ class AggregateTechnique : public Technique {
   // Algorithm 1: the slice count (aggregates + background) and every sample's aggregate.
   Status afterResolve(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     ScopedPass timed(context, "aggregate.cluster");
-    clusterProgram_.use();
-    shared.msaa->bind(context.layout);
-    clusterProgram_.setDepthEncoding(context.layout);
-    clusterProgram_.set("uFootprintTan", context.footprintTan(frame));
+    shared.msaa->beginPass(clusterProgram_, context, frame);
     clusterProgram_.set("uLength", context.config.aggregateLength);
     clusterProgram_.set("uThreshold", context.config.aggregateThreshold);
     clusterProgram_.setVec2Array("uSamplePositions", samples_, samplePositions_.data());

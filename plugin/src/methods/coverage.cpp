@@ -28,8 +28,8 @@ class CoverageTechnique : public Technique {
       t.samples_ = shared.msaa->samples();
       framebuffer = shared.msaa->framebuffer();
     } else {
-      t.depth_ = makeTexture(context, GL_DEPTH24_STENCIL8, layout.width, layout.height, std::max(t.requestedSamples_, 1),
-                             "coverage.depth", t.bytes_);
+      t.depth_ = makeTexture(context, GL_DEPTH24_STENCIL8, layout.width, layout.height,
+                             std::max(t.requestedSamples_, 1), "coverage.depth", t.bytes_);
       t.prepass_ = makeFramebuffer(context, "coverage.prepass");
       glNamedFramebufferTexture(t.prepass_.get(), GL_DEPTH_STENCIL_ATTACHMENT, t.depth_.get(), 0);
       glNamedFramebufferDrawBuffer(t.prepass_.get(), GL_NONE);
@@ -41,10 +41,10 @@ class CoverageTechnique : public Technique {
     t.samplePositions_.assign(size_t(t.samples_) * 2, 0.5f);
     readSamplePositions(framebuffer, t.samplePositions_);
     const bool logarithmic = layout.depthBufferEncoding == DepthBufferEncoding::Logarithmic;
-    auto program = context.shaders->program(
-        "common/fullscreen.vert", "coverage/coverage_filter.frag",
-        defineLine("SAMPLES", t.samples_) + defineLine("LOGARITHMIC_DEPTH", logarithmic),
-        {"uSamplePositions", "uTexelSize", "uNear", "uFar", "uFootprintTan", "uTolerance"});
+    auto program =
+        context.shaders->program("common/fullscreen.vert", "coverage/coverage_filter.frag",
+                                 defineLine("SAMPLES", t.samples_) + defineLine("LOGARITHMIC_DEPTH", logarithmic),
+                                 {"uSamplePositions", "uTexelSize", "uNear", "uFar", "uFootprintTan", "uTolerance"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));

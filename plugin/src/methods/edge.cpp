@@ -24,7 +24,7 @@ class EdgeTechnique : public Technique {
                                 defineLine("EDGE_DETECTOR", int(technique->detector_)) +
                                 defineLine("STENCIL_EXPORT", technique->stencilExport_);
     auto program = context.shaders->program("common/fullscreen.vert", "edge/detect_edges.frag", defines,
-                                            {RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan", "uDepthCloseness", "uNormalCosine"});
+                                            {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthCloseness", "uNormalCosine"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -32,10 +32,7 @@ class EdgeTechnique : public Technique {
 
   Status afterResolve(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     ScopedPass timed(context, "edge_mask");
-    program_.use();
-    shared.msaa->bind(context.layout);
-    program_.setDepthEncoding(context.layout);
-    program_.set("uFootprintTan", context.footprintTan(frame));
+    shared.msaa->beginPass(program_, context, frame);
     // A budget scale above 1 marks more pixels: a smaller closeness.
     program_.set("uDepthCloseness", context.config.edgeDepthCloseness / float(context.budgetScale));
     program_.set("uNormalCosine", std::cos(context.config.edgeNormalAngleDegrees * 3.14159265f / 180.0f));

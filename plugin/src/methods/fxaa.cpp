@@ -23,9 +23,9 @@ class FxaaTechnique : public Technique {
   static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets&) {
     auto technique = std::make_unique<FxaaTechnique>();
     technique->quality_ = context.config.fxaaQuality;
-    auto program = context.shaders->program(
-        "common/fullscreen.vert", "fxaa/fxaa.frag", defineLine("FXAA_SEARCH_STEPS", searchSteps(technique->quality_)),
-        {"uTexelSize", "uEdgeThreshold", "uEdgeThresholdMin", "uSubpixel"});
+    auto program = context.shaders->program("common/fullscreen.vert", "fxaa/fxaa.frag",
+                                            defineLine("FXAA_SEARCH_STEPS", searchSteps(technique->quality_)),
+                                            {"uTexelSize", "uEdgeThreshold", "uEdgeThresholdMin", "uSubpixel"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));

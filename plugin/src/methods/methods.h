@@ -13,6 +13,9 @@ namespace retroaa {
 // multisampled depth-stencil. The host's model pass renders into it unchanged. N = 1 allocates plain
 // single-sample textures (a "multisample" texture of one sample may rasterise at a corner sample
 // position, or be backed by more samples), so the resolve at N = 1 sees exactly what `off` sees.
+// The uniforms MsaaGBuffer::beginPass sets, for the uniform list of a program that reads the G-buffer.
+#define RETROAA_GBUFFER_PASS_UNIFORMS RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan"
+
 class MsaaGBuffer {
  public:
   static Result<std::unique_ptr<MsaaGBuffer>> create(PluginContext& context, int samples);
@@ -27,6 +30,9 @@ class MsaaGBuffer {
   std::string shaderDefines(const GBufferLayout& layout, bool withOutputs = true) const;
   // Binds attachment i to texture unit i and the depth-stencil to kUnitDepthStencil.
   void bind(const GBufferLayout& layout) const;
+  // A full-screen pass reading this G-buffer: uses `program`, binds the G-buffer and sets the uniforms
+  // every such program declares (RETROAA_GBUFFER_PASS_UNIFORMS: depth encoding, Eq. 1's footprint).
+  void beginPass(const ShaderProgram& program, const PluginContext& context, const FrameInfo& frame) const;
   uint64_t bytes() const { return bytes_; }
 
  private:
@@ -108,7 +114,7 @@ std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY);
 class PostTarget {
  public:
   static Result<std::unique_ptr<PostTarget>> create(PluginContext& context);
-  void bindAsOutput(const PluginContext& context) const;  // framebuffer, viewport, plain state
+  void bindAsOutput(const PluginContext& context) const;           // framebuffer, viewport, plain state
   void bindInput(const GBufferLayout& layout, GLuint unit) const;  // the display texture, bilinear
   void copyBack(const GBufferLayout& layout) const;
   uint64_t bytes() const { return bytes_; }

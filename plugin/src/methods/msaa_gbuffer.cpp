@@ -68,4 +68,11 @@ void MsaaGBuffer::bind(const GBufferLayout& layout) const {
   glBindTextureUnit(kUnitDepthStencil, depthStencil());
 }
 
+void MsaaGBuffer::beginPass(const ShaderProgram& program, const PluginContext& context, const FrameInfo& frame) const {
+  program.use();
+  bind(context.layout);
+  program.setDepthEncoding(context.layout);
+  program.set("uFootprintTan", context.footprintTan(frame));
+}
+
 }  // namespace retroaa

@@ -10,7 +10,7 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   const GBufferLayout& layout = context.layout;
   Result<ShaderProgram> program =
       context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag", source.shaderDefines(layout),
-                               {RETROAA_DEPTH_ENCODING_UNIFORMS, "uWeighting", "uFootprintTan", "uFsoFootprintTan", "uCloseness"});
+                               {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness"});
   if (!program) return program.error();
   pass->program_ = std::move(program.value());
 
@@ -18,14 +18,13 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   pass->hostTarget_ = makeFramebuffer(context, "resolve.host_target");
   std::vector<GLenum> drawBuffers;
   for (size_t i = 0; i < layout.attachments.size(); ++i) {
-    glNamedFramebufferTexture(pass->hostTarget_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i),
-                              layout.attachments[i].texture, 0);
+    glNamedFramebufferTexture(pass->hostTarget_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i), layout.attachments[i].texture,
+                              0);
     drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
   }
   glNamedFramebufferDrawBuffers(pass->hostTarget_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
   glNamedFramebufferTexture(pass->hostTarget_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
-  if (Status status = checkFramebuffer(pass->hostTarget_.get(), "resolve.host_target"); !status)
-    return status.error();
+  if (Status status = checkFramebuffer(pass->hostTarget_.get(), "resolve.host_target"); !status) return status.error();
   return pass;
 }
 
@@ -36,13 +35,10 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
   glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
-  program_.use();
-  source.bind(layout);
+  source.beginPass(program_, context, frame);
   program_.set("uWeighting", int(context.config.resolveWeighting));
-  program_.set("uFootprintTan", context.footprintTan(frame));
   program_.set("uFsoFootprintTan", std::tan(frame.horizontalFovRadians / float(layout.height)));
   program_.set("uCloseness", context.config.closeness);
-  program_.setDepthEncoding(layout);
   context.drawFullscreen();
   return Status::ok();
 }

@@ -38,17 +38,21 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
   slices->sliceWriter_ = makeFramebuffer(context, "slices.writer");
   std::vector<GLenum> drawBuffers;
   for (size_t i = 0; i < layout.attachments.size(); ++i) {
-    glNamedFramebufferTexture(slices->sliceWriter_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i), layout.attachments[i].texture, 0);
+    glNamedFramebufferTexture(slices->sliceWriter_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i),
+                              layout.attachments[i].texture, 0);
     drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
   }
   glNamedFramebufferDrawBuffers(slices->sliceWriter_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
   glNamedFramebufferTexture(slices->sliceWriter_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
-  for (const auto& [fbo, label] : {std::pair{slices->maskTarget_.get(), "slices.mask"}, {slices->lightTarget_.get(), "slices.light"},
-                                   {slices->compositeTarget_.get(), "slices.composite"}, {slices->sliceWriter_.get(), "slices.writer"}})
+  for (const auto& [fbo, label] : {std::pair{slices->maskTarget_.get(), "slices.mask"},
+                                   {slices->lightTarget_.get(), "slices.light"},
+                                   {slices->compositeTarget_.get(), "slices.composite"},
+                                   {slices->sliceWriter_.get(), "slices.writer"}})
     if (Status status = checkFramebuffer(fbo, label); !status) return status.error();
 
-  auto writeSlice = context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag", source.shaderDefines(layout),
-                                             {RETROAA_DEPTH_ENCODING_UNIFORMS, "uSample"});
+  auto writeSlice =
+      context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag", source.shaderDefines(layout),
+                               {RETROAA_DEPTH_ENCODING_UNIFORMS, "uSample"});
   if (!writeSlice) return writeSlice.error();
   slices->writeSlice_ = std::move(writeSlice.value());
   auto composite = context.shaders->program("common/fullscreen.vert", "slices/composite.frag");
@@ -99,13 +103,19 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
   // Stencil for slice s: count > s; slice 0 covers every pixel (or, when it keeps the resolved
   // G-buffer of single-count pixels, writes only where count > 1).
   auto sliceStencil = [](int slice) {
-    if (slice == 0) glDisable(GL_STENCIL_TEST); else stencilPassWhereCountAbove(slice);
+    if (slice == 0)
+      glDisable(GL_STENCIL_TEST);
+    else
+      stencilPassWhereCountAbove(slice);
   };
   for (int slice = 0; slice < sliceCount; ++slice) {
     {
       ScopedPass timed(context, "slices.write");
       context.beginFullscreenPass(sliceWriter_.get());
-      if (slice == 0 && !plan.firstSliceEverywhere) stencilPassWhereCountAbove(1); else sliceStencil(slice);
+      if (slice == 0 && !plan.firstSliceEverywhere)
+        stencilPassWhereCountAbove(1);
+      else
+        sliceStencil(slice);
       if (plan.writeProgram) {
         plan.writeProgram->use();
         source.bind(layout);
