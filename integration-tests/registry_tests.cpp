@@ -102,6 +102,11 @@ TEST(Registry, EveryEnumValueHasOneRowAndEveryRowParses) {
     ASSERT_TRUE(retroaa::applySetting(config, "method", row.name)) << row.name;
     EXPECT_EQ(config.method, row.method);
     EXPECT_EQ(retroaa::findMethod(row.method), &row);
+    if (*row.stackKey) {  // a switch, and `resolve+NAME` turns it on
+      EXPECT_EQ(retroaa::settingValues(row.stackKey), (std::vector<std::string>{"on", "off"})) << row.name;
+      EXPECT_EQ(retroaa::readSetting(app::parseMethodSpec(std::string("resolve+") + row.name, {}).config, row.stackKey),
+                "on");
+    }
     // Every spec a tool renders for the row parses and selects the row's method.
     for (const char* specs : {row.sweepSpecs, row.regressSpec, row.tuneSpecs})
       for (const std::string& spec : app::expandMethodList(specs)) {

@@ -75,15 +75,18 @@ MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base)
     if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
     rest = rest.substr(0, at);
   }
-  // Stacked post filters: +coverage, +fxaa, in either order.
+  // Stacked post filters (`+NAME`, in any order): the registry rows with a stack key.
   for (size_t plus = rest.rfind('+'); plus != std::string::npos; plus = rest.rfind('+')) {
     const std::string stacked = rest.substr(plus + 1);
-    if (stacked == "fxaa")
-      out.config.fxaa = true;
-    else if (stacked == "coverage")
-      out.config.coverageFilter = true;
-    else
-      throw std::invalid_argument("method '" + spec + "': only '+fxaa' and '+coverage' can be stacked");
+    std::string stackable;
+    const retroaa::MethodInfo* found = nullptr;
+    for (const retroaa::MethodInfo& row : retroaa::methodTable()) {
+      if (!*row.stackKey) continue;
+      stackable += std::string(stackable.empty() ? "" : ", ") + "'+" + row.name + "'";
+      if (stacked == row.name) found = &row;
+    }
+    if (!found) throw std::invalid_argument("method '" + spec + "': only " + stackable + " can be stacked");
+    if (!retroaa::applySetting(out.config, found->stackKey, "on")) throw std::logic_error("bad stack key");
     rest = rest.substr(0, plus);
   }
   const size_t slash = rest.find('/');

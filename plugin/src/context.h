@@ -3,7 +3,7 @@
 #pragma once
 
 #include "gl_resources.h"
-#include "retroaa/plugin.h"
+#include "retroaa/types.h"
 #include "shader_library.h"
 
 #include <memory>
@@ -35,7 +35,7 @@ struct PluginContext {
   uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }
   // tan(hfov / width): one pixel's footprint per metre of depth, Eq. 1's scale.
   float footprintTan(const FrameInfo& frame) const;
-  void drawFullscreen() const;     // one triangle with the empty vertex array bound
+  void drawFullscreen() const;  // one triangle with the empty vertex array bound
   // Binds `framebuffer` (0: leave the binding) with the layout's viewport and plain state: no blend,
   // depth or stencil test, culling or scissor; all colour channels written.
   void beginFullscreenPass(GLuint framebuffer) const;

@@ -101,8 +101,8 @@ struct Plugin::Impl {
       context.budgetScale = 1.0;
       if (config.budgetMs > 0 && previous.budgetMs != config.budgetMs)
         context.warn(std::string("budget_ms has no effect on ") + toString(config.method) +
-                     " with these settings: its cost does not follow a quality setting (it steers adaptive, and edge "
-                     "with the depth detector)");
+                     " with these settings: its cost does not follow a quality setting (docs/tune.md lists the methods "
+                     "it steers)");
     } else if (!budget || previous.budgetMs != config.budgetMs) {
       budget = std::make_unique<BudgetController>(config.budgetMs);
       context.budgetScale = budget->scale();
@@ -117,8 +117,8 @@ struct Plugin::Impl {
     const MethodInfo* method = findMethod(requested.method);
     if (method->multisampled && caps.maxSamples < 2) {
       context.warn(std::string("method ") + method->name + " needs multisampling but the context's GL_MAX_SAMPLES is " +
-                   std::to_string(caps.maxSamples) + "; falling back to fxaa");
-      requested.method = Method::Fxaa;
+                   std::to_string(caps.maxSamples) + "; falling back to " + toString(fallbackWithoutMultisampling()));
+      requested.method = fallbackWithoutMultisampling();
       method = findMethod(requested.method);
     }
     if (requested.samples < method->minSamples && caps.maxSamples >= method->minSamples) {

@@ -18,7 +18,7 @@ namespace {
 constexpr uint32_t kSliced = kStorageMsaaGBuffer | kStorageSlices;
 
 // Each row: {{method, name, summary, needs multisampling, least samples, sweep specs, regression spec,
-//             tune specs}, storage, factory[, stacked when, storage when stacked, post pass last]}
+//             tune specs[, stack key]}, storage, factory[, stacked when, storage when stacked, post pass last]}
 std::vector<TechniqueRow>& rows() {
   static std::vector<TechniqueRow> table = {
       {{Method::Off, "off", "the host's stock single-sample path; the plugin holds nothing", false, 1, "off", "off",
@@ -26,7 +26,7 @@ std::vector<TechniqueRow>& rows() {
        kStorageNone,
        nullptr},
       {{Method::Fxaa, "fxaa", "FXAA 3.11 after tonemapping (FreeSpace Open's default AA)", false, 1, "fxaa", "fxaa",
-        "fxaa@fxaa_quality=low,fxaa"},
+        "fxaa@fxaa_quality=low,fxaa", "fxaa"},
        kStoragePostTarget,
        createFxaaTechnique,
        [](const Config& c) { return c.fxaa; },
@@ -38,7 +38,7 @@ std::vector<TechniqueRow>& rows() {
        kStorageMsaaGBuffer,
        nullptr},
       {{Method::Coverage, "coverage", "depth-only MSAA prepass and a coverage filter after tonemapping", true, 2,
-        "coverage,resolve+coverage", "resolve+coverage", "coverage"},
+        "coverage,resolve+coverage", "resolve+coverage", "coverage", "coverage_filter"},
        kStoragePostTarget,
        createCoverageTechnique,
        [](const Config& c) { return c.coverageFilter && usesMsaa(c.method); },
@@ -72,6 +72,9 @@ const TechniqueRow* findTechnique(Method method) {
     if (row.info.method == method) return &row;
   return nullptr;
 }
+
+// Post-process AA needs no samples: the best a context without multisampling can do.
+Method fallbackWithoutMultisampling() { return Method::Fxaa; }
 
 void registerTechnique(const TechniqueRow& row) { rows().push_back(row); }
 

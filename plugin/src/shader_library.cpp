@@ -1,6 +1,6 @@
 #include "shader_library.h"
 
-#include "retroaa/plugin.h"
+#include "retroaa/types.h"
 #include "shared_constants.h"
 
 #include <cassert>

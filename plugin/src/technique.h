@@ -64,6 +64,8 @@ struct TechniqueRow {
 // Every method, in the order listings use.
 const std::vector<TechniqueRow>& techniqueRegistry();
 const TechniqueRow* findTechnique(Method method);
+// What a method that needs multisampling becomes on a context without it.
+Method fallbackWithoutMultisampling();
 // Adds a row (tests: a technique that lives in a test file). Not thread-safe; before any plugin exists.
 void registerTechnique(const TechniqueRow& row);
 

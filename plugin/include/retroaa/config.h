@@ -125,6 +125,9 @@ struct MethodInfo {
   const char* sweepSpecs = "";   // what a full sweep renders (`--methods all`, the viewer's M key)
   const char* regressSpec = "";  // the one spec a regression run renders
   const char* tuneSpecs = "";    // the points `retroaa tune` searches, cheapest settings first
+  // The on/off key that stacks this method's post pass on another method (`resolve+NAME` in specs);
+  // empty where it does not stack.
+  const char* stackKey = "";
 };
 // Every method, in listing order.
 const std::vector<MethodInfo>& methodTable();
