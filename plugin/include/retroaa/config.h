@@ -4,6 +4,7 @@
 // docs/config.md is the reference, generated from the same table as the parser.
 #pragma once
 
+#include "retroaa/export.h"
 #include "retroaa/result.h"
 
 #include <cstdint>
@@ -111,7 +112,7 @@ struct ConfigKey {
   const char* allowed;
   const char* effect;
 };
-const std::vector<ConfigKey>& configKeys();
+RETROAA_API const std::vector<ConfigKey>& configKeys();
 
 // One method as the plugin's registry lists it (plugin/src/registry.cpp: one row per method). Tools
 // read their method lists from here; none names a method itself.
@@ -130,41 +131,41 @@ struct MethodInfo {
   const char* stackKey = "";
 };
 // Every method, in listing order.
-const std::vector<MethodInfo>& methodTable();
+RETROAA_API const std::vector<MethodInfo>& methodTable();
 // The row of `method`; null for a value no row has.
-const MethodInfo* findMethod(Method method);
+RETROAA_API const MethodInfo* findMethod(Method method);
 
 // Whether the method renders the model pass into a multisampled G-buffer.
-bool usesMsaa(Method method);
+RETROAA_API bool usesMsaa(Method method);
 
-const char* toString(Method method);
-const char* toString(ResolveWeighting weighting);
-const char* toString(FxaaQuality quality);
-const char* toString(EdgeDetector detector);
+RETROAA_API const char* toString(Method method);
+RETROAA_API const char* toString(ResolveWeighting weighting);
+RETROAA_API const char* toString(FxaaQuality quality);
+RETROAA_API const char* toString(EdgeDetector detector);
 
 // The value of one key as toConfigText writes it; empty for an unknown key.
-std::string readSetting(const Config& config, const std::string& key);
+RETROAA_API std::string readSetting(const Config& config, const std::string& key);
 // The values a key with a fixed set allows, in order (method, samples, resolve_weighting, ...; on/off
 // switches); empty for numeric ranges and folders. UIs cycle and list these.
-std::vector<std::string> settingValues(const std::string& key);
+RETROAA_API std::vector<std::string> settingValues(const std::string& key);
 // Sets one key; unknown keys and bad values are errors naming the key, the value and what is allowed.
-Status applySetting(Config& config, const std::string& key, const std::string& value);
+RETROAA_API Status applySetting(Config& config, const std::string& key, const std::string& value);
 // `key=value` lines; '#' starts a comment. Errors name the source and line.
-Status applyConfigText(Config& config, const std::string& text, const std::string& sourceName);
-Status applyConfigFile(Config& config, const std::string& path);
+RETROAA_API Status applyConfigText(Config& config, const std::string& text, const std::string& sourceName);
+RETROAA_API Status applyConfigFile(Config& config, const std::string& path);
 // Comma- or semicolon-separated key=value pairs, as in RETROAA_SETTINGS.
-Status applySettingsList(Config& config, const std::string& list, const std::string& sourceName);
+RETROAA_API Status applySettingsList(Config& config, const std::string& list, const std::string& sourceName);
 // FreeSpace Open's flags: `-msaa 0|4|8|16` (others warn and mean 0; N>0 selects `resolve` unless a
 // multi-sample method is already chosen) and
 // `-aa_preset 0..6` (0-2 FXAA low/medium/high; 3-6 are SMAA in FSO, which retroaa maps to FXAA high
 // with a warning). `warnings` receives what was adjusted.
-Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
+RETROAA_API Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
                     std::vector<std::string>& warnings);
 // Checks every field of a config built in code with the rules the text parser applies to the same key
 // (ranges, allowed values, known enum values). Errors are InvalidConfig naming the key and value.
 // Plugin::create and reconfigure call it.
-Status validateConfig(const Config& config);
+RETROAA_API Status validateConfig(const Config& config);
 // Writes a config back as `key=value` lines that applyConfigText reads.
-std::string toConfigText(const Config& config);
+RETROAA_API std::string toConfigText(const Config& config);
 
 }  // namespace retroaa

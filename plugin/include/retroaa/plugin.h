@@ -16,8 +16,10 @@
 #pragma once
 
 #include "retroaa/config.h"
+#include "retroaa/export.h"
 #include "retroaa/result.h"
 #include "retroaa/types.h"
+#include "retroaa/version.h"
 
 #include <cstdint>
 #include <functional>
@@ -27,7 +29,7 @@
 
 namespace retroaa {
 
-class Plugin {
+class RETROAA_API Plugin {
  public:
   // Fails with InvalidConfig (a field the text parser would refuse: validateConfig), InvalidLayout,
   // UnsupportedContext (below GL 4.5), IncompleteFramebuffer (the driver refused a target built from

@@ -1,0 +1,7 @@
+#include "retroaa/version.h"
+
+namespace retroaa {
+
+const char* version() { return RETROAA_VERSION; }
+
+}  // namespace retroaa
