@@ -12,7 +12,7 @@ APT_PACKAGES = cmake g++ make pkg-config git assimp-testmodels xvfb xauth libimg
 # clang and its sanitizer and libFuzzer runtimes, for test-sanitize and fuzz only.
 CLANG_PACKAGES = clang libclang-rt-14-dev
 
-.PHONY: deps deps-clang build demo test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
+.PHONY: check-library-only deps deps-clang build demo test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -98,6 +98,10 @@ docs-robustness: build
 	@LP_NUM_THREADS=2 RETROAA_ROBUSTNESS_TABLE=$(BUILD)/robustness.md $(BUILD)/integration-tests/robustness_tests > /dev/null 2>&1; \
 	 { sed '/<!-- generated: make docs-robustness -->/q' docs/robustness.md; cat $(BUILD)/robustness.md; \
 	   sed -n '/<!-- end generated -->/,$$p' docs/robustness.md; } > docs/robustness.md.new && mv docs/robustness.md.new docs/robustness.md
+
+# The library alone, configured, built and installed where only libepoxy's packages are visible (root: unshare).
+check-library-only:
+	bash integration-tests/consumer/library-only-isolated.sh .
 
 clean:
 	rm -rf $(BUILD) out

@@ -20,9 +20,11 @@ bool makeContext() {
   if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
     display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (display == EGL_NO_DISPLAY) display = eglGetDisplay(EGL_DEFAULT_DISPLAY);
-  if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr) || !eglBindAPI(EGL_OPENGL_API)) return false;
-  const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+  if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr) || !eglBindAPI(EGL_OPENGL_API))
+    return false;
+  const EGLint attributes[] = {
+      EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
   const EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
   return context != EGL_NO_CONTEXT && eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context);
 }
@@ -65,7 +67,10 @@ int main() {
 
   retroaa::Description description;
   description.layout = layout;
-  if (!retroaa::applySettingsList(description.config, "method=resolve,samples=4,fxaa=on", "consumer")) return fail("config");
+  // The embedded presets: `low` is resolve with FXAA on top (presets/low.cfg).
+  if (!retroaa::applySetting(description.config, "preset", "low")) return fail("no embedded preset 'low'");
+  if (description.config.method != retroaa::Method::Resolve || !description.config.fxaa)
+    return fail("preset 'low' changed");
   auto created = retroaa::Plugin::create(description);
   if (!created) return fail(created.error().message.c_str());
   retroaa::Plugin& plugin = *created.value();
@@ -89,7 +94,10 @@ int main() {
   const retroaa::Stats stats = plugin.stats();
   if (stats.lightingEvaluations != uint64_t(width) * height) return fail("not one lighting evaluation per pixel");
   if (glGetError() != GL_NO_ERROR) return fail("a GL error");
-  std::printf("consumer: retroaa %s, %s at %d samples, %.3f evaluations per pixel, %d GL objects, no GL error\n",
-              retroaa::version(), retroaa::toString(stats.method), stats.samples, stats.evaluationsPerPixel(), stats.glObjectsHeld);
+  std::printf(
+      "consumer: retroaa %s, preset low (%s+fxaa) at %d samples, %.3f evaluations per pixel, %d GL objects, no GL "
+      "error\n",
+      retroaa::version(), retroaa::toString(stats.method), stats.samples, stats.evaluationsPerPixel(),
+      stats.glObjectsHeld);
   return 0;
 }
