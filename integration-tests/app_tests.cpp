@@ -29,10 +29,13 @@ TEST(Cli, BadInputExitsWithCodeTwoAndNamesTheProblem) {
   EXPECT_NE(r.output.find("unsupported sample count '3'"), std::string::npos) << r.output;
 
   const std::string scene = temp("broken.json");
-  std::ofstream(scene) << R"({"camera": {"position": [0,0,5], "target": [0,0,0]}, "materials": [{"name": "m", "gloss": 2}], "objects": []})";
+  std::ofstream(scene)
+      << R"({"camera": {"position": [0,0,5], "target": [0,0,0]}, "materials": [{"name": "m", "gloss": 2}], "objects": []})";
   r = runCli("render --scene " + scene + " --out " + temp("x.png"));
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_NE(r.output.find("broken.json: $.materials[0].gloss: expected a finite number in [0, 1], got 2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("broken.json: $.materials[0].gloss: expected a finite number in [0, 1], got 2"),
+            std::string::npos)
+      << r.output;
 
   r = runCli("render --out " + temp("x.jpg2"));
   EXPECT_EQ(r.exitCode, 2);
@@ -67,7 +70,8 @@ TEST(Cli, RenderWritesPngWithMetadataAndExr) {
 
 TEST(Cli, BenchWritesEveryRowWithTheFieldsReportsNeed) {
   const std::string json = temp("bench.json");
-  const CliRun r = runCli("bench --methods off,fxaa,resolve --width 64 --height 48 --gt-samples 4 --repeats 1 --json " + json);
+  const CliRun r =
+      runCli("bench --methods off,fxaa,resolve --width 64 --height 48 --gt-samples 4 --repeats 1 --json " + json);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::ifstream in(json);
   const nlohmann::json document = nlohmann::json::parse(in);
@@ -88,4 +92,32 @@ TEST(Docs, ConfigReferenceMatchesTheParser) {
   text << in.rdbuf();
   EXPECT_NE(text.str().find(app::configReference(true)), std::string::npos)
       << "docs/config.md is stale: regenerate its table with `make docs-config`";
+}
+
+// Files a user can point us at that are not regular files are refused at once (no hang on /dev/zero,
+// no silent empty read of a directory), naming the file.
+TEST(Cli, ScenesConfigsAndCameraPathsMustBeRegularFiles) {
+  const std::string directory = temp("a-directory.cfg");
+  std::filesystem::create_directories(directory);
+  const std::string out = " --width 32 --height 24 --out " + temp("x.png");
+  struct Case {
+    std::string arguments, expected;
+  };
+  const std::string pathScene = temp("path-is-a-directory.json");
+  std::ofstream(pathScene)
+      << R"({"camera": {"position": [0,0,5], "target": [0,0,0]}, "materials": [{"name": "m"}], "objects": [], "camera_path": ")"
+      << directory << R"("})";
+  const Case cases[] = {
+      {"render --scene /dev/zero", "/dev/zero: (file): cannot open scene file: it is not a regular file"},
+      {"render --scene " + directory, directory + ": (file): cannot open scene file: it is a directory"},
+      {"render --config " + directory, directory + ": cannot open config file: it is a directory"},
+      {"render --config /dev/zero", "/dev/zero: cannot open config file: it is not a regular file"},
+      {"render --scene " + pathScene,
+       "$.camera_path: cannot open camera path file '" + directory + "': it is a directory"},
+  };
+  for (const Case& c : cases) {
+    const CliRun r = runCli(c.arguments + out);
+    EXPECT_EQ(r.exitCode, 2) << c.arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.arguments << "\n" << r.output;
+  }
 }

@@ -12,7 +12,14 @@ namespace fs = std::filesystem;
 
 namespace {
 CliRun view(const fs::path& script, int width, int height) {
-  return runCommand("xvfb-run -a -s '-screen 0 1280x1024x24' " + std::string(RETROAA_CLI) + " view --width " + std::to_string(width) + " --height " + std::to_string(height) + " --script " + script.string());
+  // The viewer's own exit code is echoed from inside: xvfb-run sometimes fails to clean up its
+  // temporary folder after a quick run and then replaces the command's exit code with its own.
+  CliRun run = runCommand("xvfb-run -a -s '-screen 0 1280x1024x24' sh -c '" + std::string(RETROAA_CLI) +
+                          " view --width " + std::to_string(width) + " --height " + std::to_string(height) +
+                          " --script " + script.string() + "; echo retroaa-exit=$?'");
+  const size_t at = run.output.rfind("retroaa-exit=");
+  run.exitCode = at == std::string::npos ? -1 : std::stoi(run.output.substr(at + 13));
+  return run;
 }
 }  // namespace
 
@@ -28,7 +35,8 @@ TEST(Viewer, ScreenshotsOfEveryMethodAtThreeSizesMatchTheHeadlessRenders) {
     script << frame << " resize " << sizes[s][0] << " " << sizes[s][1] << "\n";
     frame += 2;  // the window system applies the size on a later frame
     for (const std::string& m : methods) {
-      script << frame << " method " << m << "\n" << frame + 1 << " screenshot " << (dir / (std::to_string(s) + "-" + m + ".png")).string() << "\n";
+      script << frame << " method " << m << "\n"
+             << frame + 1 << " screenshot " << (dir / (std::to_string(s) + "-" + m + ".png")).string() << "\n";
       frame += 2;
     }
   }
@@ -59,7 +67,8 @@ TEST(Viewer, ResizeStormLeavesNoObjectAndNoGlError) {
   const fs::path dir = fs::temp_directory_path() / "retroaa_viewer_storm";
   fs::create_directories(dir);
   std::ofstream script(dir / "storm.txt");
-  const char* methods[] = {"edge", "resolve+coverage", "aggregate", "adaptive", "fxaa", "coverage", "per-sample", "off"};
+  const char* methods[] = {"edge", "resolve+coverage", "aggregate",  "adaptive",
+                           "fxaa", "coverage",         "per-sample", "off"};
   for (int i = 0; i < 200; ++i) {
     script << i << " resize " << 64 + (i * 37) % 97 << " " << 48 + (i * 53) % 71 << "\n";
     if (i % 3 == 0) script << i << " method " << methods[(i / 3) % 8] << "\n";
@@ -68,7 +77,8 @@ TEST(Viewer, ResizeStormLeavesNoObjectAndNoGlError) {
   script.close();
   const CliRun run = view(dir / "storm.txt", 96, 72);
   EXPECT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("view: 0 GL errors; plugin GL objects 1 at start, 1 at the end"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("view: 0 GL errors; plugin GL objects 1 at start, 1 at the end"), std::string::npos)
+      << run.output;
 }
 
 TEST(Viewer, ABadScriptLineIsNamed) {
@@ -78,4 +88,11 @@ TEST(Viewer, ABadScriptLineIsNamed) {
   const CliRun run = view(dir / "bad.txt", 64, 48);
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("bad.txt:2: unknown action 'teleport'"), std::string::npos) << run.output;
+}
+
+TEST(Viewer, AScriptThatIsNotARegularFileIsRefused) {
+  const CliRun run = view("/dev/zero", 64, 48);  // would otherwise be read forever
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("/dev/zero: cannot open script: it is not a regular file"), std::string::npos)
+      << run.output;
 }

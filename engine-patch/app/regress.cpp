@@ -358,11 +358,14 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
       std::printf("golden written: %s\n", goldenFile.string().c_str());
     }
     if (!options.check) continue;
-    std::ifstream in(goldenFile);
-    if (!in)
+    std::string problem;
+    const std::optional<std::string> text = host::readUserTextFile(goldenFile.string(), problem);
+    if (!text)
       throw std::invalid_argument(goldenFile.string() + ": no golden for scene '" + scene["scene"].get<std::string>() +
-                                  "' (run with --update-golden)");
-    const json golden = json::parse(in);
+                                  "' (" + problem + "; run with --update-golden)");
+    const json golden = json::parse(*text, nullptr, false);
+    if (golden.is_discarded() || !golden.is_object())
+      throw std::invalid_argument(goldenFile.string() + ": not a golden file (not a JSON object)");
     if (golden["settings"] != settings)
       throw std::invalid_argument(goldenFile.string() + ": golden was made with settings " + golden["settings"].dump() +
                                   ", this run uses " + settings.dump());

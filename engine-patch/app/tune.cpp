@@ -4,6 +4,7 @@
 #include "headless_context.h"
 #include "measure.h"
 #include "scatter_svg.h"
+#include "scene.h"
 #include "session.h"
 
 #include <nlohmann/json.hpp>
@@ -169,7 +170,9 @@ int runTune(const TuneOptions& options) {
     throw std::invalid_argument("--cost must be one of " + joined(costs) + ", got '" + options.cost + "'");
   const std::vector<std::string> specs = expandMethodList(options.candidates.empty() ? "grid" : options.candidates);
   json cache = json::object();
-  if (std::ifstream in(options.cache); in) cache = json::parse(in, nullptr, false);
+  std::string problem;  // a missing, unreadable or corrupt cache only means measuring again
+  if (const std::optional<std::string> text = host::readUserTextFile(options.cache, problem))
+    cache = json::parse(*text, nullptr, false);
   if (cache.is_discarded()) cache = json::object();
   const std::vector<TunePoint> points = measureCandidates(options, specs, cache);
   const auto cacheParent = std::filesystem::path(options.cache).parent_path();

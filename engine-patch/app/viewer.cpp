@@ -46,8 +46,10 @@ struct ScriptAction {
 };
 
 std::vector<ScriptAction> readScript(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open script");
+  std::string problem;
+  const std::optional<std::string> content = host::readUserTextFile(path, problem);
+  if (!content) throw std::invalid_argument(path + ": cannot open script: " + problem);
+  std::istringstream in(*content);
   std::vector<ScriptAction> actions;
   std::string text;
   for (int line = 1; std::getline(in, text); ++line) {

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <optional>
 #include <sstream>
 
 namespace host {
-
 
 namespace {
 
@@ -30,9 +30,7 @@ class Reader {
     if (!node_.contains(key)) fail("missing required key '" + key + "'");
     return Reader(file_, node_.at(key), path_ + "." + key);
   }
-  Reader element(size_t i) const {
-    return Reader(file_, node_.at(i), path_ + "[" + std::to_string(i) + "]");
-  }
+  Reader element(size_t i) const { return Reader(file_, node_.at(i), path_ + "[" + std::to_string(i) + "]"); }
   bool has(const std::string& key) const { return node_.is_object() && node_.contains(key); }
   const json& raw() const { return node_; }
   const std::string& path() const { return path_; }
@@ -59,16 +57,15 @@ class Reader {
     if (!node_.is_number()) fail("expected a number");
     const double value = node_.get<double>();
     if (!std::isfinite(value) || value < minimum || value > maximum)
-      fail("expected a finite number in [" + format(minimum) + ", " + format(maximum) + "], got " +
-           node_.dump());
+      fail("expected a finite number in [" + format(minimum) + ", " + format(maximum) + "], got " + node_.dump());
     return static_cast<float>(value);
   }
   int integer(int minimum, int maximum) const {
     if (!node_.is_number_integer()) fail("expected an integer");
     const long long value = node_.get<long long>();
     if (value < minimum || value > maximum)
-      fail("expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
-           "], got " + node_.dump());
+      fail("expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) + "], got " +
+           node_.dump());
     return static_cast<int>(value);
   }
   std::string string() const {
@@ -80,12 +77,10 @@ class Reader {
     return {element(0).number(minimum, maximum), element(1).number(minimum, maximum),
             element(2).number(minimum, maximum)};
   }
-  float numberOr(const std::string& key, float fallback, float minimum = -INFINITY,
-                 float maximum = INFINITY) const {
+  float numberOr(const std::string& key, float fallback, float minimum = -INFINITY, float maximum = INFINITY) const {
     return has(key) ? child(key).number(minimum, maximum) : fallback;
   }
-  glm::vec3 vec3Or(const std::string& key, glm::vec3 fallback, float minimum = -1e9f,
-                   float maximum = 1e9f) const {
+  glm::vec3 vec3Or(const std::string& key, glm::vec3 fallback, float minimum = -1e9f, float maximum = 1e9f) const {
     return has(key) ? child(key).vec3(minimum, maximum) : fallback;
   }
 
@@ -134,8 +129,7 @@ Mesh readGenerator(const Reader& r) {
   }
   if (kind == "cylinder") {
     r.expectObject({"type", "radius", "length", "segments"});
-    return generate::cylinder(r.child("radius").number(1e-6f, 1e7f),
-                              r.child("length").number(1e-6f, 1e7f),
+    return generate::cylinder(r.child("radius").number(1e-6f, 1e7f), r.child("length").number(1e-6f, 1e7f),
                               r.has("segments") ? r.child("segments").integer(3, 256) : 12);
   }
   if (kind == "greebled_hull") {
@@ -149,8 +143,7 @@ Mesh readGenerator(const Reader& r) {
     if (r.has("seed")) p.seed = static_cast<uint32_t>(r.child("seed").integer(0, 1 << 30));
     return generate::greebledHull(p);
   }
-  r.child("type").fail("unknown generator '" + kind +
-                       "' (allowed: box, plane, sphere, cylinder, greebled_hull)");
+  r.child("type").fail("unknown generator '" + kind + "' (allowed: box, plane, sphere, cylinder, greebled_hull)");
 }
 
 Camera readCamera(const Reader& r) {
@@ -189,8 +182,7 @@ SceneError::SceneError(const std::string& file, const std::string& field, const 
 glm::mat4 Camera::view() const { return glm::lookAt(position, target, up); }
 
 glm::mat4 Camera::projection(int width, int height, glm::vec2 jitterPixels) const {
-  glm::mat4 p = glm::perspective(glm::radians(fovYDegrees), float(width) / float(height), nearPlane,
-                                 farPlane);
+  glm::mat4 p = glm::perspective(glm::radians(fovYDegrees), float(width) / float(height), nearPlane, farPlane);
   // A clip-space translation of 2/size per pixel shifts the raster by whole pixels.
   p[2][0] += 2.0f * jitterPixels.x / float(width);
   p[2][1] += 2.0f * jitterPixels.y / float(height);
@@ -227,8 +219,8 @@ size_t Scene::triangleCount() const {
   return n;
 }
 
-Scene parseScene(const std::string& jsonText, const std::string& fileName,
-                 const std::string& baseDirectory, bool requireCameraPath) {
+Scene parseScene(const std::string& jsonText, const std::string& fileName, const std::string& baseDirectory,
+                 bool requireCameraPath) {
   json document;
   try {
     document = json::parse(jsonText);
@@ -236,8 +228,8 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
     throw SceneError(fileName, "(document)", std::string("not valid JSON: ") + e.what());
   }
   const Reader root(fileName, document, "$");
-  root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient",
-                     "sky_color", "star_density", "exposure", "shading", "depth_buffer", "comment"});
+  root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient", "sky_color",
+                     "star_density", "exposure", "shading", "depth_buffer", "comment"});
   Scene scene;
   scene.name = root.has("name") ? root.child("name").string() : fileName;
   if (!root.has("camera")) root.fail("missing required key 'camera'");
@@ -293,10 +285,12 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
       object.mesh = readGenerator(o.child("generator"));
     } else {
       const std::filesystem::path model = o.child("model").string();
-      const std::string resolved = model.is_absolute() ? model.string() : (std::filesystem::path(baseDirectory) / model).string();
+      const std::string resolved =
+          model.is_absolute() ? model.string() : (std::filesystem::path(baseDirectory) / model).string();
       // Only regular files: a path like /dev/zero would never end.
       std::error_code error;
-      if (!std::filesystem::is_regular_file(resolved, error)) o.child("model").fail("'" + resolved + "' is not a regular file");
+      if (!std::filesystem::is_regular_file(resolved, error))
+        o.child("model").fail("'" + resolved + "' is not a regular file");
       try {
         object.mesh = loadModel(resolved);
       } catch (const ModelLoadError& e) {
@@ -361,17 +355,17 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
     const Reader p = root.child("camera_path");
     if (p.raw().is_string()) {
       const std::filesystem::path file = p.string();
-      const std::string resolved = file.is_absolute() ? file.string() : (std::filesystem::path(baseDirectory) / file).string();
-      std::ifstream in(resolved);
-      if (!in && !requireCameraPath) return scene;
-      if (!in) p.fail("cannot open camera path file '" + resolved + "'");
-      std::stringstream text;
-      text << in.rdbuf();
+      const std::string resolved =
+          file.is_absolute() ? file.string() : (std::filesystem::path(baseDirectory) / file).string();
+      std::string problem;
+      const std::optional<std::string> text = readUserTextFile(resolved, problem);
+      if (!text && !requireCameraPath) return scene;
+      if (!text) p.fail("cannot open camera path file '" + resolved + "': " + problem);
       // Errors inside the path file name both: the scene's field and the path file's own field.
       try {
         json pathDocument;
         try {
-          pathDocument = json::parse(text.str());
+          pathDocument = json::parse(*text);
         } catch (const json::exception& e) {
           throw SceneError(resolved, "(document)", std::string("not valid JSON: ") + e.what());
         }
@@ -386,16 +380,34 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName,
   return scene;
 }
 
+std::optional<std::string> readUserTextFile(const std::string& path, std::string& problem) {
+  constexpr std::uintmax_t kMaxTextFileBytes = 64u << 20;
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error || !std::filesystem::exists(status)) return problem = "it does not exist", std::nullopt;
+  if (std::filesystem::is_directory(status)) return problem = "it is a directory", std::nullopt;
+  if (!std::filesystem::is_regular_file(status)) return problem = "it is not a regular file", std::nullopt;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (!error && bytes > kMaxTextFileBytes)
+    return problem = "it is " + std::to_string(bytes) + " bytes, more than the " +
+                     std::to_string(kMaxTextFileBytes >> 20) + " MiB allowed",
+           std::nullopt;
+  std::ifstream in(path);
+  if (!in) return problem = "it cannot be read", std::nullopt;
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 Scene loadScene(const std::string& pathOrDefault, bool requireCameraPath) {
   if (pathOrDefault.empty() || pathOrDefault == "default") {
     const auto& files = embeddedFiles();
     return parseScene(files.at("scenes/demo.json"), "default", ".");
   }
-  std::ifstream in(pathOrDefault);
-  if (!in) throw SceneError(pathOrDefault, "(file)", "cannot open scene file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseScene(text.str(), pathOrDefault, std::filesystem::path(pathOrDefault).parent_path().string(),
+  std::string problem;
+  const std::optional<std::string> text = readUserTextFile(pathOrDefault, problem);
+  if (!text) throw SceneError(pathOrDefault, "(file)", "cannot open scene file: " + problem);
+  return parseScene(*text, pathOrDefault, std::filesystem::path(pathOrDefault).parent_path().string(),
                     requireCameraPath);
 }
 

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -60,10 +61,10 @@ struct Light {
   LightType type = LightType::Point;
   glm::vec3 color{1.0f};
   float intensity = 1.0f;
-  glm::vec3 position{0};   // point; tube start
-  glm::vec3 end{0};        // tube end
+  glm::vec3 position{0};          // point; tube start
+  glm::vec3 end{0};               // tube end
   glm::vec3 direction{0, -1, 0};  // directional: the direction light travels
-  float radius = 10.0f;    // point and tube: distance at which the light reaches zero
+  float radius = 10.0f;           // point and tube: distance at which the light reaches zero
 };
 
 enum class ShadingModel { BlinnPhong, GGX };
@@ -97,7 +98,12 @@ class SceneError : public std::runtime_error {
 // "default" (or "") loads the built-in demo scene of hard cases. With `requireCameraPath` false, a
 // camera path file that does not exist yet is no error (`retroaa record` is about to write it).
 Scene loadScene(const std::string& pathOrDefault, bool requireCameraPath = true);
-Scene parseScene(const std::string& jsonText, const std::string& fileName,
-                 const std::string& baseDirectory, bool requireCameraPath = true);
+
+// A text file a user points us at (scene, camera path, script, cache, golden): a regular file of at
+// most 64 MiB, read whole; otherwise nothing, and `problem` says why ("it is a directory", "it is not a
+// regular file", its size...). /dev/zero, a FIFO or a directory would otherwise hang or read as empty.
+std::optional<std::string> readUserTextFile(const std::string& path, std::string& problem);
+Scene parseScene(const std::string& jsonText, const std::string& fileName, const std::string& baseDirectory,
+                 bool requireCameraPath = true);
 
 }  // namespace host

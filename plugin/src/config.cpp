@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
@@ -346,6 +347,17 @@ Status applyConfigText(Config& config, const std::string& text, const std::strin
 }
 
 Status applyConfigFile(Config& config, const std::string& path) {
+  // A regular file of bounded size: a directory would read as empty, /dev/zero would never end.
+  constexpr std::uintmax_t kMaxBytes = 1u << 20;
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error || !std::filesystem::exists(status)) return invalid(path + ": cannot open config file: it does not exist");
+  if (std::filesystem::is_directory(status)) return invalid(path + ": cannot open config file: it is a directory");
+  if (!std::filesystem::is_regular_file(status))
+    return invalid(path + ": cannot open config file: it is not a regular file");
+  if (const std::uintmax_t bytes = std::filesystem::file_size(path, error); !error && bytes > kMaxBytes)
+    return invalid(path + ": cannot open config file: it is " + std::to_string(bytes) +
+                   " bytes, more than the 1 MiB allowed");
   std::ifstream in(path);
   if (!in) return invalid(path + ": cannot open config file");
   std::stringstream text;

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 using namespace retroaa;
 
 TEST(Config, DefaultsAreDocumentedOnce) {
@@ -178,4 +181,22 @@ TEST(Config, ValidationRefusesWhatTheParserRefusesAndNothingElse) {
   ASSERT_FALSE(status);
   EXPECT_EQ(status.error().code, ErrorCode::InvalidConfig);
   EXPECT_NE(status.error().message.find("'closeness'"), std::string::npos) << status.error().message;
+}
+
+TEST(Config, AConfigFileOverOneMebibyteIsRefusedNamingItsSize) {
+  const std::string path = (std::filesystem::temp_directory_path() / "retroaa_big.cfg").string();
+  {
+    std::ofstream out(path);
+    const std::string line(1023, '#');
+    for (int i = 0; i < 1100; ++i) out << line << "\n";  // comments only: valid, but 1 126 400 bytes
+  }
+  Config config;
+  const Status status = applyConfigFile(config, path);
+  ASSERT_FALSE(status);
+  EXPECT_EQ(status.error().code, ErrorCode::InvalidConfig);
+  EXPECT_NE(
+      status.error().message.find(path + ": cannot open config file: it is 1126400 bytes, more than the 1 MiB allowed"),
+      std::string::npos)
+      << status.error().message;
+  std::filesystem::remove(path);
 }
