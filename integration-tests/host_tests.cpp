@@ -175,3 +175,26 @@ TEST(GroundTruth, ConvergesFrom8x8To16x16) {
   const app::DisplayImage off = host.render("off");
   EXPECT_LT(app::compare(off, b, {}).psnrDb, m.psnrDb - 8.0);
 }
+
+// The sky is the same colour at every aspect ratio (16:10 once came out black: the background was
+// un-projected at the far plane, where single precision breaks down).
+TEST(DemoRender, TheSkyIsSkyAtEveryAspectRatio) {
+  std::vector<double> topBlue;
+  for (const auto& [width, height] : {std::pair{320, 240}, {320, 200}, {384, 216}, {640, 400}}) {
+    PatchedHost host("default", width, height);
+    const app::DisplayImage image = host.render("off");
+    double red = 0, blue = 0;
+    const int rows = height / 10;  // the top tenth: sky only in the demo scene
+    for (int y = 0; y < rows; ++y)
+      for (int x = 0; x < width; ++x) {
+        const float* rgb = &image.rgb[(size_t(y) * width + x) * 3];
+        ASSERT_TRUE(std::isfinite(rgb[0]) && std::isfinite(rgb[1]) && std::isfinite(rgb[2]));
+        red += rgb[0], blue += rgb[2];
+      }
+    red /= rows * width, blue /= rows * width;
+    EXPECT_GT(blue, 0.1) << width << "x" << height << ": the sky's top rows are dark";
+    EXPECT_GT(blue, 2.0 * red) << width << "x" << height;
+    topBlue.push_back(blue);
+  }
+  for (double blue : topBlue) EXPECT_NEAR(blue, topBlue.front(), 0.03);
+}

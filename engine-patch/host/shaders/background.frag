@@ -16,7 +16,9 @@ float hash(vec3 p) {
 
 void main() {
   vec2 ndc = gl_FragCoord.xy / uViewportSize * 2.0 - 1.0;
-  vec4 view = uInverseProjection * vec4(ndc, 1.0, 1.0);
+  // Un-projected at the near plane: at the far plane (2e6 m behind a 0.1 m near plane) w is almost 0
+  // and single precision turned whole skies black at some aspect ratios.
+  vec4 view = uInverseProjection * vec4(ndc, -1.0, 1.0);
   vec3 dir = normalize(uViewToWorld * normalize(view.xyz / view.w));
   vec3 sky = uSkyColor * (0.6 + 0.4 * dir.y);
   // Soft stars (wider than a pixel at test sizes) so the background itself does not alias.
