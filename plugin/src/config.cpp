@@ -18,6 +18,25 @@ namespace {
 
 Error invalid(const std::string& message) { return Error{ErrorCode::InvalidConfig, message}; }
 
+// User input as a message quotes it: at most 80 characters, control and non-ASCII bytes as \xNN, so a
+// 10 MB line or a binary file cannot flood or garble a terminal.
+std::string quoted(const std::string& text) {
+  constexpr size_t kMost = 80;
+  std::string out = "'";
+  for (size_t i = 0; i < text.size() && i < kMost; ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      out += char(c);
+    } else {
+      static const char* hex = "0123456789abcdef";
+      out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    }
+  }
+  out += "'";
+  if (text.size() > kMost) out += " (" + std::to_string(text.size()) + " bytes, first " + std::to_string(kMost) + " shown)";
+  return out;
+}
+
 std::string trim(const std::string& s) {
   const size_t begin = s.find_first_not_of(" \t\r\n");
   if (begin == std::string::npos) return "";
@@ -34,7 +53,7 @@ Status parseEnum(const std::string& key, const std::string& value, const Enum (&
     }
     allowed += std::string(allowed.empty() ? "" : ", ") + toString(candidate);
   }
-  return invalid("config key '" + key + "': unknown value '" + value + "' (allowed: " + allowed + ")");
+  return invalid("config key '" + key + "': unknown value " + quoted(value) + " (allowed: " + allowed + ")");
 }
 
 Status parseFloat(const std::string& key, const std::string& value, float minimum, float maximum, float& out) {
@@ -43,7 +62,7 @@ Status parseFloat(const std::string& key, const std::string& value, float minimu
   if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(parsed) || parsed < minimum ||
       parsed > maximum) {
     std::ostringstream message;
-    message << "config key '" << key << "': value '" << value << "' is not a number in [" << minimum << ", " << maximum
+    message << "config key '" << key << "': value " << quoted(value) << " is not a number in [" << minimum << ", " << maximum
             << "]";
     return invalid(message.str());
   }
@@ -54,7 +73,7 @@ Status parseFloat(const std::string& key, const std::string& value, float minimu
 Status parseBool(const std::string& key, const std::string& value, bool& out) {
   if (value == "on" || value == "true" || value == "1") return out = true, Status::ok();
   if (value == "off" || value == "false" || value == "0") return out = false, Status::ok();
-  return invalid("config key '" + key + "': value '" + value + "' is not a switch (allowed: on, off)");
+  return invalid("config key '" + key + "': value " + quoted(value) + " is not a switch (allowed: on, off)");
 }
 
 Status parseMethod(const std::string& value, Method& out) {
@@ -63,7 +82,7 @@ Status parseMethod(const std::string& value, Method& out) {
     if (value == row.name) return out = row.method, Status::ok();
     allowed += std::string(allowed.empty() ? "" : ", ") + row.name;
   }
-  return invalid("config key 'method': unknown value '" + value + "' (allowed: " + allowed + ")");
+  return invalid("config key 'method': unknown value " + quoted(value) + " (allowed: " + allowed + ")");
 }
 
 const char* methodNames() {
@@ -106,7 +125,7 @@ const std::vector<Setter>& setters() {
        [](Config& c, const std::string& v) -> Status {
          for (int allowed : {1, 2, 4, 8, 16})
            if (v == std::to_string(allowed)) return c.samples = allowed, Status::ok();
-         return invalid("config key 'samples': unsupported sample count '" + v + "' (allowed: 1, 2, 4, 8, 16)");
+         return invalid("config key 'samples': unsupported sample count " + quoted(v) + " (allowed: 1, 2, 4, 8, 16)");
        },
        [](const Config& c) { return std::to_string(c.samples); }},
       {{"resolve_weighting", "median", "median, front, back, fso, mean",
@@ -169,7 +188,7 @@ const std::vector<Setter>& setters() {
          float value = 0;
          if (Status s = parseFloat("adaptive_min_samples", v, 1.0f, 16.0f, value); !s) return s;
          if (value != std::floor(value))
-           return invalid("config key 'adaptive_min_samples': value '" + v + "' is not an integer in [1, 16]");
+           return invalid("config key 'adaptive_min_samples': value " + quoted(v) + " is not an integer in [1, 16]");
          return c.adaptiveMinSamples = int(value), Status::ok();
        },
        [](const Config& c) { return std::to_string(c.adaptiveMinSamples); }},
@@ -178,7 +197,7 @@ const std::vector<Setter>& setters() {
        [](Config& c, const std::string& v) -> Status {
          for (int allowed : {1, 2, 3, 4})
            if (v == std::to_string(allowed)) return c.aggregateCount = allowed, Status::ok();
-         return invalid("config key 'aggregate_count': value '" + v + "' is not one of 1, 2, 3, 4");
+         return invalid("config key 'aggregate_count': value " + quoted(v) + " is not one of 1, 2, 3, 4");
        },
        [](const Config& c) { return std::to_string(c.aggregateCount); }},
       {{"aggregate_threshold", "0.1", "0 .. 10",
@@ -210,7 +229,7 @@ const std::vector<Setter>& setters() {
          const auto& files = presets::embeddedFiles();
          const auto found = files.find(v + ".cfg");
          if (found == files.end())
-           return invalid("config key 'preset': unknown value '" + v + "' (allowed: none, low, medium, high, ultra)");
+           return invalid("config key 'preset': unknown value " + quoted(v) + " (allowed: none, low, medium, high, ultra)");
          // Quality keys only: where shaders come from and whether to time them stay the user's.
          std::string lines;
          std::istringstream in(found->second);
@@ -326,7 +345,7 @@ Status applySetting(Config& config, const std::string& key, const std::string& v
     if (key == s.key.name) return s.apply(config, trim(value));
     known += std::string(known.empty() ? "" : ", ") + s.key.name;
   }
-  return invalid("unknown config key '" + key + "' (known keys: " + known + ")");
+  return invalid("unknown config key " + quoted(key) + " (known keys: " + known + ")");
 }
 
 Status applyConfigText(Config& config, const std::string& text, const std::string& sourceName) {
@@ -338,7 +357,7 @@ Status applyConfigText(Config& config, const std::string& text, const std::strin
     if (content.empty()) continue;
     const size_t equals = content.find('=');
     if (equals == std::string::npos)
-      return invalid(sourceName + ":" + std::to_string(number) + ": expected 'key=value', got '" + content + "'");
+      return invalid(sourceName + ":" + std::to_string(number) + ": expected 'key=value', got " + quoted(content));
     const Status status = applySetting(updated, trim(content.substr(0, equals)), content.substr(equals + 1));
     if (!status) return invalid(sourceName + ":" + std::to_string(number) + ": " + status.error().message);
   }
@@ -378,9 +397,9 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
   const long n = std::strtol(value.c_str(), &end, 10);
   const bool isInteger = !value.empty() && end == value.c_str() + value.size();
   if (flag == "-msaa") {
-    if (!isInteger) return invalid("-msaa: value '" + value + "' is not an integer (allowed: 0, 4, 8, 16)");
+    if (!isInteger) return invalid("-msaa: value " + quoted(value) + " is not an integer (allowed: 0, 4, 8, 16)");
     if (n != 0 && n != 4 && n != 8 && n != 16) {
-      warnings.push_back("-msaa " + value + " is not one of 0, 4, 8, 16; using 0 as FreeSpace Open does");
+      warnings.push_back("-msaa " + (value.size() <= 20 ? value : quoted(value)) + " is not one of 0, 4, 8, 16; using 0 as FreeSpace Open does");
       config.samples = 4;
       if (usesMsaa(config.method)) config.method = Method::Off;
       return Status::ok();
@@ -395,7 +414,7 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
     return Status::ok();
   }
   if (flag == "-aa_preset") {
-    if (!isInteger || n < 0 || n > 6) return invalid("-aa_preset: value '" + value + "' is not an integer in 0..6");
+    if (!isInteger || n < 0 || n > 6) return invalid("-aa_preset: value " + quoted(value) + " is not an integer in 0..6");
     static const FxaaQuality qualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
     if (n >= 3)
       warnings.push_back("-aa_preset " + value + " selects SMAA in FreeSpace Open; retroaa uses FXAA high instead");
@@ -406,7 +425,7 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
       config.fxaa = true;
     return Status::ok();
   }
-  return invalid("unknown FreeSpace Open flag '" + flag + "' (known: -msaa, -aa_preset)");
+  return invalid("unknown FreeSpace Open flag " + quoted(flag) + " (known: -msaa, -aa_preset)");
 }
 
 Status validateConfig(const Config& config) {
