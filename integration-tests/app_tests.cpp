@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 using namespace testing_support;
@@ -94,6 +95,40 @@ TEST(Docs, ConfigReferenceMatchesTheParser) {
       << "docs/config.md is stale: regenerate its table with `make docs-config`";
 }
 
+// Every relative link in README.md and docs/ (Markdown links, and pages named in the text as
+// docs/NAME.md, ../NAME.md or NAME.md in capitals) points at a file of the repository.
+TEST(Docs, EveryRelativeLinkResolves) {
+  namespace fs = std::filesystem;
+  const fs::path root = RETROAA_SOURCE_DIR;
+  std::vector<fs::path> pages = {root / "README.md"};
+  for (const auto& entry : fs::recursive_directory_iterator(root / "docs"))
+    if (entry.path().extension() == ".md") pages.push_back(entry.path());
+  const std::regex markdownLink(R"(\]\(([^)\s]+)\))"), namedPage(R"((?:^|[\s(`])((?:\.\./|docs/)[\w./-]+\.md|[A-Z][A-Z_]+\.md)\b)");
+  int links = 0;
+  for (const fs::path& page : pages) {
+    std::ifstream in(page);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    auto check = [&](const std::string& target, bool fromRoot) {
+      if (target.rfind("http", 0) == 0 || target.rfind("mailto:", 0) == 0 || target[0] == '#') return;
+      const std::string path = target.substr(0, target.find('#'));
+      const bool resolves = fs::exists(page.parent_path() / path) || (fromRoot && fs::exists(root / path));
+      EXPECT_TRUE(resolves) << page.lexically_relative(root).string() << " links to '" << target << "', which does not exist";
+      ++links;
+    };
+    for (std::sregex_iterator m(text.begin(), text.end(), markdownLink), end; m != end; ++m) check((*m)[1], false);
+    for (std::sregex_iterator m(text.begin(), text.end(), namedPage), end; m != end; ++m) check((*m)[1], true);
+  }
+  EXPECT_GT(links, 30);
+  // The config reference names pages too.
+  for (const retroaa::ConfigKey& key : retroaa::configKeys()) {
+    const std::string effect = key.effect;
+    for (std::sregex_iterator m(effect.begin(), effect.end(), namedPage), end; m != end; ++m)
+      EXPECT_TRUE(fs::exists(root / (*m)[1].str())) << "config key " << key.name << " names " << (*m)[1];
+  }
+}
+
 // Files a user can point us at that are not regular files are refused at once (no hang on /dev/zero,
 // no silent empty read of a directory), naming the file.
 TEST(Cli, ScenesConfigsAndCameraPathsMustBeRegularFiles) {
@@ -120,4 +155,14 @@ TEST(Cli, ScenesConfigsAndCameraPathsMustBeRegularFiles) {
     EXPECT_EQ(r.exitCode, 2) << c.arguments << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.arguments << "\n" << r.output;
   }
+}
+
+TEST(Cli, ShowingSliceCountsOfAMethodWithoutSlicesIsRefused) {
+  CliRun r = runCli("render --method resolve --show edges --width 32 --height 24 --out " + temp("edges.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--show edges needs a method that lights some pixels more than once; resolve lights every pixel once"),
+            std::string::npos)
+      << r.output;
+  r = runCli("render --method edge --show edges --width 32 --height 24 --out " + temp("edges.png"));
+  EXPECT_EQ(r.exitCode, 0) << r.output;
 }

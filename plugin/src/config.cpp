@@ -223,7 +223,7 @@ const std::vector<Setter>& setters() {
        },
        [](const Config& c) { return formatFloat(c.coverageTolerance); }},
       {{"preset", "none", "none, low, medium, high, ultra",
-        "a bundle of the keys above, tuned by `make presets` (docs/presets.md); keys after it override"},
+        "a bundle of the keys above, tuned by `make presets` (docs/tune.md#presets); keys after it override"},
        [](Config& c, const std::string& v) -> Status {
          if (v == "none") return Status::ok();
          const auto& files = presets::embeddedFiles();
