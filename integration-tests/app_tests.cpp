@@ -103,7 +103,8 @@ TEST(Docs, EveryRelativeLinkResolves) {
   std::vector<fs::path> pages = {root / "README.md"};
   for (const auto& entry : fs::recursive_directory_iterator(root / "docs"))
     if (entry.path().extension() == ".md") pages.push_back(entry.path());
-  const std::regex markdownLink(R"(\]\(([^)\s]+)\))"), namedPage(R"((?:^|[\s(`])((?:\.\./|docs/)[\w./-]+\.md|[A-Z][A-Z_]+\.md)\b)");
+  const std::regex markdownLink(R"(\]\(([^)\s]+)\))"),
+      namedPage(R"((?:^|[\s(`])((?:\.\./|docs/)[\w./-]+\.md|[A-Z][A-Z_]+\.md)\b)");
   int links = 0;
   for (const fs::path& page : pages) {
     std::ifstream in(page);
@@ -114,7 +115,8 @@ TEST(Docs, EveryRelativeLinkResolves) {
       if (target.rfind("http", 0) == 0 || target.rfind("mailto:", 0) == 0 || target[0] == '#') return;
       const std::string path = target.substr(0, target.find('#'));
       const bool resolves = fs::exists(page.parent_path() / path) || (fromRoot && fs::exists(root / path));
-      EXPECT_TRUE(resolves) << page.lexically_relative(root).string() << " links to '" << target << "', which does not exist";
+      EXPECT_TRUE(resolves) << page.lexically_relative(root).string() << " links to '" << target
+                            << "', which does not exist";
       ++links;
     };
     for (std::sregex_iterator m(text.begin(), text.end(), markdownLink), end; m != end; ++m) check((*m)[1], false);
@@ -160,7 +162,8 @@ TEST(Cli, ScenesConfigsAndCameraPathsMustBeRegularFiles) {
 TEST(Cli, ShowingSliceCountsOfAMethodWithoutSlicesIsRefused) {
   CliRun r = runCli("render --method resolve --show edges --width 32 --height 24 --out " + temp("edges.png"));
   EXPECT_EQ(r.exitCode, 2) << r.output;
-  EXPECT_NE(r.output.find("--show edges needs a method that lights some pixels more than once; resolve lights every pixel once"),
+  EXPECT_NE(r.output.find(
+                "--show edges needs a method that lights some pixels more than once; resolve lights every pixel once"),
             std::string::npos)
       << r.output;
   r = runCli("render --method edge --show edges --width 32 --height 24 --out " + temp("edges.png"));

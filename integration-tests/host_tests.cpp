@@ -62,13 +62,15 @@ TEST(DepthCodec, Fp16RoundTripKeepsRelativePrecisionFrom1mTo1e6m) {
   for (double d = 1.0; d <= 1.0e6; d *= 1.0137) {  // ~1000 depths across the range
     const float decoded = codec::decode(throughHalf(codec::encode(float(d))));
     const double relative = std::fabs(decoded - d) / d;
-    (d <= codec::kKnee ? worstBelowKnee : worstAboveKnee) = std::max(d <= codec::kKnee ? worstBelowKnee : worstAboveKnee, relative);
+    (d <= codec::kKnee ? worstBelowKnee : worstAboveKnee) =
+        std::max(d <= codec::kKnee ? worstBelowKnee : worstAboveKnee, relative);
   }
   EXPECT_LT(worstBelowKnee, 5.0e-4);  // FP16's own 2^-11
   EXPECT_LT(worstAboveKnee, 1.4e-3);  // ln 2 · half an FP16 ulp at 65k / knee
   // Without the encoding, FP16 would overflow past 65 504 m.
   EXPECT_TRUE(std::isinf(throughHalf(1.0e5f)));
-  std::printf("depth round trip: worst relative error %.2e below the knee, %.2e above\n", worstBelowKnee, worstAboveKnee);
+  std::printf("depth round trip: worst relative error %.2e below the knee, %.2e above\n", worstBelowKnee,
+              worstAboveKnee);
 }
 
 TEST(SceneFile, DefaultSceneHasEveryHardCase) {
@@ -80,7 +82,8 @@ TEST(SceneFile, DefaultSceneHasEveryHardCase) {
   EXPECT_GE(scene.path.frameCount(), 30);
   std::set<std::string> names;
   for (const host::Object& o : scene.objects) names.insert(o.name.substr(0, o.name.find('#')));
-  for (const char* expected : {"near_hull", "antenna", "wire", "specular_tube", "deck", "plate_red", "plate_blue", "far_ship"})
+  for (const char* expected :
+       {"near_hull", "antenna", "wire", "specular_tube", "deck", "plate_red", "plate_blue", "far_ship"})
     EXPECT_TRUE(names.count(expected)) << expected;
 }
 
@@ -93,11 +96,13 @@ TEST(SceneFile, ErrorsNameFileFieldAndExpectation) {
   EXPECT_NE(sceneErrorOf(withObjects(R"({"generator": {"type": "box", "size": [1, 1, 1]}, "material": "nope"})"))
                 .find("$.objects[0].material: no material named 'nope'"),
             std::string::npos);
-  EXPECT_NE(sceneErrorOf(withObjects(R"({"generator": {"type": "torus"}, "material": "m"})")).find("unknown generator 'torus'"),
+  EXPECT_NE(sceneErrorOf(withObjects(R"({"generator": {"type": "torus"}, "material": "m"})"))
+                .find("unknown generator 'torus'"),
             std::string::npos);
-  EXPECT_NE(sceneErrorOf(withObjects(R"({"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m", "colour": 1})"))
-                .find("$.objects[0].colour: unknown key"),
-            std::string::npos);
+  EXPECT_NE(
+      sceneErrorOf(withObjects(R"({"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m", "colour": 1})"))
+          .find("$.objects[0].colour: unknown key"),
+      std::string::npos);
   const std::string missingModel = sceneErrorOf(withObjects(R"({"model": "missing.obj", "material": "m"})"));
   EXPECT_NE(missingModel.find("$.objects[0].model: "), std::string::npos) << missingModel;
   EXPECT_NE(missingModel.find("missing.obj' is not a regular file"), std::string::npos) << missingModel;
@@ -169,7 +174,7 @@ TEST(GroundTruth, ConvergesFrom8x8To16x16) {
   const auto b = app::DisplayImage::fromRgba8(160, 120, fine.display);
   const app::ErrorMetrics m = app::compare(a, b, app::edgeMaskFromSpread(fine.lumaStdDev));
   std::printf("ground truth 8x8 vs 16x16: PSNR %.2f dB, edge PSNR %.2f dB\n", m.psnrDb, m.edgePsnrDb);
-  EXPECT_GT(m.psnrDb, 35.0);  // stated bound: 8×8 is within 35 dB of 16×16 over the frame
+  EXPECT_GT(m.psnrDb, 35.0);      // stated bound: 8×8 is within 35 dB of 16×16 over the frame
   EXPECT_GT(m.edgePsnrDb, 30.0);  // and 30 dB over the edge pixels
   // And the stock single-sample render is far from both: the aliasing is real.
   const app::DisplayImage off = host.render("off");

@@ -27,9 +27,10 @@ const char* kSmallRun = "default --frames 2 --width 96 --height 72 --gt-samples 
 
 TEST(Regress, CommittedGoldensHoldForTheFastSubset) {
   const fs::path out = tempDir("subset");
-  const CliRun run = runCli(std::string("regress ") + kSmallRun +
-                            " --methods off,fxaa,resolve,resolve+coverage,edge,adaptive,aggregate,per-sample --out " +
-                            out.string() + " --golden-dir " + RETROAA_SOURCE_DIR + "/integration-tests/golden/ci --check");
+  const CliRun run =
+      runCli(std::string("regress ") + kSmallRun +
+             " --methods off,fxaa,resolve,resolve+coverage,edge,adaptive,aggregate,per-sample --out " + out.string() +
+             " --golden-dir " + RETROAA_SOURCE_DIR + "/integration-tests/golden/ci --check");
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("check: every figure within tolerance"), std::string::npos) << run.output;
 }
@@ -43,18 +44,21 @@ TEST(Regress, CheckFailsNamingTheFigureWhenAMethodIsDegraded) {
   // A resolve with c = 0 keeps only its reference sample: no intra-model smoothing.
   const CliRun degraded = runCli(common + " --check --set closeness=0");
   EXPECT_EQ(degraded.exitCode, 1) << degraded.output;
-  EXPECT_NE(degraded.output.find("WORSE: default / resolve: edge_psnr_db fell from"), std::string::npos) << degraded.output;
+  EXPECT_NE(degraded.output.find("WORSE: default / resolve: edge_psnr_db fell from"), std::string::npos)
+      << degraded.output;
   EXPECT_EQ(degraded.output.find("default / off:"), std::string::npos) << "off did not change: " << degraded.output;
   // Goldens made with other settings are refused, not silently compared.
-  const CliRun otherSize = runCli(std::string("regress default --frames 2 --width 64 --height 48 --gt-samples 3 --methods off,resolve --out ") +
-                                  out.string() + " --golden-dir " + golden.string() + " --check");
+  const CliRun otherSize = runCli(
+      std::string("regress default --frames 2 --width 64 --height 48 --gt-samples 3 --methods off,resolve --out ") +
+      out.string() + " --golden-dir " + golden.string() + " --check");
   EXPECT_EQ(otherSize.exitCode, 2);
   EXPECT_NE(otherSize.output.find("golden was made with settings"), std::string::npos) << otherSize.output;
 }
 
 TEST(Regress, ReportHtmlIsWellFormedAndEveryReferenceExists) {
   const fs::path out = tempDir("report");
-  ASSERT_EQ(runCli(std::string("regress ") + kSmallRun + " --methods off,edge,aggregate --out " + out.string()).exitCode, 0);
+  ASSERT_EQ(
+      runCli(std::string("regress ") + kSmallRun + " --methods off,edge,aggregate --out " + out.string()).exitCode, 0);
   std::ifstream in(out / "report.html");
   std::stringstream text;
   text << in.rdbuf();
@@ -62,7 +66,9 @@ TEST(Regress, ReportHtmlIsWellFormedAndEveryReferenceExists) {
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   for (const char* tag : {"html", "body", "table", "svg", "figure", "h2"}) {
     const std::regex open(std::string("<") + tag + "[ >]"), close(std::string("</") + tag + ">");
-    const auto count = [&](const std::regex& r) { return std::distance(std::sregex_iterator(html.begin(), html.end(), r), std::sregex_iterator()); };
+    const auto count = [&](const std::regex& r) {
+      return std::distance(std::sregex_iterator(html.begin(), html.end(), r), std::sregex_iterator());
+    };
     EXPECT_EQ(count(open), count(close)) << "unbalanced <" << tag << ">";
     EXPECT_GT(count(open), 0) << tag;
   }
@@ -76,8 +82,8 @@ TEST(Regress, ReportHtmlIsWellFormedAndEveryReferenceExists) {
   const nlohmann::json report = nlohmann::json::parse(json);
   ASSERT_EQ(report["scenes"].size(), 1u);
   for (const auto& row : report["scenes"][0]["rows"])
-    for (const char* field : {"evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel", "psnr_db", "edge_psnr_db",
-                              "psnr_vs_per_sample_db", "max_abs_error", "flicker"})
+    for (const char* field : {"evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel", "psnr_db",
+                              "edge_psnr_db", "psnr_vs_per_sample_db", "max_abs_error", "flicker"})
       EXPECT_TRUE(row.contains(field)) << field;
 }
 
@@ -101,12 +107,25 @@ TEST(Record, WritesAPathAScenePlaysBack) {
     "materials": [{"name": "m"}], "objects": [{"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m"}],
     "camera_path": "orbit.json"})";
   EXPECT_THROW(host::loadScene((dir / "scene.json").string()), host::SceneError);  // not recorded yet
-  const CliRun run = runCli("record --scene " + (dir / "scene.json").string() + " --orbit-degrees 90 --seconds 1.5 --keys 4 --out " +
-                            (dir / "orbit.json").string());
+  const CliRun run = runCli("record --scene " + (dir / "scene.json").string() +
+                            " --orbit-degrees 90 --seconds 1.5 --keys 4 --out " + (dir / "orbit.json").string());
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const host::Scene scene = host::loadScene((dir / "scene.json").string());
   EXPECT_EQ(scene.path.frameCount(), 46);
   const host::Camera last = scene.path.at(scene.camera, 45);
-  EXPECT_NEAR(glm::length(last.position - last.target), glm::length(scene.camera.position - scene.camera.target), 1e-3f);
+  EXPECT_NEAR(glm::length(last.position - last.target), glm::length(scene.camera.position - scene.camera.target),
+              1e-3f);
   EXPECT_NEAR(last.position.x, 10.0f, 0.05f);  // a quarter turn about +y (right-handed) from (0, 1, 10)
+}
+
+TEST(Regress, TheDefaultGoldensAreFoundFromAnyWorkingFolder) {
+  const fs::path out = tempDir("elsewhere");
+  // A run whose settings differ from the committed golden's: the golden is found and compared.
+  const CliRun run = runCommand("cd " + fs::temp_directory_path().string() + " && " + RETROAA_CLI + " regress " +
+                                kSmallRun + " --methods off --out " + out.string() + " --check");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find(std::string(RETROAA_SOURCE_DIR) +
+                            "/integration-tests/golden/default.json: golden was made with settings"),
+            std::string::npos)
+      << run.output;
 }

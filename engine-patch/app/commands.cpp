@@ -147,8 +147,9 @@ int runRender(const RenderOptions& options) {
       throw std::invalid_argument("--show must be edges, samples or aggregates, got '" + options.show + "'");
     const retroaa::Stats stats = session.plugin().stats();
     if (stats.slices <= 1)  // every pixel lit once: there is nothing to show, only a blank picture
-      throw std::invalid_argument("--show " + options.show + " needs a method that lights some pixels more than once; " +
-                                  methodName + " lights every pixel once (" + std::to_string(stats.slices) + " slice)");
+      throw std::invalid_argument("--show " + options.show +
+                                  " needs a method that lights some pixels more than once; " + methodName +
+                                  " lights every pixel once (" + std::to_string(stats.slices) + " slice)");
     display = visualiseCounts(options.show, session.plugin().readSliceCounts(), display, options.width, options.height,
                               std::max(stats.samples, 1));
     std::printf("%s: %.3f lighting evaluations per pixel\n", options.show.c_str(), stats.evaluationsPerPixel());

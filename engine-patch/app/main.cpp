@@ -139,7 +139,8 @@ void addRegress(CommandLine& line) {
   sub->add_option("--frames", options->maxFrames, "at most this many frames per scene (0: all)")
       ->check(CLI::Range(0, 100000));
   sub->add_option("--out", options->out, "report folder");
-  sub->add_option("--golden-dir", options->goldenDirectory, "where the goldens live");
+  sub->add_option("--golden-dir", options->goldenDirectory,
+                  "where the goldens live (default: the source tree's integration-tests/golden)");
   sub->add_flag("--check", options->check, "compare with the goldens; exit 1 naming each figure that got worse");
   sub->add_flag("--update-golden", options->updateGolden, "rewrite the goldens from this run");
   line.addConfigOptions(sub);

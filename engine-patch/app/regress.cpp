@@ -330,8 +330,10 @@ void writeHtml(const json& report, const RegressOptions& options) {
 // Goldens: the quality figures per scene and method, with tolerances. Returns the exit status.
 int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
   int status = kExitOk;
+  const fs::path goldenDirectory = options.goldenDirectory.empty() ? fs::path(RETROAA_INTEGRATION_TESTS_DIR) / "golden"
+                                                                   : fs::path(options.goldenDirectory);
   for (const auto& scene : report["scenes"]) {
-    const fs::path goldenFile = fs::path(options.goldenDirectory) / (fileSafe(scene["scene"]) + ".json");
+    const fs::path goldenFile = goldenDirectory / (fileSafe(scene["scene"]) + ".json");
     const json settings = {{"width", options.width},
                            {"height", options.height},
                            {"ground_truth_samples_per_axis", options.groundTruthSamples},
@@ -353,7 +355,7 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
                                                              {"edge_psnr_db", r["edge_psnr_db"]},
                                                              {"flicker", r["flicker"]},
                                                              {"evals_per_pixel", r["evals_per_pixel"]}};
-      fs::create_directories(options.goldenDirectory);
+      fs::create_directories(goldenDirectory);
       std::ofstream(goldenFile) << golden.dump(2) << "\n";
       std::printf("golden written: %s\n", goldenFile.string().c_str());
     }

@@ -19,7 +19,7 @@ struct RegressOptions {
   int frameStride = 1;         // every n-th frame of each path
   int maxFrames = 0;           // at most this many frames per scene (0: all)
   std::string out = "out/regress";
-  std::string goldenDirectory = "integration-tests/golden";
+  std::string goldenDirectory;  // empty: the source tree's integration-tests/golden, from any working folder
   bool check = false;         // compare with the goldens; exit 1 naming what got worse
   bool updateGolden = false;  // rewrite the goldens from this run
 };

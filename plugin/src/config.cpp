@@ -33,7 +33,8 @@ std::string quoted(const std::string& text) {
     }
   }
   out += "'";
-  if (text.size() > kMost) out += " (" + std::to_string(text.size()) + " bytes, first " + std::to_string(kMost) + " shown)";
+  if (text.size() > kMost)
+    out += " (" + std::to_string(text.size()) + " bytes, first " + std::to_string(kMost) + " shown)";
   return out;
 }
 
@@ -62,8 +63,8 @@ Status parseFloat(const std::string& key, const std::string& value, float minimu
   if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(parsed) || parsed < minimum ||
       parsed > maximum) {
     std::ostringstream message;
-    message << "config key '" << key << "': value " << quoted(value) << " is not a number in [" << minimum << ", " << maximum
-            << "]";
+    message << "config key '" << key << "': value " << quoted(value) << " is not a number in [" << minimum << ", "
+            << maximum << "]";
     return invalid(message.str());
   }
   out = static_cast<float>(parsed);
@@ -229,7 +230,8 @@ const std::vector<Setter>& setters() {
          const auto& files = presets::embeddedFiles();
          const auto found = files.find(v + ".cfg");
          if (found == files.end())
-           return invalid("config key 'preset': unknown value " + quoted(v) + " (allowed: none, low, medium, high, ultra)");
+           return invalid("config key 'preset': unknown value " + quoted(v) +
+                          " (allowed: none, low, medium, high, ultra)");
          // Quality keys only: where shaders come from and whether to time them stay the user's.
          std::string lines;
          std::istringstream in(found->second);
@@ -399,7 +401,8 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
   if (flag == "-msaa") {
     if (!isInteger) return invalid("-msaa: value " + quoted(value) + " is not an integer (allowed: 0, 4, 8, 16)");
     if (n != 0 && n != 4 && n != 8 && n != 16) {
-      warnings.push_back("-msaa " + (value.size() <= 20 ? value : quoted(value)) + " is not one of 0, 4, 8, 16; using 0 as FreeSpace Open does");
+      warnings.push_back("-msaa " + (value.size() <= 20 ? value : quoted(value)) +
+                         " is not one of 0, 4, 8, 16; using 0 as FreeSpace Open does");
       config.samples = 4;
       if (usesMsaa(config.method)) config.method = Method::Off;
       return Status::ok();
@@ -414,7 +417,8 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
     return Status::ok();
   }
   if (flag == "-aa_preset") {
-    if (!isInteger || n < 0 || n > 6) return invalid("-aa_preset: value " + quoted(value) + " is not an integer in 0..6");
+    if (!isInteger || n < 0 || n > 6)
+      return invalid("-aa_preset: value " + quoted(value) + " is not an integer in 0..6");
     static const FxaaQuality qualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
     if (n >= 3)
       warnings.push_back("-aa_preset " + value + " selects SMAA in FreeSpace Open; retroaa uses FXAA high instead");

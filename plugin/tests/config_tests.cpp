@@ -207,11 +207,13 @@ TEST(Config, MessagesQuoteUserInputShortAndEscaped) {
   Status status = applyConfigText(config, huge, "big.cfg");
   ASSERT_FALSE(status);
   EXPECT_LT(status.error().message.size(), 400u) << status.error().message.substr(0, 400);
-  EXPECT_NE(status.error().message.find("(10485760 bytes, first 80 shown)"), std::string::npos) << status.error().message;
+  EXPECT_NE(status.error().message.find("(10485760 bytes, first 80 shown)"), std::string::npos)
+      << status.error().message;
 
   const std::string binary = std::string("\x01\x02\x1b[31m\xff", 8) + "=1";  // control bytes, an escape sequence
   status = applyConfigText(config, binary, "binary.cfg");
   ASSERT_FALSE(status);
-  for (char c : status.error().message) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "raw byte " << int(c) << " in the message";
+  for (char c : status.error().message)
+    EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "raw byte " << int(c) << " in the message";
   EXPECT_NE(status.error().message.find("'\\x01\\x02\\x1b[31m\\xff'"), std::string::npos) << status.error().message;
 }
