@@ -129,3 +129,13 @@ TEST(Regress, TheDefaultGoldensAreFoundFromAnyWorkingFolder) {
             std::string::npos)
       << run.output;
 }
+
+TEST(Regress, ProgressCountsTheReferencesToo) {
+  // 2 frames × (1 method + the frame's ground truth and per-sample reference) = 4 steps, the first a reference.
+  const CliRun run =
+      runCli(std::string("regress ") + kSmallRun + " --methods off --out " + tempDir("progress").string());
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("regress: 1/4 steps"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("ground truth and per-sample, frame 0"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("regress: 4/4 steps"), std::string::npos) << run.output;
+}

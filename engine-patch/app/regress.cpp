@@ -28,7 +28,8 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// Renders done / total (frames × methods) with an ETA: a bar on a terminal, plain lines otherwise.
+// Steps done / total (frames × (methods + the frame's references)) with an ETA from the time per step
+// so far: a bar on a terminal, plain lines otherwise.
 class Progress {
  public:
   explicit Progress(int total) : total_(total), start_(std::chrono::steady_clock::now()), terminal_(isatty(2)) {}
@@ -38,11 +39,11 @@ class Progress {
     const double eta = done_ > 0 ? elapsed / done_ * (total_ - done_) : 0;
     if (terminal_) {
       const int width = 30, filled = total_ ? width * done_ / total_ : width;
-      std::fprintf(stderr, "\r[%s%s] %d/%d renders, ETA %ds  %-40s", std::string(filled, '#').c_str(),
+      std::fprintf(stderr, "\r[%s%s] %d/%d steps, ETA %ds  %-40s", std::string(filled, '#').c_str(),
                    std::string(width - filled, ' ').c_str(), done_, total_, int(eta), what.c_str());
       if (done_ == total_) std::fprintf(stderr, "\n");
     } else {
-      std::fprintf(stderr, "regress: %d/%d renders (ETA %ds) %s\n", done_, total_, int(eta), what.c_str());
+      std::fprintf(stderr, "regress: %d/%d steps (ETA %ds) %s\n", done_, total_, int(eta), what.c_str());
     }
   }
 
@@ -227,8 +228,10 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
   const fs::path sceneDir = fs::path(options.out) / fileSafe(key);
   fs::create_directories(sceneDir);
   std::vector<FrameReference> references;
-  for (int frame : frames)
+  for (int frame : frames) {
     references.push_back(renderReference(session, session.camera(frame), options.groundTruthSamples, &options.base));
+    progress.step(key + " ground truth and per-sample, frame " + std::to_string(frame));
+  }
   const int cropW = std::min(48, w), cropH = std::min(36, h);
   const std::pair<int, int> window = busiestWindow(references[0].edges, w, h, cropW, cropH);
   writeImage8((sceneDir / "ground-truth.png").string(), w, h, references[0].truthRgba);
@@ -393,7 +396,7 @@ int runRegress(const RegressOptions& options) {
   int total = 0;
   for (const std::vector<int>& list : frames) total += int(list.size());
   host::HeadlessContext context;
-  Progress progress(total * int(specs.size()));
+  Progress progress(total * (int(specs.size()) + 1));  // + each frame's references
   fs::create_directories(options.out);
   json report = {
       {"renderer", context.info().summary()},
