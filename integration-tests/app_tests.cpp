@@ -169,3 +169,25 @@ TEST(Cli, ShowingSliceCountsOfAMethodWithoutSlicesIsRefused) {
   r = runCli("render --method edge --show edges --width 32 --height 24 --out " + temp("edges.png"));
   EXPECT_EQ(r.exitCode, 0) << r.output;
 }
+
+// A frame whose ground truth has no edge pixel has no edge error: null in JSON, n/a in the table.
+TEST(Cli, EdgeFiguresOfAFrameWithoutEdgesAreNotApplicable) {
+  const std::string scene = temp("sky-only.json");
+  std::ofstream(scene) << R"({"camera": {"position": [0,0,5], "target": [0,0,0]}, "materials": [{"name": "m"}],
+                             "objects": [], "star_density": 0})";
+  const std::string json = temp("sky-only-bench.json");
+  const CliRun r = runCli("bench --scene " + scene +
+                          " --methods off,edge --width 48 --height 32 --gt-samples 2 --repeats 1 --json " + json);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(json);
+  const nlohmann::json document = nlohmann::json::parse(in);
+  EXPECT_EQ(document["edge_pixels"], 0);
+  for (const auto& row : document["rows"]) {
+    EXPECT_TRUE(row["edge_psnr_db"].is_null()) << row.dump();
+    EXPECT_EQ(row["edge_pixels"], 0);
+    EXPECT_TRUE(row["psnr_db"].is_number());
+  }
+  EXPECT_NE(r.output.find("| off | 1 | 1.000 |"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" | n/a | "), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find(" | 0.00 | "), std::string::npos) << r.output;
+}

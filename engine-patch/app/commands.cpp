@@ -203,19 +203,22 @@ std::string benchTable(const json& rows) {
            "PSNR dB | "
            "SSIM | max err | PSNR vs per-sample |\n"
         << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  auto ratio = [](const json& value) {
-    if (value.is_null()) return std::string("-");
+  // Null is "-" for a ratio whose baseline was not run, "n/a" for a figure with nothing to measure.
+  auto twoDecimals = [](const json& value, const char* whenNull) {
+    if (value.is_null()) return std::string(whenNull);
     std::ostringstream s;
     s << std::fixed << std::setprecision(2) << value.get<double>();
     return s.str();
   };
+  auto ratio = [&](const json& value) { return twoDecimals(value, "-"); };
+  auto decibels = [&](const json& value) { return twoDecimals(value, "n/a"); };
   for (const auto& row : rows) {
     table << std::fixed << "| " << row["method"].get<std::string>() << " | " << row["samples"].get<int>() << " | "
           << std::setprecision(3) << row["evals_per_pixel"].get<double>() << " | " << std::setprecision(2)
           << row["gpu_ms"].get<double>() << " | " << ratio(row["time_vs_off"]) << " | "
           << ratio(row["time_vs_per_sample"]) << " | " << std::setprecision(1)
           << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
-          << row["psnr_db"].get<double>() << " | " << row["edge_psnr_db"].get<double>() << " | " << std::setprecision(4)
+          << row["psnr_db"].get<double>() << " | " << decibels(row["edge_psnr_db"]) << " | " << std::setprecision(4)
           << row["ssim"].get<double>() << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " | "
           << std::setprecision(2) << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
   }

@@ -64,7 +64,8 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
 }
 
 nlohmann::json figures(const Measurement& m) {
-  nlohmann::json out = {
+  using nlohmann::json;
+  json out = {
       {"samples", m.stats.samples},
       {"evals_per_pixel", m.stats.evaluationsPerPixel()},
       {"lighting_evaluations", m.stats.lightingEvaluations},
@@ -75,7 +76,9 @@ nlohmann::json figures(const Measurement& m) {
       {"plugin_bytes_per_pixel", m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0},
       {"budget_scale", m.stats.budgetScale},
       {"psnr_db", m.error.psnrDb},
-      {"edge_psnr_db", m.error.edgePsnrDb},
+      // No edge pixel in the ground truth: there is no edge error to report (null, not a number).
+      {"edge_psnr_db", m.error.edgePixels > 0 ? json(m.error.edgePsnrDb) : json(nullptr)},
+      {"edge_pixels", m.error.edgePixels},
       {"ssim", m.error.ssim},
       {"max_abs_error", m.error.maxAbsError},
   };

@@ -42,7 +42,8 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
 
 // The figures of a measurement by the names every report uses: samples, evals_per_pixel,
 // lighting_evaluations, slices, gpu_ms, passes_ms, plugin_bytes, plugin_bytes_per_pixel, budget_scale,
-// psnr_db, edge_psnr_db, ssim, max_abs_error, psnr_vs_per_sample_db (when measured).
+// psnr_db, edge_psnr_db (null when the ground truth has no edge pixel), edge_pixels, ssim,
+// max_abs_error, psnr_vs_per_sample_db (when measured).
 nlohmann::json figures(const Measurement& measurement);
 
 // The quality figures a target can name, and the cost figures tune can minimise.

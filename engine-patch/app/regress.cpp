@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace app {
@@ -68,12 +69,14 @@ struct MethodTotals {
   double psnr = 0, edgePsnr = 0, minEdgePsnr = 1e9, psnrVsPerSample = 0, ssim = 0, maxError = 0;
   double evaluations = 0, gpuMs = 0, flicker = 0;
   std::map<std::string, double> passMs;
-  int frames = 0, flickerFrames = 0;
+  int frames = 0, flickerFrames = 0, edgeFrames = 0;  // edge figures: frames whose ground truth has edges
   double bytesPerPixel = 0;
   std::vector<float> previousError;  // signed display error of the previous frame
 
   void add(const Measurement& m, const FrameReference& reference) {
-    psnr += m.error.psnrDb, edgePsnr += m.error.edgePsnrDb, minEdgePsnr = std::min(minEdgePsnr, m.error.edgePsnrDb);
+    psnr += m.error.psnrDb;
+    if (m.error.edgePixels > 0)
+      edgePsnr += m.error.edgePsnrDb, minEdgePsnr = std::min(minEdgePsnr, m.error.edgePsnrDb), ++edgeFrames;
     psnrVsPerSample += m.psnrVsPerSampleDb.value_or(0);
     ssim += m.error.ssim, maxError = std::max(maxError, m.error.maxAbsError);
     evaluations += m.stats.evaluationsPerPixel(), gpuMs += m.gpuMs;
@@ -104,8 +107,8 @@ struct MethodTotals {
             {"passes_ms", passes},
             {"plugin_bytes_per_pixel", bytesPerPixel},
             {"psnr_db", psnr / n},
-            {"edge_psnr_db", edgePsnr / n},
-            {"min_edge_psnr_db", minEdgePsnr},
+            {"edge_psnr_db", edgeFrames ? json(edgePsnr / edgeFrames) : json(nullptr)},
+            {"min_edge_psnr_db", edgeFrames ? json(minEdgePsnr) : json(nullptr)},
             {"psnr_vs_per_sample_db", psnrVsPerSample / n},
             {"ssim", ssim / n},
             {"max_abs_error", maxError},
@@ -135,6 +138,14 @@ std::vector<uint8_t> crop(const std::vector<uint8_t>& image, int width, int x0, 
   return out;
 }
 
+// A table cell: the number with `decimals` digits, or n/a where nothing was measured (null).
+std::string cell(const json& value, int decimals) {
+  if (value.is_null()) return "n/a";
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(decimals) << value.get<double>();
+  return out.str();
+}
+
 std::string htmlEscape(const std::string& text) {
   std::string out;
   for (char c : text) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
@@ -153,6 +164,7 @@ std::vector<std::string> compareWithGolden(const json& golden, const json& scene
     }
     const json& g = golden["methods"][method];
     auto lower = [&](const char* figure, double allowed) {
+      if (row[figure].is_null() || g[figure].is_null()) return;  // nothing measured (no edge pixel)
       const double now = row[figure], then = g[figure];
       if (now < then - allowed) {
         std::ostringstream m;
@@ -269,20 +281,25 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
        << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max "
           "err</th><th>flicker</th></tr>\n";
   for (const auto& r : scene["rows"]) {
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "<tr><td>%s</td><td>%.3f</td><td>%.2f</td><td>%.0f</td><td>%.2f</td><td>%.2f</td><td>%.2f</"
-                  "td><td>%.2f</td><td>%.4f</td><td>%.3f</td><td>%.4f</td></tr>\n",
-                  htmlEscape(r["method"]).c_str(), r["evals_per_pixel"].get<double>(), r["gpu_ms"].get<double>(),
-                  r["plugin_bytes_per_pixel"].get<double>(), r["psnr_db"].get<double>(),
-                  r["edge_psnr_db"].get<double>(), r["min_edge_psnr_db"].get<double>(),
-                  r["psnr_vs_per_sample_db"].get<double>(), r["ssim"].get<double>(), r["max_abs_error"].get<double>(),
-                  r["flicker"].get<double>());
-    html << line;
+    html << "<tr><td>" << htmlEscape(r["method"]) << "</td>";
+    for (const auto& [figure, decimals] :
+         std::initializer_list<std::pair<const char*, int>>{{"evals_per_pixel", 3},
+                                                            {"gpu_ms", 2},
+                                                            {"plugin_bytes_per_pixel", 0},
+                                                            {"psnr_db", 2},
+                                                            {"edge_psnr_db", 2},
+                                                            {"min_edge_psnr_db", 2},
+                                                            {"psnr_vs_per_sample_db", 2},
+                                                            {"ssim", 4},
+                                                            {"max_abs_error", 3},
+                                                            {"flicker", 4}})
+      html << "<td>" << cell(r[figure], decimals) << "</td>";
+    html << "</tr>\n";
   }
   std::vector<ScatterPoint> scatter;
   for (const auto& r : scene["rows"])
-    scatter.push_back({r["method"].get<std::string>(), r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
+    if (!r["edge_psnr_db"].is_null())  // a scene without edge pixels has nothing to plot
+      scatter.push_back({r["method"].get<std::string>(), r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
   html << "</table>\n"
        << svgScatter(scatter, "GPU ms per frame (mean)", "edge PSNR dB")
        << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";

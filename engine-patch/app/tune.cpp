@@ -126,7 +126,8 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
         }
         const json& e = entry[specs[i]];
         std::map<std::string, double> quality;
-        for (const std::string& figure : qualityFigures()) quality[figure] = e[figure].get<double>();
+        for (const std::string& figure : qualityFigures())  // null: nothing to miss on this frame (no edge pixel)
+          quality[figure] = e[figure].is_null() ? std::numeric_limits<double>::infinity() : e[figure].get<double>();
         points[i].frames.push_back(quality);
         points[i].cost += e[options.cost].get<double>();
       }
