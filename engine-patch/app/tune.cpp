@@ -102,7 +102,8 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
   std::vector<TunePoint> points(specs.size());
   for (size_t i = 0; i < specs.size(); ++i) points[i].spec = specs[i];
   int measured = 0, reused = 0;
-  for (const std::string& scenePath : options.scenes) {
+  for (size_t sceneIndex = 0; sceneIndex < options.scenes.size(); ++sceneIndex) {
+    const std::string& scenePath = options.scenes[sceneIndex];
     Session session(scenePath, options.width, options.height, context.info().summary());
     const int frames = std::max(1, std::min(options.frames, session.scene.path.frameCount()));
     for (int f = 0; f < frames; ++f) {
@@ -122,7 +123,8 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
           config.measureGpuTime = true;
           session.configure(config, specs[i]);
           entry[specs[i]] = figures(measure(session, session.camera(frame), *reference, 1, 1));
-          std::fprintf(stderr, "\rtune: measured %d points (%d reused)   ", ++measured, reused);
+          std::fprintf(stderr, "\rtune: scene %zu/%zu, frame %d/%d, point %zu/%zu: measured %d (%d reused)   ", sceneIndex + 1,
+                       options.scenes.size(), f + 1, frames, i + 1, specs.size(), ++measured, reused);
         }
         const json& e = entry[specs[i]];
         std::map<std::string, double> quality;
@@ -193,7 +195,8 @@ int runTune(const TuneOptions& options) {
   for (const TuneTarget& t : options.targets) report << " " << t.metric << " ≥ " << t.threshold;
   report << " on every frame; cost: " << options.cost << ".\n\nPareto front (cost against the worst frame of "
          << options.targets.front().metric << "):\n\n";
-  for (int i : choice.front) report << "- " << describe(i) << (i == choice.chosen ? "  ← chosen" : "") << "\n";
+  const char* mark = choice.feasible ? "  ← chosen" : "  ← closest, misses the target";
+  for (int i : choice.front) report << "- " << describe(i) << (i == choice.chosen ? mark : "") << "\n";
   if (!choice.feasible) {
     report << "\nNo setting meets the targets. Closest: " << describe(choice.chosen) << "\n";
     std::printf("%s", report.str().c_str());
