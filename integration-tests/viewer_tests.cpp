@@ -96,3 +96,12 @@ TEST(Viewer, AScriptThatIsNotARegularFileIsRefused) {
   EXPECT_NE(run.output.find("/dev/zero: cannot open script: it is not a regular file"), std::string::npos)
       << run.output;
 }
+
+TEST(Viewer, ReportsItsFrameTime) {
+  const fs::path dir = fs::temp_directory_path() / "retroaa_viewer_time";
+  fs::create_directories(dir);
+  std::ofstream(dir / "time.txt") << "0 method edge\n5 quit\n";
+  const CliRun run = view(dir / "time.txt", 64, 48);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("frames timed, median frame"), std::string::npos) << run.output;
+}

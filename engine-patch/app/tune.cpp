@@ -123,8 +123,8 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
           config.measureGpuTime = true;
           session.configure(config, specs[i]);
           entry[specs[i]] = figures(measure(session, session.camera(frame), *reference, 1, 1));
-          std::fprintf(stderr, "\rtune: scene %zu/%zu, frame %d/%d, point %zu/%zu: measured %d (%d reused)   ", sceneIndex + 1,
-                       options.scenes.size(), f + 1, frames, i + 1, specs.size(), ++measured, reused);
+          std::fprintf(stderr, "\rtune: scene %zu/%zu, frame %d/%d, point %zu/%zu: measured %d (%d reused)   ",
+                       sceneIndex + 1, options.scenes.size(), f + 1, frames, i + 1, specs.size(), ++measured, reused);
         }
         const json& e = entry[specs[i]];
         std::map<std::string, double> quality;

@@ -17,6 +17,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -108,6 +109,7 @@ class Viewer {
   int run() {
     int status = kExitOk;
     for (int frame = 0; !quit_ && !glfwWindowShouldClose(window_); ++frame) {
+      const auto frameStart = std::chrono::steady_clock::now();
       glfwPollEvents();
       screenshot_.clear(), screenshotWithPanel_.clear();
       for (; nextAction_ < script_.size() && script_[nextAction_].frame <= frame; ++nextAction_)
@@ -123,12 +125,15 @@ class Viewer {
         std::printf("view: screenshot with the panel %s\n", screenshotWithPanel_.c_str());
       }
       glfwSwapBuffers(window_);
+      recordFrameTime(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
       if (!a_->hooks->lastError().empty()) {
         std::fprintf(stderr, "view: plugin error: %s\n", a_->hooks->lastError().c_str());
         status = kExitCheckFailed;
         break;
       }
     }
+    std::printf("view: %zu frames timed, median frame %.1f ms (CPU wall time: host, plugin, panel and swap)\n",
+                frameMs_.size(), medianFrameMs());
     configureSpec(*a_, "off");
     a_->renderer->renderFrame(camera_);
     const int objectsAtEnd = a_->plugin().stats().glObjectsHeld;
@@ -140,6 +145,18 @@ class Viewer {
 
  private:
   static constexpr double kTimeStep = 1.0 / 30.0;  // scripted runs and path playback use a fixed step
+
+  // The last second or so of frame times (CPU wall clock), for the overlay and the closing line.
+  void recordFrameTime(double ms) {
+    frameMs_.push_back(ms);
+    if (frameMs_.size() > 60) frameMs_.erase(frameMs_.begin());
+  }
+  double medianFrameMs() const {
+    if (frameMs_.empty()) return 0;
+    std::vector<double> sorted = frameMs_;
+    std::sort(sorted.begin(), sorted.end());
+    return sorted[sorted.size() / 2];
+  }
 
   std::unique_ptr<Session> makeSide(const std::string& spec) {
     auto side = std::make_unique<Session>(options_.scene, width_, height_, contextSummary_);
@@ -366,7 +383,9 @@ class Viewer {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::Begin("retroaa");
+    ImGui::SetNextWindowSizeConstraints(ImVec2(480, 0), ImVec2(480, 1e6f));  // wide enough for every label
+    ImGui::Begin("retroaa", nullptr, ImGuiWindowFlags_AlwaysAutoResize);     // and as tall as its lines
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 12);                        // leave the labels their room
     if (ImGui::BeginCombo("method", a_->method.c_str())) {
       for (const std::string& method : methods_)
         if (ImGui::Selectable(method.c_str(), method == a_->method)) configureSpec(*a_, method);
@@ -384,6 +403,7 @@ class Viewer {
     changed |= settingInput(config);  // every other key, by name (the config reference lists them)
     if (changed) configure(*a_, config, a_->method);
     drawStats();
+    ImGui::PopItemWidth();
     ImGui::End();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -407,6 +427,10 @@ class Viewer {
   void drawStats() {
     const retroaa::Stats stats = a_->plugin().stats();
     ImGui::Separator();
+    double pluginMs = 0;
+    for (const retroaa::PassTime& pass : stats.passes) pluginMs += pass.ms;
+    ImGui::TextWrapped("frame %.1f ms CPU wall (median of %zu); plugin passes %.2f ms GPU", medianFrameMs(),
+                       frameMs_.size(), pluginMs);
     ImGui::Text("%d×%d, %d samples, %.3f lighting evaluations/pixel", width_, height_, stats.samples,
                 stats.evaluationsPerPixel());
     ImGui::Text("plugin memory %.1f MiB (%.0f B/px), %d GL objects", stats.bytesHeld / 1048576.0,
@@ -441,6 +465,7 @@ class Viewer {
   std::string screenshot_, screenshotWithPanel_;  // this frame's
   std::map<int, bool> wasDown_;
   char setting_[128] = "";
+  std::vector<double> frameMs_;
   std::string settingError_;
 };
 
