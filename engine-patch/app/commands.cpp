@@ -118,6 +118,13 @@ std::vector<std::string> expandMethodList(const std::string& list) {
   return out;
 }
 
+std::vector<MethodSpec> parseMethodList(const std::string& list, const retroaa::Config& base) {
+  std::vector<MethodSpec> specs;
+  for (const std::string& name : expandMethodList(list)) specs.push_back(parseMethodSpec(name, base));
+  if (specs.empty()) throw std::invalid_argument("--methods names no method");
+  return specs;
+}
+
 int runRender(const RenderOptions& options) {
   host::HeadlessContext context;
   Session session(options.scene, options.width, options.height, context.info().summary());
@@ -283,10 +290,7 @@ void writeReferenceImages(const std::string& directory, const Session& session, 
 }  // namespace
 
 int runBench(const BenchOptions& options) {
-  std::vector<MethodSpec> specs;
-  for (const std::string& name : expandMethodList(options.methods))
-    specs.push_back(parseMethodSpec(name, options.base));
-  if (specs.empty()) throw std::invalid_argument("--methods names no method");
+  const std::vector<MethodSpec> specs = parseMethodList(options.methods, options.base);
 
   host::HeadlessContext context;
   Session session(options.scene, options.width, options.height, context.info().summary());

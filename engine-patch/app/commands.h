@@ -25,6 +25,9 @@ MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base)
 // Keywords expand from the plugin's method registry: "all" to every method with its variants (resolve
 // weightings, stacking), "each" to one spec per method, "grid" to the settings `tune` searches.
 std::vector<std::string> expandMethodList(const std::string& list);
+// expandMethodList, each spec parsed over `base`; throws std::invalid_argument naming a bad spec, or
+// when the list names no method.
+std::vector<MethodSpec> parseMethodList(const std::string& list, const retroaa::Config& base);
 
 struct RenderOptions {
   std::string scene = "default";

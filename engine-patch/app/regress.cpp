@@ -403,10 +403,7 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
 }  // namespace
 
 int runRegress(const RegressOptions& options) {
-  std::vector<MethodSpec> specs;
-  for (const std::string& name : expandMethodList(options.methods))
-    specs.push_back(parseMethodSpec(name, options.base));
-  if (specs.empty()) throw std::invalid_argument("--methods names no method");
+  const std::vector<MethodSpec> specs = parseMethodList(options.methods, options.base);
   const std::vector<std::string> scenes =
       options.scenes.empty() ? defaultRegressScenes(RETROAA_INTEGRATION_TESTS_DIR) : options.scenes;
   const std::vector<std::vector<int>> frames = framesToRender(scenes, options);
