@@ -203,3 +203,23 @@ TEST(DemoRender, TheSkyIsSkyAtEveryAspectRatio) {
   }
   for (double blue : topBlue) EXPECT_NEAR(blue, topBlue.front(), 0.03);
 }
+
+// Non-finite vertex data: a model with nothing usable is an error naming file and mesh; one with some
+// usable faces loads those and warns with counts.
+TEST(ModelLoading, NonFiniteVerticesAreRefusedOrLeftOutWithAWord) {
+  try {
+    host::loadModel(testDataPath("fixtures/non_finite.obj"));
+    ADD_FAILURE() << "a model of NaN positions loaded";
+  } catch (const host::ModelLoadError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("non_finite.obj: mesh 'bad': 1 of 1 triangles have non-finite positions"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("nothing of the model is usable"), std::string::npos) << message;
+  }
+  std::vector<std::string> warnings;
+  const host::Mesh half = host::loadModel(testDataPath("fixtures/half_non_finite.obj"), &warnings);
+  EXPECT_EQ(half.indices.size(), 3u);
+  for (const host::Vertex& v : half.vertices) EXPECT_TRUE(std::isfinite(v.position.x + v.position.y + v.position.z));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("mesh 'half': 1 of 2 triangles"), std::string::npos) << warnings[0];
+}

@@ -1,13 +1,15 @@
 #include "mesh.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
 #include <random>
+#include <tuple>
 
 namespace host {
 
@@ -15,8 +17,7 @@ void Mesh::append(const Mesh& other, const glm::mat4& transform) {
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(transform)));
   const auto base = static_cast<uint32_t>(vertices.size());
   for (const Vertex& v : other.vertices)
-    vertices.push_back({glm::vec3(transform * glm::vec4(v.position, 1.0f)),
-                        glm::normalize(normalMatrix * v.normal)});
+    vertices.push_back({glm::vec3(transform * glm::vec4(v.position, 1.0f)), glm::normalize(normalMatrix * v.normal)});
   for (uint32_t i : other.indices) indices.push_back(base + i);
 }
 
@@ -116,8 +117,7 @@ Mesh greebledHull(const GreebledHull& params) {
     const int axis = pick < areas[0] ? 0 : (pick < areas[0] + areas[1] ? 1 : 2);
     const float side = unit(rng) < 0.5f ? -1.0f : 1.0f;
     glm::vec3 extent;
-    for (int i = 0; i < 3; ++i)
-      extent[i] = params.greebleMin + (params.greebleMax - params.greebleMin) * unit(rng);
+    for (int i = 0; i < 3; ++i) extent[i] = params.greebleMin + (params.greebleMax - params.greebleMin) * unit(rng);
     extent[axis] *= 0.5f;  // panels are flatter than they are wide
     glm::vec3 centre;
     for (int i = 0; i < 3; ++i) centre[i] = (unit(rng) * 2.0f - 1.0f) * (half[i] - extent[i] * 0.5f);
@@ -135,7 +135,14 @@ Mesh greebledHull(const GreebledHull& params) {
 }  // namespace generate
 
 namespace {
-void appendNode(Mesh& mesh, const aiScene& scene, const aiNode& node, const glm::mat4& parent) {
+
+bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Appends the node's meshes in world space. Faces that index past their mesh or touch a vertex whose
+// position or normal is not finite are dropped and counted per mesh (`dropped`: mesh name, dropped,
+// faces), so the caller can refuse a model with nothing usable and warn about one with some.
+void appendNode(Mesh& mesh, const aiScene& scene, const aiNode& node, const glm::mat4& parent,
+                std::vector<std::tuple<std::string, unsigned, unsigned>>& dropped) {
   glm::mat4 local;
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) local[c][r] = node.mTransformation[r][c];  // aiMatrix is row-major
@@ -145,33 +152,57 @@ void appendNode(Mesh& mesh, const aiScene& scene, const aiNode& node, const glm:
     const aiMesh& source = *scene.mMeshes[node.mMeshes[m]];
     if (!source.HasNormals()) continue;  // aiProcess_GenSmoothNormals guarantees them for triangles
     const auto base = static_cast<uint32_t>(mesh.vertices.size());
+    std::vector<bool> usable(source.mNumVertices);
     for (unsigned v = 0; v < source.mNumVertices; ++v) {
       const aiVector3D& p = source.mVertices[v];
       const aiVector3D& n = source.mNormals[v];
       glm::vec3 normal = normalMatrix * glm::vec3(n.x, n.y, n.z);
       const float length = glm::length(normal);
-      mesh.vertices.push_back({glm::vec3(world * glm::vec4(p.x, p.y, p.z, 1.0f)),
-                               length > 0.0f ? normal / length : glm::vec3(0, 1, 0)});
+      const glm::vec3 position = glm::vec3(world * glm::vec4(p.x, p.y, p.z, 1.0f));
+      usable[v] = isFinite(position) && isFinite(normal);
+      // An unusable vertex stays (indices keep their meaning) but at the origin: no face draws it, and
+      // nothing that sums vertices (bounds) sees a NaN.
+      mesh.vertices.push_back(
+          {usable[v] ? position : glm::vec3(0.0f), usable[v] && length > 0.0f ? normal / length : glm::vec3(0, 1, 0)});
     }
+    unsigned triangles = 0, bad = 0;
     for (unsigned f = 0; f < source.mNumFaces; ++f) {
       const aiFace& face = source.mFaces[f];
       if (face.mNumIndices != 3) continue;  // points and lines after triangulation
+      ++triangles;
+      bool ok = true;
+      for (unsigned i = 0; i < 3; ++i) ok = ok && face.mIndices[i] < source.mNumVertices && usable[face.mIndices[i]];
+      if (!ok) {
+        ++bad;
+        continue;
+      }
       for (unsigned i = 0; i < 3; ++i) mesh.indices.push_back(base + face.mIndices[i]);
     }
+    if (bad) dropped.emplace_back(source.mName.C_Str(), bad, triangles);
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(mesh, scene, *node.mChildren[c], world);
+  for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(mesh, scene, *node.mChildren[c], world, dropped);
 }
+
 }  // namespace
 
-Mesh loadModel(const std::string& path) {
+Mesh loadModel(const std::string& path, std::vector<std::string>* warnings) {
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                aiProcess_SortByPType);
-  if (!scene || !scene->mRootNode)
-    throw ModelLoadError(path + ": cannot load model: " + importer.GetErrorString());
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                                     aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  if (!scene || !scene->mRootNode) throw ModelLoadError(path + ": cannot load model: " + importer.GetErrorString());
   Mesh mesh;
-  appendNode(mesh, *scene, *scene->mRootNode, glm::mat4(1.0f));
+  std::vector<std::tuple<std::string, unsigned, unsigned>> dropped;
+  appendNode(mesh, *scene, *scene->mRootNode, glm::mat4(1.0f), dropped);
+  for (const auto& [name, bad, triangles] : dropped) {
+    const std::string what = path + ": mesh '" + name + "': " + std::to_string(bad) + " of " +
+                             std::to_string(triangles) +
+                             " triangles have non-finite positions or normals or indices out of range";
+    if (mesh.indices.empty()) throw ModelLoadError(what + "; nothing of the model is usable");
+    if (warnings)
+      warnings->push_back(what + "; they are left out");
+    else
+      std::fprintf(stderr, "retroaa: warning: %s; they are left out\n", what.c_str());
+  }
   if (mesh.indices.empty()) throw ModelLoadError(path + ": model has no triangles");
   return mesh;
 }

@@ -49,6 +49,8 @@ class ModelLoadError : public std::runtime_error {
 };
 
 // glTF 2.0, OBJ and the other formats assimp reads; all meshes merged, node transforms applied.
-Mesh loadModel(const std::string& path);
+// Faces with non-finite positions or normals, or indices out of range, are left out: with a warning
+// naming file, mesh and counts (into `warnings`, else to stderr), or ModelLoadError when nothing is left.
+Mesh loadModel(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace host
