@@ -1,6 +1,6 @@
 #include "session.h"
 
-#include "commands.h"
+#include "retroaa/config.h"
 
 namespace app {
 
@@ -18,10 +18,6 @@ void Session::configure(const retroaa::Config& requested, const std::string& met
   if (!status) throw std::invalid_argument(status.error().message);
   config = requested;
   method = methodName.empty() ? retroaa::toString(requested.method) : methodName;
-}
-
-void Session::configureSpec(const std::string& spec, const retroaa::Config& base) {
-  configure(parseMethodSpec(spec, base).config, spec);
 }
 
 std::map<std::string, std::string> Session::metadata(const std::string& methodName) const {

@@ -28,8 +28,6 @@ struct Session {
   retroaa::Plugin& plugin() const { return hooks->plugin(); }
   // Throws std::invalid_argument with the plugin's message when the config is refused.
   void configure(const retroaa::Config& config, const std::string& methodName = "");
-  // A method spec (see parseMethodSpec) over `base`.
-  void configureSpec(const std::string& spec, const retroaa::Config& base);
   // Image metadata: method, scene, renderer, the granted config.
   std::map<std::string, std::string> metadata(const std::string& methodName) const;
 };

@@ -3,6 +3,7 @@
 #include "budget_controller.h"
 #include "context.h"
 #include "gl_state.h"
+#include "shared_constants.h"
 #include "technique.h"
 
 #include <algorithm>
@@ -15,8 +16,9 @@ Status validateLayout(const GBufferLayout& layout) {
   auto invalid = [](const std::string& message) { return Error{ErrorCode::InvalidLayout, message}; };
   if (layout.width <= 0 || layout.height <= 0)
     return invalid("layout size " + std::to_string(layout.width) + "x" + std::to_string(layout.height) + " is empty");
-  if (layout.attachments.empty() || layout.attachments.size() > 8)
-    return invalid("layout has " + std::to_string(layout.attachments.size()) + " attachments (allowed: 1..8)");
+  if (layout.attachments.empty() || layout.attachments.size() > size_t(kMaxAttachments))
+    return invalid("layout has " + std::to_string(layout.attachments.size()) + " attachments (allowed: 1.." +
+                   std::to_string(kMaxAttachments) + ")");
   int positions = 0;
   for (const Attachment& a : layout.attachments) {
     if (!a.texture || !a.internalFormat) return invalid("an attachment has no texture or no format");

@@ -14,7 +14,6 @@ const std::string& sharedConstantDefines() {
     d += defineLine("UNIT_SLICE_WEIGHTS", kUnitSliceWeights);
     d += defineLine("UNIT_DEPTH_STENCIL", kUnitDepthStencil);
     d += defineLine("MAX_ATTACHMENTS", kMaxAttachments);
-    d += defineLine("MAX_SAMPLES", kMaxSamples);
     d += "#define NO_SLICE " + std::to_string(kNoSlice) + "u\n";
     d += defineLine("WEIGHTING_MEDIAN", int(ResolveWeighting::Median));
     d += defineLine("WEIGHTING_FRONT", int(ResolveWeighting::Front));

@@ -10,9 +10,8 @@ namespace retroaa {
 // Texture units with a fixed meaning across passes. G-buffer attachment i is bound to unit i (≤ 8).
 constexpr int kUnitSliceWeights = 14;  // a technique's per-pixel input to the slice composite
 constexpr int kUnitDepthStencil = 15;  // the MSAA G-buffer's depth-stencil
-constexpr int kMaxAttachments = 8;
-constexpr int kMaxSamples = 16;     // the largest `samples` the config accepts
-constexpr unsigned kNoSlice = 15u;  // a sample no slice lights (aggregate assignments: 4 bits per sample)
+constexpr int kMaxAttachments = 8;     // host G-buffer attachments (units 0..7; a layout may have no more)
+constexpr unsigned kNoSlice = 15u;     // a sample no slice lights (aggregate assignments: 4 bits per sample)
 
 // "#define NAME value\n" for every shared constant and every enum value a shader compares against
 // (WEIGHTING_*, DETECTOR_*), generated from the C++ enums themselves.
