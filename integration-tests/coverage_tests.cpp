@@ -16,9 +16,11 @@ void writeSampleDepth(GLuint target, const char* depthExpression) {
 void main() {  // reading gl_SamplePosition runs this once per sample
   int x = int(gl_FragCoord.x);
   vec2 position = gl_SamplePosition;
-  gl_FragDepth = )") + depthExpression + ";\n}\n";
-  const char* vertexText = "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
-                           " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
+  gl_FragDepth = )") + depthExpression +
+                               ";\n}\n";
+  const char* vertexText =
+      "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
+      " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
   const char* fragmentText = fragment.c_str();
   const GLuint vertex = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexText);
   const GLuint program = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentText);
@@ -67,11 +69,12 @@ struct CoverageFixture {
     retroaa::Plugin& plugin = hooks->plugin();
     EXPECT_NE(plugin.coverageFramebuffer(), 0u);
     writeSampleDepth(plugin.coverageFramebuffer(), sampleDepth);
-    retroaa::FrameInfo info{0.8f, 0.1f, 100.0f};
+    retroaa::FrameInfo info{verticalFovFor(0.8f, kWidth, kHeight), 0.1f, 100.0f};
     EXPECT_TRUE(plugin.resolve(info));
     EXPECT_TRUE(plugin.post());
     std::vector<uint8_t> out(kWidth * kHeight * 4);
-    glGetTextureImage(frame.renderer->targets().displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
+    glGetTextureImage(frame.renderer->targets().displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()),
+                      out.data());
     return out;
   }
 };
@@ -137,7 +140,8 @@ TEST(CoverageFilter, GrazingPlaneRaisesFalseEdgesOnlyWithATightTolerance) {
     int count = 0;
     for (size_t p = 0; p < out.size() / 4; ++p) count += out[p * 4] != stripes[p * 4];
     changed[tolerance] = count;
-    std::printf("grazing plane, coverage tolerance %.2f: %d of %d pixels blended\n", tolerance, count, kWidth * kHeight);
+    std::printf("grazing plane, coverage tolerance %.2f: %d of %d pixels blended\n", tolerance, count,
+                kWidth * kHeight);
   }
   EXPECT_EQ(changed[retroaa::Config{}.coverageTolerance], 0);
   int worst = 0;

@@ -25,7 +25,8 @@ class ResolveHardCases : public ::testing::Test {
   void SetUp() override {
     context();
     scene_ = host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
-      "materials": [{"name": "m"}], "objects": []})", "empty", ".");
+      "materials": [{"name": "m"}], "objects": []})",
+                              "empty", ".");
     renderer_ = std::make_unique<host::Renderer>(scene_, kWidth, kHeight);
   }
 
@@ -44,7 +45,7 @@ class ResolveHardCases : public ::testing::Test {
     granted_ = fillGeometry(plugin, kWidth, kHeight, grid);
 
     retroaa::FrameInfo frame;
-    frame.horizontalFovRadians = 1.0f;
+    frame.verticalFovRadians = 1.0f;
     ASSERT_TRUE(plugin.resolve(frame));
     for (int a = 0; a < 5; ++a) {
       const GLuint textures[] = {renderer_->targets().color, renderer_->targets().position, renderer_->targets().normal,
@@ -53,7 +54,8 @@ class ResolveHardCases : public ::testing::Test {
       glGetTextureImage(textures[a], 0, GL_RGBA, GL_FLOAT, GLsizei(out_[a].size() * sizeof(glm::vec4)), out_[a].data());
     }
     depth_.resize(size_t(kWidth) * kHeight);
-    glGetTextureImage(renderer_->targets().depthStencil, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth_.size() * 4), depth_.data());
+    glGetTextureImage(renderer_->targets().depthStencil, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth_.size() * 4),
+                      depth_.data());
   }
 
   glm::vec4 attachment(int a, int x) const { return out_[a][x]; }
@@ -83,9 +85,11 @@ TEST_F(ResolveHardCases, EveryHardCaseGivesAFiniteSensibleResult) {
       /*0 all background*/ {background(), background(), background(), background()},
       /*1 NaN normal    */ {surface(10), nanNormal, surface(10), surface(10)},
       /*2 Inf position  */ {surface(10), surface(10), infPosition, surface(10)},
-      /*3 zero normals  */ {surface(5, glm::vec3(0)), surface(5, glm::vec3(0)), surface(5, glm::vec3(0)), surface(5, glm::vec3(0))},
+      /*3 zero normals  */
+      {surface(5, glm::vec3(0)), surface(5, glm::vec3(0)), surface(5, glm::vec3(0)), surface(5, glm::vec3(0))},
       /*4 0.1 m & 1e6 m */ {surface(0.1f), surface(0.1f), surface(1e6f), surface(1e6f)},
-      /*5 opposing      */ {surface(10, {0, 0, 1}), surface(10, {0, 0, -1}), surface(10, {0, 0, 1}), surface(10, {0, 0, -1})},
+      /*5 opposing      */
+      {surface(10, {0, 0, 1}), surface(10, {0, 0, -1}), surface(10, {0, 0, 1}), surface(10, {0, 0, -1})},
       /*6 depth step    */ {surface(10), surface(10.001f), surface(20), surface(30)},
       /*7 silhouette    */ {surface(10), background(), surface(10), background()},
       /*8 all NaN       */ {nanAll, nanAll, nanAll, nanAll},
@@ -102,21 +106,42 @@ TEST_F(ResolveHardCases, EveryHardCaseGivesAFiniteSensibleResult) {
     EXPECT_NEAR(glm::length(glm::vec3(attachment(2, x))), 1.0f, 1e-3f) << x;
   }
   EXPECT_NEAR(glm::length(glm::vec3(attachment(2, 3))), 1.0f, 1e-3f);  // zero normals: a unit fallback
-  EXPECT_NEAR(depthMetres(4), 0.1f, 1e-4f);  // a real sample's depth, not the 5e5 m mean
+  EXPECT_NEAR(depthMetres(4), 0.1f, 1e-4f);                            // a real sample's depth, not the 5e5 m mean
   EXPECT_NEAR(glm::length(glm::vec3(attachment(2, 5))), 1.0f, 1e-3f);  // opposing normals cancel: fallback
-  EXPECT_NEAR(depthMetres(6), 10.0005f, 0.01f);  // 10 and 10.001 merge; 20 and 30 stay out
-  EXPECT_FLOAT_EQ(depth_[6], surface(10.001f).depthBuffer.x);  // reference sample's depth-buffer value
-  EXPECT_FALSE(isBackground(7));  // median of {10, 10, bg, bg} is the nearer middle: the object
+  EXPECT_NEAR(depthMetres(6), 10.0005f, 0.01f);                        // 10 and 10.001 merge; 20 and 30 stay out
+  EXPECT_FLOAT_EQ(depth_[6], surface(10.001f).depthBuffer.x);          // reference sample's depth-buffer value
+  EXPECT_FALSE(isBackground(7));                 // median of {10, 10, bg, bg} is the nearer middle: the object
   EXPECT_NEAR(attachment(4, 7).b, 0.0f, 1e-3f);  // no sky mixed into the object's emissive
   EXPECT_TRUE(isBackground(8));
 }
 
-TEST_F(ResolveHardCases, FsoReferenceIsTheFartherMiddleSample) {
-  resolve({{surface(10), surface(10.001f), surface(20), surface(30)}, {surface(10), background(), surface(10), background()}},
+TEST_F(ResolveHardCases, FsoMedianIsTheFartherMiddleAndBackgroundCountsAsNearest) {
+  resolve({{surface(10), surface(10.001f), surface(20), surface(30)},
+           {surface(10), background(), surface(10), background()},
+           {surface(10), background(), background(), background()}},
           4, retroaa::ResolveWeighting::Fso);
   expectFinite(0);
   EXPECT_NEAR(depthMetres(0), 20.0f, 0.05f);
-  EXPECT_TRUE(isBackground(1));  // silhouettes become all-object or all-background
+  // FSO's background has view z 0, the nearest value: a 2/2 silhouette keeps the object, 3/1 does not
+  EXPECT_FALSE(isBackground(1));
+  EXPECT_NEAR(attachment(4, 1).b, 0.0f, 1e-3f);  // and no sky in the object's emissive
+  EXPECT_TRUE(isBackground(2));
+}
+
+TEST_F(ResolveHardCases, WindowWeighsSymmetricallyAroundTheFartherMiddle) {
+  // Eq. 1's footprint at 20 m for this 64×48 frame (vertical fov 1 rad): samples 1.5 footprints either
+  // side of the median weigh fully and alike, so the depth stays the median's; 6 footprints away, none.
+  const float aspect = float(kWidth) / float(kHeight);
+  const float footprint = 20.0f * std::tan(2.0f * std::atan(std::tan(0.5f) * aspect) / float(kWidth));
+  resolve({{surface(20 - 1.5f * footprint), surface(20), surface(20), surface(20 + 1.5f * footprint)},
+           {surface(20), surface(20), surface(20), surface(20 + 6 * footprint)},
+           {surface(20), surface(20), surface(20), surface(20 + 3.75f * footprint)}},
+          4, retroaa::ResolveWeighting::Window);
+  EXPECT_NEAR(depthMetres(0), 20.0f, 0.02f);
+  EXPECT_NEAR(depthMetres(1), 20.0f, 0.02f);
+  // halfway down the falling edge (2.5 → 5 footprints) it weighs 1/2: the mean moves 3.75·0.5/3.5 footprints
+  EXPECT_NEAR(depthMetres(2), 20.0f + 3.75f * footprint * 0.5f / 3.5f, 0.02f);
+  EXPECT_FLOAT_EQ(depth_[1], surface(20).depthBuffer.x);  // ours keep the reference's depth-buffer value
 }
 
 TEST_F(ResolveHardCases, EvenSampleCountMedianIsARealSample) {

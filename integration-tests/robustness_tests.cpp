@@ -23,8 +23,12 @@ constexpr double kMarginRms = 0.02;  // allowed extra RMS error (linear radiance
 // Known violations of the margin, documented in docs/robustness.md; the test checks they still fail,
 // so this list cannot go stale. `back` lights a grazing pixel at its farthest samples' mean position;
 // with a light on the surface that is far off.
+// On the grazing plane a point light sits exactly at the surface point. `back` lights only the
+// farthest samples; `window` weighs the samples unevenly (2 footprints: full, 4: a tenth), so the
+// averaged position lands a fraction of a footprint from the light and lights far brighter than any
+// sample. Both are what those weightings compute; the table keeps them visible.
 bool knownWorseThanOff(const std::string& method, const std::string& hardCase) {
-  return method == "resolve/back" && hardCase == "grazing plane";
+  return (method == "resolve/back" || method == "resolve/window") && hardCase == "grazing plane";
 }
 
 struct HardCase {
@@ -37,17 +41,24 @@ std::vector<HardCase> hardCases() {
   for (glm::vec4& a : nanSample.attachments) a = glm::vec4(kNaN);
   infSample.attachments[1].x = kInf;
   const float footprint = 10.0f * std::tan(1.0f / kWidth);
-  SyntheticSample red = surfaceSample(10, {0, 0, 1}, {0.9f, 0.1f, 0.1f}), blue = surfaceSample(10, {0, 0, 1}, {0.1f, 0.1f, 0.9f});
+  SyntheticSample red = surfaceSample(10, {0, 0, 1}, {0.9f, 0.1f, 0.1f}),
+                  blue = surfaceSample(10, {0, 0, 1}, {0.1f, 0.1f, 0.9f});
   return {
       {"all background", {backgroundSample(), backgroundSample(), backgroundSample(), backgroundSample()}},
       {"NaN sample", {surfaceSample(10), nanSample, surfaceSample(10), surfaceSample(10)}},
       {"Inf position", {surfaceSample(10), surfaceSample(10), infSample, surfaceSample(10)}},
-      {"zero-length normals", {surfaceSample(10, glm::vec3(0)), surfaceSample(10, glm::vec3(0)), surfaceSample(10, glm::vec3(0)), surfaceSample(10, glm::vec3(0))}},
+      {"zero-length normals",
+       {surfaceSample(10, glm::vec3(0)), surfaceSample(10, glm::vec3(0)), surfaceSample(10, glm::vec3(0)),
+        surfaceSample(10, glm::vec3(0))}},
       {"0.1 m and 1e6 m", {surfaceSample(0.1f), surfaceSample(0.1f), surfaceSample(1e6f), surfaceSample(1e6f)}},
-      {"grazing plane", {surfaceSample(10 - 3 * footprint), surfaceSample(10 - footprint), surfaceSample(10 + footprint), surfaceSample(10 + 3 * footprint)}},
+      {"grazing plane",
+       {surfaceSample(10 - 3 * footprint), surfaceSample(10 - footprint), surfaceSample(10 + footprint),
+        surfaceSample(10 + 3 * footprint)}},
       {"z-fighting plates", {red, blue, red, blue}},
       {"sub-pixel wire", {surfaceSample(3), backgroundSample(), backgroundSample(), backgroundSample()}},
-      {"light on the surface", {surfaceSample(10, glm::normalize(glm::vec3(0.3f, 0, 1))), surfaceSample(10), surfaceSample(10.001f), surfaceSample(10)}},
+      {"light on the surface",
+       {surfaceSample(10, glm::normalize(glm::vec3(0.3f, 0, 1))), surfaceSample(10), surfaceSample(10.001f),
+        surfaceSample(10)}},
   };
 }
 
@@ -68,8 +79,9 @@ TEST(Robustness, EveryMethodOnEveryHardCaseIsFiniteAndNoWorseThanOff) {
                                  "hard cases", ".");
   frame.renderer = std::make_unique<host::Renderer>(frame.scene, kWidth, kHeight);
   const host::Camera camera = frame.scene.camera;
-  const std::vector<std::string> methods = {"off", "resolve", "resolve/front", "resolve/back", "resolve/fso", "resolve/mean",
-                                            "edge", "adaptive", "aggregate", "per-sample"};
+  const std::vector<std::string> methods = {"off",         "resolve",        "resolve/front", "resolve/back",
+                                            "resolve/fso", "resolve/window", "resolve/mean",  "edge",
+                                            "adaptive",    "aggregate",      "per-sample"};
   std::map<std::string, std::map<std::string, Cell>> matrix[2];
   const int sampleCounts[] = {2, 4};
   for (int n = 0; n < 2; ++n)
@@ -82,7 +94,7 @@ TEST(Robustness, EveryMethodOnEveryHardCaseIsFiniteAndNoWorseThanOff) {
         EXPECT_TRUE(hooks) << hooks.error().message;
         retroaa::Plugin& plugin = hooks.value()->plugin();
         fillGeometry(plugin, kWidth, kHeight, pixels);
-        EXPECT_TRUE(plugin.resolve({1.0f, 0.1f, 1000.0f}));
+        EXPECT_TRUE(plugin.resolve({verticalFovFor(1.0f, kWidth, kHeight), 0.1f, 1000.0f}));
         EXPECT_TRUE(plugin.shade([&](GLuint target) { frame.renderer->lightGBuffer(camera, target); }));
         return frame.read(frame.renderer->targets().lightTexture);
       };
@@ -105,7 +117,8 @@ TEST(Robustness, EveryMethodOnEveryHardCaseIsFiniteAndNoWorseThanOff) {
 
   std::ostringstream table;
   for (int n = 0; n < 2; ++n) {
-    table << "\n### N = " << sampleCounts[n] << " requested (" << (sampleCounts[n] == 2 ? "llvmpipe allocates 4" : "4") << ")\n\n| hard case |";
+    table << "\n### N = " << sampleCounts[n] << " requested (" << (sampleCounts[n] == 2 ? "llvmpipe allocates 4" : "4")
+          << ")\n\n| hard case |";
     for (const std::string& m : methods) table << " `" << m << "` |";
     table << "\n|---|";
     for (size_t i = 0; i < methods.size(); ++i) table << "---|";
@@ -119,12 +132,16 @@ TEST(Robustness, EveryMethodOnEveryHardCaseIsFiniteAndNoWorseThanOff) {
         const bool known = knownWorseThanOff(m, hardCase.name);
         char text[64];
         std::snprintf(text, sizeof text, " %s %.3f |",
-                      !(cell.finite && cell.nonNegative) ? "**FAIL**" : withinMargin ? "ok" : known ? "worse (known)" : "**FAIL**", cell.rms);
+                      !(cell.finite && cell.nonNegative) ? "**FAIL**"
+                      : withinMargin                     ? "ok"
+                      : known                            ? "worse (known)"
+                                                         : "**FAIL**",
+                      cell.rms);
         table << text;
         EXPECT_TRUE(cell.finite) << m << " / " << hardCase.name << " at N=" << sampleCounts[n];
         EXPECT_TRUE(cell.nonNegative) << m << " / " << hardCase.name << " at N=" << sampleCounts[n];
-        EXPECT_EQ(withinMargin, !known) << m << " / " << hardCase.name << " at N=" << sampleCounts[n] << ": RMS " << cell.rms
-                                        << " against off's " << off;
+        EXPECT_EQ(withinMargin, !known) << m << " / " << hardCase.name << " at N=" << sampleCounts[n] << ": RMS "
+                                        << cell.rms << " against off's " << off;
       }
       table << "\n";
     }

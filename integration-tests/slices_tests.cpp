@@ -108,7 +108,7 @@ TEST(Slices, WithoutStencilExportTheResultIsTheSame) {
   struct Hooks : host::FrameHooks {
     retroaa::Plugin* plugin;
     GLuint modelPassFramebuffer(GLuint) override { return plugin->geometryFramebuffer(); }
-    void modelPassEnd(const host::FrameView& v) override { plugin->resolve({v.horizontalFovRadians}); }
+    void modelPassEnd(const host::FrameView& v) override { plugin->resolve({v.verticalFovRadians}); }
     void lighting(const host::LightingPass& pass, GLuint) override { plugin->shade([&](GLuint t) { pass(t); }); }
   } hooks;
   hooks.plugin = plugin.value().get();

@@ -3,8 +3,8 @@
 #include "commands.h"
 #include "depth_codec.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <sys/wait.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cstdio>
 
@@ -17,7 +17,10 @@ host::HeadlessContext& context() {
 
 std::string testDataPath(const std::string& relative) { return std::string(RETROAA_TEST_DATA) + "/" + relative; }
 
-PatchedHost::PatchedHost(const std::string& scenePath, int width, int height) : scene(host::loadScene(scenePath)) {
+PatchedHost::PatchedHost(const std::string& scenePath, int width, int height)
+    : PatchedHost(host::loadScene(scenePath), width, height) {}
+
+PatchedHost::PatchedHost(host::Scene loaded, int width, int height) : scene(std::move(loaded)) {
   context();
   renderer = std::make_unique<host::Renderer>(scene, width, height);
   auto created = patch::RetroaaHooks::create(renderer->targets(), retroaa::Config{});
@@ -35,6 +38,10 @@ app::DisplayImage PatchedHost::render(const std::string& methodSpec, const retro
 
 host::GroundTruth PatchedHost::groundTruth(int samplesPerAxis) {
   return host::renderGroundTruth(*renderer, scene.camera, samplesPerAxis);
+}
+
+float verticalFovFor(float horizontalFov, int width, int height) {
+  return 2.0f * std::atan(std::tan(horizontalFov * 0.5f) * float(height) / float(width));
 }
 
 glm::ivec2 projectToPixel(const host::Camera& camera, glm::vec3 world, int width, int height) {
@@ -59,8 +66,9 @@ SyntheticSample surfaceSample(float depth, glm::vec3 normal, glm::vec3 albedo) {
 
 namespace {
 GLuint fullscreenVertexProgram() {
-  const char* vertex = "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
-                       " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
+  const char* vertex =
+      "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
+      " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
   return glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertex);
 }
 
@@ -93,7 +101,8 @@ void drawWithFragment(const char* fragmentSource, const std::function<void(GLuin
 }
 }  // namespace
 
-int fillGeometry(retroaa::Plugin& plugin, int width, int height, const std::vector<std::vector<SyntheticSample>>& pixels) {
+int fillGeometry(retroaa::Plugin& plugin, int width, int height,
+                 const std::vector<std::vector<SyntheticSample>>& pixels) {
   const int n = plugin.stats().samples;
   std::vector<SyntheticSample> data(size_t(width) * height * n, backgroundSample());
   for (size_t p = 0; p < pixels.size() && p < size_t(width) * height; ++p)
@@ -149,7 +158,8 @@ void main() { outLight = vec4(texelFetch(uColor, ivec2(gl_FragCoord.xy), 0).rgb,
 SyntheticFrame::SyntheticFrame(int w, int h) : width(w), height(h) {
   context();
   scene = host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
-    "materials": [{"name": "m"}], "objects": []})", "empty", ".");
+    "materials": [{"name": "m"}], "objects": []})",
+                           "empty", ".");
   renderer = std::make_unique<host::Renderer>(scene, width, height);
 }
 

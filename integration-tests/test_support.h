@@ -28,6 +28,7 @@ struct PatchedHost {
   std::unique_ptr<host::Renderer> renderer;
   std::unique_ptr<patch::RetroaaHooks> hooks;
   PatchedHost(const std::string& scenePath, int width, int height);
+  PatchedHost(host::Scene scene, int width, int height);
   // Renders the scene camera with a method spec (see app::parseMethodSpec) and returns the display.
   app::DisplayImage render(const std::string& methodSpec, const retroaa::Config& base = {});
   host::GroundTruth groundTruth(int samplesPerAxis);
@@ -46,7 +47,8 @@ SyntheticSample surfaceSample(float depthMetres, glm::vec3 normal = {0, 0, 1}, g
 // them from a buffer). `pixels[y * width + x]` lists one pixel's samples (GL's bottom-up rows); pixels
 // past the list are background. A list shorter or longer than the allocated sample count is stretched
 // over it, keeping its proportions. Returns the allocated sample count.
-int fillGeometry(retroaa::Plugin& plugin, int width, int height, const std::vector<std::vector<SyntheticSample>>& pixels);
+int fillGeometry(retroaa::Plugin& plugin, int width, int height,
+                 const std::vector<std::vector<SyntheticSample>>& pixels);
 
 // A stand-in for a host lighting pass: light = albedo, read from the host's colour attachment.
 void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height);
@@ -72,6 +74,9 @@ struct CliRun {
 };
 CliRun runCli(const std::string& arguments);
 CliRun runCommand(const std::string& command);  // any shell command
+
+// The vertical field of view (FrameInfo's) whose horizontal one at width × height is `horizontalFov`.
+float verticalFovFor(float horizontalFov, int width, int height);
 
 // The pixel (top-down image coordinates) where a world point lands for the scene camera.
 glm::ivec2 projectToPixel(const host::Camera& camera, glm::vec3 world, int width, int height);

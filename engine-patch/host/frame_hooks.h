@@ -12,18 +12,19 @@ namespace host {
 // The host's render targets, handed out whenever they are (re)created.
 struct HostTargets {
   int width = 0, height = 0;
-  GLuint gbufferFramebuffer = 0;  // attachments 0..4 + depth-stencil
+  GLuint gbufferFramebuffer = 0;                                           // attachments 0..4 + depth-stencil
   GLuint color = 0, position = 0, normal = 0, specular = 0, emissive = 0;  // textures
-  GLuint depthStencil = 0;        // DEPTH24_STENCIL8 texture
-  GLuint lightFramebuffer = 0, lightTexture = 0;  // RGBA16F light accumulation ("composite")
-  GLuint displayFramebuffer = 0, displayTexture = 0;  // RGBA8 tonemapped output
-  bool logarithmicDepth = true;   // depth buffer holds log2(d/near)/log2(far/near), else perspective depth
+  GLuint depthStencil = 0;                                                 // DEPTH24_STENCIL8 texture
+  GLuint lightFramebuffer = 0, lightTexture = 0;                           // RGBA16F light accumulation ("composite")
+  GLuint displayFramebuffer = 0, displayTexture = 0;                       // RGBA8 tonemapped output
+  bool logarithmicDepth = true;        // depth buffer holds log2(d/near)/log2(far/near), else perspective depth
+  bool fsoCompressedPosition = false;  // position z is FSO's compressed view z (fso_z), else depth_codec
+  float globalFarZ = 2.0e6f;           // metres: FSO's GLOBAL_FAR_Z for fso_z (the camera's far plane)
 };
 
 // Camera facts a resolve needs for its closeness test, per frame.
 struct FrameView {
-  float horizontalFovRadians = 1.0f;
-  float verticalFovRadians = 1.0f;
+  float verticalFovRadians = 1.0f;  // the projection's (FreeSpace Open's Proj_fov)
   int width = 0, height = 0;
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres
 };

@@ -1,6 +1,7 @@
 #include "renderer.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -15,9 +16,13 @@ void setUniform(GLint location, glm::vec2 v) { glUniform2fv(location, 1, glm::va
 void setUniform(GLint location, float v) { glUniform1f(location, v); }
 void setUniform(GLint location, int v) { glUniform1i(location, v); }
 
-// Field of view along x for a vertical fov and aspect ratio.
-float horizontalFov(float verticalFov, int width, int height) {
-  return 2.0f * std::atan(std::tan(verticalFov * 0.5f) * float(width) / float(height));
+// The position-depth encoding's #defines, for every program that includes depth_codec.glsl.
+std::string positionDepthDefines(const Scene& scene) {
+  if (scene.positionDepth != PositionDepth::FsoCompressed) return "";
+  char text[96];  // FSO injects GLOBAL_FAR_Z the same way, as a literal
+  std::snprintf(text, sizeof text, "#define FSO_COMPRESSED_Z 1\n#define GLOBAL_FAR_Z %.9e\n",
+                double(scene.camera.farPlane));
+  return text;
 }
 
 }  // namespace
@@ -25,11 +30,12 @@ float horizontalFov(float verticalFov, int width, int height) {
 Renderer::Renderer(const Scene& scene, int width, int height)
     : scene_(scene),
       modelProgram_("shaders/model.vert", "shaders/model.frag",
-                    scene.depthBuffer == DepthBuffer::Logarithmic ? "#define LOGARITHMIC_DEPTH 1\n" : ""),
-      backgroundProgram_("shaders/fullscreen.vert", "shaders/background.frag"),
-      ambientProgram_("shaders/fullscreen.vert", "shaders/light_ambient_directional.frag"),
-      pointProgram_("shaders/light_volume.vert", "shaders/light_point.frag"),
-      emissiveProgram_("shaders/fullscreen.vert", "shaders/emissive.frag"),
+                    positionDepthDefines(scene) +
+                        (scene.depthBuffer == DepthBuffer::Logarithmic ? "#define LOGARITHMIC_DEPTH 1\n" : "")),
+      backgroundProgram_("shaders/fullscreen.vert", "shaders/background.frag", positionDepthDefines(scene)),
+      ambientProgram_("shaders/fullscreen.vert", "shaders/light_ambient_directional.frag", positionDepthDefines(scene)),
+      pointProgram_("shaders/light_volume.vert", "shaders/light_point.frag", positionDepthDefines(scene)),
+      emissiveProgram_("shaders/fullscreen.vert", "shaders/emissive.frag", positionDepthDefines(scene)),
       tonemapProgram_("shaders/fullscreen.vert", "shaders/tonemap.frag") {
   for (const Object& object : scene_.objects) meshes_.push_back(upload(object.mesh));
   // Light volumes must contain their sphere: a 16-segment sphere's faces sit inside radius 1, so
@@ -100,9 +106,22 @@ void Renderer::createTargets(int width, int height) {
   checkFramebuffer(lightFramebuffer_, "host.light");
   checkFramebuffer(displayFramebuffer_, "host.display");
 
-  targets_ = HostTargets{width,       height,      gbufferFramebuffer_, color_,   position_, normal_,
-                         specular_,   emissive_,   depthStencil_,       lightFramebuffer_,   light_,
-                         displayFramebuffer_, display_, scene_.depthBuffer == DepthBuffer::Logarithmic};
+  targets_ = HostTargets{width,
+                         height,
+                         gbufferFramebuffer_,
+                         color_,
+                         position_,
+                         normal_,
+                         specular_,
+                         emissive_,
+                         depthStencil_,
+                         lightFramebuffer_,
+                         light_,
+                         displayFramebuffer_,
+                         display_,
+                         scene_.depthBuffer == DepthBuffer::Logarithmic,
+                         scene_.positionDepth == PositionDepth::FsoCompressed,
+                         scene_.camera.farPlane};
   hooks_->targetsCreated(targets_);
 }
 
@@ -155,7 +174,6 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   // gr_opengl_deferred_lighting_msaa() + gr_opengl_deferred_lighting_end()
   FrameView frameView;
   frameView.verticalFovRadians = glm::radians(camera.fovYDegrees);
-  frameView.horizontalFovRadians = horizontalFov(frameView.verticalFovRadians, width, height);
   frameView.width = width;
   frameView.height = height;
   frameView.nearPlane = camera.nearPlane;
@@ -319,8 +337,7 @@ std::vector<T> readTopDown(GLuint texture, int width, int height, GLenum format,
   // GL rows run bottom-up; images run top-down.
   const size_t row = size_t(width) * 4;
   for (int y = 0; y < height / 2; ++y)
-    std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row,
-                     pixels.begin() + (height - 1 - y) * row);
+    std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row, pixels.begin() + (height - 1 - y) * row);
   return pixels;
 }
 }  // namespace

@@ -229,7 +229,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   }
   const Reader root(fileName, document, "$");
   root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient", "sky_color",
-                     "star_density", "exposure", "shading", "depth_buffer", "comment"});
+                     "star_density", "exposure", "shading", "depth_buffer", "position_depth", "comment"});
   Scene scene;
   scene.name = root.has("name") ? root.child("name").string() : fileName;
   if (!root.has("camera")) root.fail("missing required key 'camera'");
@@ -256,6 +256,19 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
       scene.depthBuffer = DepthBuffer::Perspective;
     else
       root.child("depth_buffer").fail("unknown depth buffer '" + depth + "' (allowed: logarithmic, perspective)");
+  }
+  if (root.has("position_depth")) {
+    const std::string encoding = root.child("position_depth").string();
+    if (encoding == "log-above-knee")
+      scene.positionDepth = PositionDepth::LogAboveKnee;
+    else if (encoding == "fso-compressed")
+      scene.positionDepth = PositionDepth::FsoCompressed;
+    else
+      root.child("position_depth")
+          .fail("unknown position depth '" + encoding + "' (allowed: log-above-knee, fso-compressed)");
+    // FSO's far segment divides by (100 000 m − GLOBAL_FAR_Z), the far plane.
+    if (scene.positionDepth == PositionDepth::FsoCompressed && !(scene.camera.farPlane > 100000.0f))
+      root.child("position_depth").fail("fso-compressed needs a camera far plane beyond 100000 m (FSO's GLOBAL_FAR_Z)");
   }
   if (!root.has("materials")) root.fail("missing required key 'materials'");
   const Reader materials = root.child("materials");

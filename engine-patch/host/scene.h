@@ -73,6 +73,10 @@ enum class ShadingModel { BlinnPhong, GGX };
 // ranges) or the rasteriser's own perspective depth (FreeSpace Open's; interpolated per sample).
 enum class DepthBuffer { Logarithmic, Perspective };
 
+// How the host stores view depth in its position attachment's z: this repository's identity-then-log
+// encoding (depth_codec.h), or FreeSpace Open's current compressed view z (fso_z, z-compress.sdr).
+enum class PositionDepth { LogAboveKnee, FsoCompressed };
+
 struct Scene {
   std::string name;
   Camera camera;
@@ -86,6 +90,7 @@ struct Scene {
   float exposure = 1.0f;
   ShadingModel shading = ShadingModel::BlinnPhong;
   DepthBuffer depthBuffer = DepthBuffer::Logarithmic;
+  PositionDepth positionDepth = PositionDepth::LogAboveKnee;
   size_t triangleCount() const;
 };
 

@@ -17,13 +17,18 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
                         {AttachmentRole::Specular, GL_RGBA8, targets.specular},
                         {AttachmentRole::Emissive, GL_RGBA16F, targets.emissive}};
   layout.depthChannel = 2;
-  layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::LogAboveKnee;
-  layout.depthEncoding.knee = host::depth_codec::kKnee;
-  layout.depthEncoding.backgroundAbove = host::depth_codec::kBackgroundThreshold;
+  if (targets.fsoCompressedPosition) {  // FreeSpace Open's own z-compress.sdr
+    layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::FsoCompressedViewZ;
+    layout.depthEncoding.farDistance = targets.globalFarZ;
+  } else {
+    layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::LogAboveKnee;
+    layout.depthEncoding.knee = host::depth_codec::kKnee;
+    layout.depthEncoding.backgroundAbove = host::depth_codec::kBackgroundThreshold;
+  }
   // The host's Blinn-Phong exponent is exp2(gloss · 10 + 1) (lighting_common.glsl).
   layout.glossEncoding = {true, 10.0f, 1.0f};
-  layout.depthBufferEncoding = targets.logarithmicDepth ? retroaa::DepthBufferEncoding::Logarithmic
-                                                        : retroaa::DepthBufferEncoding::Perspective;
+  layout.depthBufferEncoding =
+      targets.logarithmicDepth ? retroaa::DepthBufferEncoding::Logarithmic : retroaa::DepthBufferEncoding::Perspective;
   layout.gbufferFramebuffer = targets.gbufferFramebuffer;
   layout.depthStencilTexture = targets.depthStencil;
   layout.lightFramebuffer = targets.lightFramebuffer;
@@ -34,8 +39,8 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
 }
 
 retroaa::Result<std::unique_ptr<RetroaaHooks>> RetroaaHooks::create(const host::HostTargets& targets,
-                                                                     const retroaa::Config& config,
-                                                                     uint32_t disabledFeatures, int maxSamplesLimit) {
+                                                                    const retroaa::Config& config,
+                                                                    uint32_t disabledFeatures, int maxSamplesLimit) {
   retroaa::Description description;
   description.config = config;
   description.disabledFeatures = disabledFeatures;
@@ -68,7 +73,7 @@ GLuint RetroaaHooks::modelPassFramebuffer(GLuint) { return plugin_->geometryFram
 // gr_opengl_deferred_lighting_msaa(): the depth-aware resolve replaces FSO's.
 void RetroaaHooks::modelPassEnd(const host::FrameView& view) {
   retroaa::FrameInfo frame;
-  frame.horizontalFovRadians = view.horizontalFovRadians;
+  frame.verticalFovRadians = view.verticalFovRadians;  // FSO passes its projection's fov
   frame.nearPlane = view.nearPlane;
   frame.farPlane = view.farPlane;
   report(plugin_->resolve(frame));

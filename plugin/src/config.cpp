@@ -96,8 +96,9 @@ const char* methodNames() {
 }
 constexpr EdgeDetector kEdgeDetectors[] = {EdgeDetector::Depth,    EdgeDetector::Plane,    EdgeDetector::Normal,
                                            EdgeDetector::Material, EdgeDetector::Coverage, EdgeDetector::EveryPixel};
-constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front, ResolveWeighting::Back,
-                                            ResolveWeighting::Fso, ResolveWeighting::Mean};
+constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
+                                            ResolveWeighting::Back,   ResolveWeighting::Fso,
+                                            ResolveWeighting::Mean,   ResolveWeighting::Window};
 constexpr FxaaQuality kFxaaQualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
 
 struct Setter {
@@ -129,7 +130,7 @@ const std::vector<Setter>& setters() {
          return invalid("config key 'samples': unsupported sample count " + quoted(v) + " (allowed: 1, 2, 4, 8, 16)");
        },
        [](const Config& c) { return std::to_string(c.samples); }},
-      {{"resolve_weighting", "median", "median, front, back, fso, mean",
+      {{"resolve_weighting", "median", "median, front, back, fso, mean, window",
         "how resolve weights a pixel's samples; free per frame"},
        [](Config& c, const std::string& v) {
          return parseEnum("resolve_weighting", v, kWeightings, c.resolveWeighting);
@@ -283,6 +284,7 @@ const char* toString(ResolveWeighting weighting) {
     case ResolveWeighting::Back: return "back";
     case ResolveWeighting::Fso: return "fso";
     case ResolveWeighting::Mean: return "mean";
+    case ResolveWeighting::Window: return "window";
   }
   return "?";
 }

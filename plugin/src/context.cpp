@@ -12,7 +12,9 @@ void PluginContext::warn(const std::string& message) {
 }
 
 float PluginContext::footprintTan(const FrameInfo& frame) const {
-  return std::tan(frame.horizontalFovRadians / float(layout.width));
+  const float aspect = float(layout.width) / float(layout.height);
+  const float horizontalFov = 2.0f * std::atan(std::tan(frame.verticalFovRadians * 0.5f) * aspect);
+  return std::tan(horizontalFov / float(layout.width));
 }
 
 void PluginContext::drawFullscreen() const {

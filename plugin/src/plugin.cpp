@@ -7,6 +7,7 @@
 #include "technique.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace retroaa {
 
@@ -27,6 +28,13 @@ Status validateLayout(const GBufferLayout& layout) {
   if (positions != 1)
     return invalid("layout needs exactly one ViewPosition attachment (has " + std::to_string(positions) + ")");
   if (layout.depthChannel < 0 || layout.depthChannel > 3) return invalid("depthChannel must be 0..3");
+  const DepthEncoding& depth = layout.depthEncoding;
+  if (depth.kind == DepthEncoding::Kind::LogAboveKnee && !(depth.knee > 0 && std::isfinite(depth.knee)))
+    return invalid("depthEncoding.knee must be a positive number of metres");
+  // FSO's last segment divides by (100 000 − GLOBAL_FAR_Z): a far distance at or below 1e5 m has none.
+  if (depth.kind == DepthEncoding::Kind::FsoCompressedViewZ &&
+      !(depth.farDistance > 100000.0f && std::isfinite(depth.farDistance)))
+    return invalid("depthEncoding.farDistance must be above 100000 m for FsoCompressedViewZ (FSO's GLOBAL_FAR_Z)");
   if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer || !layout.lightTexture ||
       !layout.displayFramebuffer || !layout.displayTexture)
     return invalid("layout is missing a host framebuffer or texture (gbuffer, depth-stencil, light, display)");

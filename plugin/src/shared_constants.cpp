@@ -20,6 +20,7 @@ const std::string& sharedConstantDefines() {
     d += defineLine("WEIGHTING_BACK", int(ResolveWeighting::Back));
     d += defineLine("WEIGHTING_FSO", int(ResolveWeighting::Fso));
     d += defineLine("WEIGHTING_MEAN", int(ResolveWeighting::Mean));
+    d += defineLine("WEIGHTING_WINDOW", int(ResolveWeighting::Window));
     d += defineLine("DETECTOR_DEPTH", int(EdgeDetector::Depth));
     d += defineLine("DETECTOR_PLANE", int(EdgeDetector::Plane));
     d += defineLine("DETECTOR_NORMAL", int(EdgeDetector::Normal));

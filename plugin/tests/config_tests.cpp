@@ -156,7 +156,7 @@ TEST(BudgetController, IgnoresNonsenseAndStaysInBounds) {
 
 TEST(Config, EnumeratedKeysListTheirValuesAndReadBack) {
   const std::vector<std::string> weightings = settingValues("resolve_weighting");
-  ASSERT_EQ(weightings.size(), 5u);
+  ASSERT_EQ(weightings.size(), 6u);
   for (const std::string& value : weightings) {
     Config config;
     ASSERT_TRUE(applySetting(config, "resolve_weighting", value)) << value;

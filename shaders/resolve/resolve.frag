@@ -1,6 +1,6 @@
 #version 450 core
 // Depth-aware MSAA resolve (Magnussen, "Intra-Model Smoothing Using Depth Aware MSAA for Deferred
-// Rendering Pipelines"; FreeSpace Open's shipped variant as WEIGHTING_FSO).
+// Rendering Pipelines"), and FreeSpace Open's own resolve (msaa-f.sdr) as WEIGHTING_FSO.
 //
 // Per pixel: pick a reference sample by depth, weight every sample by how close its depth is to the
 // reference (Eq. 1: |d1 - d2| < min(d1, d2) * tan(hfov / width) * c), and write the weighted mean of
@@ -8,35 +8,52 @@
 // together (intra-model aliasing); samples of other surfaces never mix in, so no pixel is lit at a
 // position between two surfaces.
 //
+// WEIGHTING_FSO computes what FreeSpace Open's shader computes (docs/methods/resolve.md lists the
+// facts and the two deviations: corrupt samples are dropped, background normals stay unnormalised).
 #include "common/gbuffer.glsl"
 
 uniform int uWeighting;          // one of WEIGHTING_* (injected from the C++ enum)
 uniform float uFootprintTan;     // tan(hfov / width): Eq. 1's pixel footprint per metre
-uniform float uFsoFootprintTan;  // tan(hfov / height): FreeSpace Open's footprint
+uniform float uFsoFootprintTan;  // tan(vfov / height): FreeSpace Open's texelWidthFactor
 uniform float uCloseness;        // c of Eq. 1
 
-const float kFsoWindow = 2.5;  // FreeSpace Open's window, in pixel footprints
-const float kInfinity = 1.0 / 0.0;
+const float kWindowFull = 2.5;  // WEIGHTING_WINDOW: full weight within this many footprints,
+const float kWindowEnd = 5.0;   // none past this many
 
-// A smooth ramp from 0 at e0 to 1 at e1, for either order of the edges. GLSL's smoothstep is undefined
-// for e0 >= e1, which FreeSpace Open's falling edge relies on; this is the ramp it intends.
-float ramp(float e0, float e1, float x) {
+// GLSL's smoothstep as Mesa and NVIDIA evaluate it, t = clamp((x - e0) / (e1 - e0)), for either order
+// of the edges: GLSL leaves e0 >= e1 undefined, and FreeSpace Open's second edge pair is reversed.
+float smoothRamp(float e0, float e1, float x) {
   float t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
   return t * t * (3.0 - 2.0 * t);
 }
 
+// FreeSpace Open's weight of a sample at view z `z` around its median view z `dist` (both negative in
+// front, 0 for background). In footprints u behind the median it is S((u + 2.5) / 7.5) · S((5 - u) / 2.5):
+// 0.26 at the median itself, 0.76 at its peak 2.7 behind, 0 nearer than -2.5 or farther than 5.
+float fsoWeight(float dist, float z) {
+  if (dist >= -0.001) return z >= -0.001 ? 1.0 : 0.0;  // a background median keeps background only
+  float footprint = dist * uFsoFootprintTan;
+  return smoothRamp(dist + footprint * 5.0, dist + footprint * 2.5, z) *
+         smoothRamp(dist - footprint * 2.5, dist + footprint * 5.0, z);
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+  bool fso = uWeighting == WEIGHTING_FSO;
   float distance[SAMPLES];  // metres in front of the camera; +inf for background
   bool usable[SAMPLES];     // false for samples holding NaN or Inf in any attachment
-  int order[SAMPLES];       // usable samples sorted near to far
+  int order[SAMPLES];       // usable samples sorted near to far; background farthest, but nearest for
+                            // FSO, whose background has view z 0
+  float sortKey[SAMPLES];  // precomputed: the same ternary inside the loop's condition sorted wrongly
+                           // under Mesa 22.3's llvmpipe
   int usableCount = 0;
   for (int s = 0; s < SAMPLES; ++s) {
     usable[s] = sampleIsFinite(pixel, s);
     distance[s] = sampleDistance(pixel, s);
+    sortKey[s] = fso && isinf(distance[s]) ? 0.0 : distance[s];
     if (!usable[s]) continue;
     int i = usableCount++;
-    while (i > 0 && distance[order[i - 1]] > distance[s]) {  // insertion sort, N <= 16
+    while (i > 0 && sortKey[order[i - 1]] > sortKey[s]) {  // insertion sort, N <= 16
       order[i] = order[i - 1];
       --i;
     }
@@ -46,7 +63,7 @@ void main() {
   vec4 values[ATTACHMENT_COUNT];
   if (usableCount == 0) {  // every sample corrupt: write an empty background pixel
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
-    values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = uBackgroundAbove;
+    values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = backgroundStoredDepth();
     STORE_OUTPUTS(values);
     gl_FragDepth = 1.0;
     return;
@@ -57,59 +74,67 @@ void main() {
     reference = order[0];
   else if (uWeighting == WEIGHTING_BACK)
     reference = order[usableCount - 1];
-  else if (uWeighting == WEIGHTING_FSO)
-    reference = order[usableCount - 1 - (usableCount - 1) / 2];  // lower median of ascending view z
+  else if (fso)  // dists[1] of 4, [3] of 8, [7] of 16 in ascending view z; other counts: front first
+    reference = (SAMPLES == 4 || SAMPLES == 8 || SAMPLES == 16) ? order[usableCount / 2] : order[0];
+  else if (uWeighting == WEIGHTING_WINDOW)
+    reference = order[usableCount - 1 - (usableCount - 1) / 2];  // the farther middle sample
   else
     reference = order[(usableCount - 1) / 2];  // a real middle sample: the nearer of two for even N
   float dRef = distance[reference];
-  bool referenceIsBackground = isinf(dRef);
+  float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
+  bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
 
   float weight[SAMPLES];
   float weightSum = 0.0;
+  int contributors = 0, lastContributor = reference;
   for (int s = 0; s < SAMPLES; ++s) {
     float w = 0.0;
     if (usable[s]) {
       bool background = isinf(distance[s]);
-      if (referenceIsBackground || background) {
+      if (fso) {
+        w = fsoWeight(referenceViewZ, background ? 0.0 : -distance[s]);
+      } else if (referenceIsBackground || background) {
         w = (referenceIsBackground && background) ? 1.0 : 0.0;
       } else if (uWeighting == WEIGHTING_MEAN) {
         w = 1.0;
-      } else if (uWeighting == WEIGHTING_FSO) {
-        float window = kFsoWindow * dRef * uFsoFootprintTan;
-        w = ramp(dRef - 2.0 * window, dRef - window, distance[s]) * ramp(dRef + 2.0 * window, dRef + window, distance[s]);
+      } else if (uWeighting == WEIGHTING_WINDOW) {
+        float footprint = dRef * uFootprintTan;
+        w = smoothRamp(dRef - kWindowEnd * footprint, dRef - kWindowFull * footprint, distance[s]) *
+            smoothRamp(dRef + kWindowEnd * footprint, dRef + kWindowFull * footprint, distance[s]);
       } else {
         w = abs(distance[s] - dRef) <= min(distance[s], dRef) * uFootprintTan * uCloseness ? 1.0 : 0.0;
       }
+      if (s == reference && !fso) w = 1.0;  // ours always count the reference (c = 0 keeps only its depth)
     }
-    if (s == reference) w = 1.0;  // the reference always counts (c = 0 keeps only its depth)
     weight[s] = w;
     weightSum += w;
+    if (w > 0.0) ++contributors, lastContributor = s;
   }
 
-  int contributors = 0;
-  for (int s = 0; s < SAMPLES; ++s) contributors += weight[s] > 0.0 ? 1 : 0;
   if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, reference);
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, lastContributor);
 #if NORMAL_ATTACHMENT >= 0
     values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT]);
 #endif
     STORE_OUTPUTS(values);
-    gl_FragDepth = FETCH(uDepthBuffer, pixel, reference).r;
+    gl_FragDepth = FETCH(uDepthBuffer, pixel, lastContributor).r;
     return;
   }
 
   float depthSum = 0.0;
-  float depthBuffer = 0.0;
+  float depthBufferMean = 0.0, depthBufferMax = 0.0;
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
   for (int s = 0; s < SAMPLES; ++s) {
     float w = weight[s] / weightSum;
     if (w <= 0.0) continue;
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += w * FETCH(uAttachments[a], pixel, s);
     if (!referenceIsBackground) depthSum += w * distance[s];
-    if (referenceIsBackground) depthBuffer = max(depthBuffer, FETCH(uDepthBuffer, pixel, s).r);
+    float depthBuffer = FETCH(uDepthBuffer, pixel, s).r;
+    depthBufferMean += w * depthBuffer;
+    depthBufferMax = max(depthBufferMax, depthBuffer);
   }
 
-  // Depth is averaged in metres and re-encoded: the encoding is not linear above its knee.
+  // Depth is averaged in metres and re-encoded: no encoding but `linear` is linear.
   if (!referenceIsBackground) values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = encodeDepth(depthSum);
 #if NORMAL_ATTACHMENT >= 0
   vec3 normal = values[NORMAL_ATTACHMENT].xyz;
@@ -122,7 +147,11 @@ void main() {
   if (!referenceIsBackground) values[NORMAL_ATTACHMENT].xyz = normal / len;
 #endif
   STORE_OUTPUTS(values);
-  // The reference sample's depth-buffer value (encoding-agnostic), so forward passes after lighting
-  // depth-test against the surface that was lit.
-  gl_FragDepth = referenceIsBackground ? depthBuffer : FETCH(uDepthBuffer, pixel, reference).r;
+  // FSO writes the weighted mean of the samples' depth-buffer values. Ours write the reference sample's
+  // (encoding-agnostic; the farthest for background), so that forward passes after lighting
+  // depth-test against the very surface that was lit.
+  if (fso)
+    gl_FragDepth = depthBufferMean;
+  else
+    gl_FragDepth = referenceIsBackground ? depthBufferMax : FETCH(uDepthBuffer, pixel, reference).r;
 }

@@ -40,8 +40,9 @@ enum class ResolveWeighting : uint8_t {
   Median,  // Magnussen: samples close (Eq. 1) to the median depth sample; the default
   Front,   // samples close to the nearest sample
   Back,    // samples close to the farthest sample (background counts as farthest)
-  Fso,     // what FreeSpace Open ships: smoothstep window around the lower median of view z
+  Fso,     // FreeSpace Open's msaa-f.sdr as it runs: its median, its (asymmetric) smoothstep weights
   Mean,    // naive average of all geometry samples: the failure mode, kept for comparison
+  Window,  // a symmetric smooth window: full weight within ±2.5 footprints of the median, none past ±5
 };
 
 enum class FxaaQuality : uint8_t {
@@ -160,7 +161,7 @@ RETROAA_API Status applySettingsList(Config& config, const std::string& list, co
 // `-aa_preset 0..6` (0-2 FXAA low/medium/high; 3-6 are SMAA in FSO, which retroaa maps to FXAA high
 // with a warning). `warnings` receives what was adjusted.
 RETROAA_API Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
-                    std::vector<std::string>& warnings);
+                                std::vector<std::string>& warnings);
 // Checks every field of a config built in code with the rules the text parser applies to the same key
 // (ranges, allowed values, known enum values). Errors are InvalidConfig naming the key and value.
 // Plugin::create and reconfigure call it.

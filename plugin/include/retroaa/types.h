@@ -28,10 +28,16 @@ struct DepthEncoding {
   enum class Kind : uint8_t {
     Linear,        // stored = d
     LogAboveKnee,  // stored = d below `knee`, knee·(1 + log2(d/knee)) above it
+    // FreeSpace Open's compressed view z (z-compress.sdr, since FSO PR #7245): stored =
+    // compress_depth_value(-d), piecewise linear below 10 m and exponential in segments to 100, 1570,
+    // 3000, 10 000, 100 000 m and `farDistance` (FSO's GLOBAL_FAR_Z); positive near, negative far.
+    // Background is what FSO's resolve treats as background: decoded d ≤ 0.001 m (FSO clears to 0).
+    FsoCompressedViewZ,
   };
   Kind kind = Kind::Linear;
-  float knee = 8192.0f;              // metres
-  float backgroundAbove = 65280.0f;  // stored values at or above this mark "no geometry"
+  float knee = 8192.0f;              // metres (LogAboveKnee)
+  float backgroundAbove = 65280.0f;  // stored values at or above this mark "no geometry" (Linear, LogAboveKnee)
+  float farDistance = 1e10f;         // metres, FSO's GLOBAL_FAR_Z = Max_draw_distance (FsoCompressedViewZ; > 1e5)
 };
 
 // How the host maps its gloss channel (NormalGloss.w) to a specular exponent; retroaa's aggregates
@@ -88,9 +94,11 @@ struct Description {
   int maxSamplesLimit = 0;        // treat GL_MAX_SAMPLES as at most this (0: the context's own; 1: no MSAA)
 };
 
-// Per-frame camera facts for the closeness test.
+// Per-frame camera facts for the closeness tests.
 struct FrameInfo {
-  float horizontalFovRadians = 1.0f;
+  // The projection's vertical field of view (what FreeSpace Open passes its MSAA resolve as `fov`).
+  // Eq. 1's pixel footprint uses the horizontal one, derived from this and the layout's aspect ratio.
+  float verticalFovRadians = 1.0f;
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres, for DepthBufferEncoding
 };
 

@@ -3,6 +3,7 @@
 #include "../shared_constants.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace retroaa {
@@ -43,6 +44,13 @@ int findRole(const GBufferLayout& layout, AttachmentRole role) {
     if (layout.attachments[i].role == role) return static_cast<int>(i);
   return -1;
 }
+// FSO's shaders get GLOBAL_FAR_Z as a #define; ours too, printed so that it reads back exactly.
+std::string fsoFarDefine(const DepthEncoding& encoding) {
+  if (encoding.kind != DepthEncoding::Kind::FsoCompressedViewZ) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "#define FSO_GLOBAL_FAR_Z %.9e\n", double(encoding.farDistance));
+  return text;
+}
 }  // namespace
 
 std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOutputs) const {
@@ -54,7 +62,7 @@ std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOut
                   defineLine("ALBEDO_ATTACHMENT", findRole(layout, AttachmentRole::Albedo)) +
                   defineLine("SPECULAR_ATTACHMENT", findRole(layout, AttachmentRole::Specular)) +
                   defineLine("DEPTH_CHANNEL", layout.depthChannel) +
-                  defineLine("DEPTH_ENCODING", layout.depthEncoding.kind == DepthEncoding::Kind::LogAboveKnee);
+                  defineLine("DEPTH_ENCODING", int(layout.depthEncoding.kind)) + fsoFarDefine(layout.depthEncoding);
   std::string store = "#define STORE_OUTPUTS(v)";
   for (size_t i = 0; i < count && withOutputs; ++i) {
     d += "layout(location = " + std::to_string(i) + ") out vec4 out" + std::to_string(i) + ";\n";

@@ -37,7 +37,8 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
   glDepthMask(GL_TRUE);
   source.beginPass(program_, context, frame);
   program_.set("uWeighting", int(context.config.resolveWeighting));
-  program_.set("uFsoFootprintTan", std::tan(frame.horizontalFovRadians / float(layout.height)));
+  // FreeSpace Open's footprint: tan(fov / height) with the vertical fov it passes (msaa-f.sdr).
+  program_.set("uFsoFootprintTan", std::tan(frame.verticalFovRadians / float(layout.height)));
   program_.set("uCloseness", context.config.closeness);
   context.drawFullscreen();
   return Status::ok();
