@@ -103,6 +103,14 @@ TEST(SceneFile, ErrorsNameFileFieldAndExpectation) {
       sceneErrorOf(withObjects(R"({"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m", "colour": 1})"))
           .find("$.objects[0].colour: unknown key"),
       std::string::npos);
+  EXPECT_NE(sceneErrorOf(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "materials": [],
+                              "position_depth": "fp16"})")
+                .find("$.position_depth: unknown position depth 'fp16' (allowed: log-above-knee, fso-compressed)"),
+            std::string::npos);
+  EXPECT_NE(sceneErrorOf(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0], "far": 5000}, "materials": [],
+                              "position_depth": "fso-compressed"})")
+                .find("$.position_depth: fso-compressed needs a camera far plane beyond 100000 m"),
+            std::string::npos);
   const std::string missingModel = sceneErrorOf(withObjects(R"({"model": "missing.obj", "material": "m"})"));
   EXPECT_NE(missingModel.find("$.objects[0].model: "), std::string::npos) << missingModel;
   EXPECT_NE(missingModel.find("missing.obj' is not a regular file"), std::string::npos) << missingModel;

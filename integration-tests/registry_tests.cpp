@@ -260,3 +260,19 @@ TEST(PluginErrors, AnInconsistentLayoutIsInvalid) {
   ASSERT_FALSE(created);
   expectError(created.error(), retroaa::ErrorCode::InvalidLayout, "ViewPosition");
 }
+
+TEST(PluginErrors, DepthEncodingsOutsideTheirDomainAreInvalid) {
+  PatchedHost host("default", 32, 24);
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  description.layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::FsoCompressedViewZ;
+  description.layout.depthEncoding.farDistance = 100000.0f;  // FSO's last segment would divide by 0
+  auto created = retroaa::Plugin::create(description);
+  ASSERT_FALSE(created);
+  expectError(created.error(), retroaa::ErrorCode::InvalidLayout, "farDistance must be above 100000 m");
+  description.layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::LogAboveKnee;
+  description.layout.depthEncoding.knee = -1.0f;
+  created = retroaa::Plugin::create(description);
+  ASSERT_FALSE(created);
+  expectError(created.error(), retroaa::ErrorCode::InvalidLayout, "knee must be a positive number");
+}
