@@ -107,3 +107,26 @@ TEST(Tune, PresetsAreWhatTheTunerChoosesToday) {
     EXPECT_EQ(freshHeader, committedHeader) << name << ": run `make presets` and commit";
   }
 }
+
+TEST(Tune, SaysWhenTheDriverGrantedOtherSamplesThanTheChoiceAskedFor) {
+  const fs::path dir = fs::temp_directory_path() / "retroaa_tune_granted";
+  fs::remove_all(dir);
+  const CliRun run = runCli(
+      "tune --frames 1 --width 64 --height 48 --gt-samples 2 --candidates edge@samples=2 "
+      "--target edge_psnr_db=1 --cache " +
+      (dir / "cache.json").string() + " --out " + (dir / "tuned.cfg").string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(dir / "tuned.cfg.json");
+  const nlohmann::json result = nlohmann::json::parse(in);
+  EXPECT_EQ(result["requested_samples"], 2);
+  const int granted = result["granted_samples"];
+  std::ifstream configFile(dir / "tuned.cfg");
+  const std::string configText((std::istreambuf_iterator<char>(configFile)), std::istreambuf_iterator<char>());
+  const std::string note = "edge@samples=2 asked for 2 samples; this driver allocated " + std::to_string(granted);
+  if (granted != 2) {  // llvmpipe backs 2× with 4
+    EXPECT_NE(run.output.find("Note: " + note), std::string::npos) << run.output;
+    EXPECT_NE(configText.find("# " + note), std::string::npos) << configText;
+  } else {
+    EXPECT_EQ(run.output.find("Note: "), std::string::npos) << run.output;
+  }
+}

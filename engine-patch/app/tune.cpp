@@ -127,6 +127,10 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
                        sceneIndex + 1, options.scenes.size(), f + 1, frames, i + 1, specs.size(), ++measured, reused);
         }
         const json& e = entry[specs[i]];
+        const retroaa::Config asked = parseMethodSpec(specs[i], {}).config;
+        const retroaa::MethodInfo* row = retroaa::findMethod(asked.method);
+        points[i].requestedSamples = row && row->multisampled ? asked.samples : 1;
+        points[i].grantedSamples = e.value("samples", points[i].requestedSamples);
         std::map<std::string, double> quality;
         for (const std::string& figure : qualityFigures())  // null: nothing to miss on this frame (no edge pixel)
           quality[figure] = e[figure].is_null() ? std::numeric_limits<double>::infinity() : e[figure].get<double>();
@@ -140,6 +144,15 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
   return points;
 }
 
+// When the driver backed a point with another sample count than it asked for (llvmpipe gives 4 for 2),
+// its figures are those of the granted count: the result must say so, not only the scrolling log.
+std::string grantedNote(const TunePoint& point) {
+  if (point.grantedSamples == point.requestedSamples) return "";
+  return point.spec + " asked for " + std::to_string(point.requestedSamples) + " samples; this driver allocated " +
+         std::to_string(point.grantedSamples) + ", so its figures are those of " +
+         std::to_string(point.grantedSamples) + " samples and another driver may give other ones";
+}
+
 // The written config (a comment naming the point, then its keys), the front as SVG, the report and
 // the predicted worst-frame figures.
 void writeTuneOutputs(const TuneOptions& options, const std::vector<TunePoint>& points, const TuneChoice& choice,
@@ -149,6 +162,7 @@ void writeTuneOutputs(const TuneOptions& options, const std::vector<TunePoint>& 
   const auto parent = std::filesystem::path(options.out).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
   std::ofstream(options.out) << "# retroaa tune: " << chosen.spec << " (" << options.cost << " " << chosen.cost << ")\n"
+                             << (grantedNote(chosen).empty() ? "" : "# " + grantedNote(chosen) + "\n")
                              << retroaa::toConfigText(config);
   const std::string& primary = options.targets.front().metric;
   std::vector<ScatterPoint> scatter;
@@ -159,9 +173,14 @@ void writeTuneOutputs(const TuneOptions& options, const std::vector<TunePoint>& 
                                      << std::filesystem::path(options.out).filename().string() << ".svg)\n";
   json worst = json::object();
   for (const std::string& figure : qualityFigures()) worst[figure] = worstFrame(chosen, figure);
-  std::ofstream(options.out + ".json")
-      << json{{"chosen", chosen.spec}, {"cost_figure", options.cost}, {"cost", chosen.cost}, {"worst", worst}}.dump(1)
-      << "\n";
+  std::ofstream(options.out + ".json") << json{{"chosen", chosen.spec},
+                                               {"cost_figure", options.cost},
+                                               {"cost", chosen.cost},
+                                               {"worst", worst},
+                                               {"requested_samples", chosen.requestedSamples},
+                                               {"granted_samples", chosen.grantedSamples}}
+                                              .dump(1)
+                                       << "\n";
 }
 
 }  // namespace
@@ -204,6 +223,7 @@ int runTune(const TuneOptions& options) {
     return kExitCheckFailed;
   }
   report << "\nChosen: " << describe(choice.chosen) << "\n";
+  if (const std::string note = grantedNote(points[choice.chosen]); !note.empty()) report << "\nNote: " << note << ".\n";
   if (choice.nextCheaper >= 0)
     report << "The next cheaper point on the front, " << describe(choice.nextCheaper) << ", misses a target.\n";
   writeTuneOutputs(options, points, choice, report.str());

@@ -20,6 +20,7 @@ struct TunePoint {
   std::string spec;
   double cost = 0;
   std::vector<std::map<std::string, double>> frames;
+  int requestedSamples = 1, grantedSamples = 1;  // MSAA samples the spec asks for and the driver gave
 };
 
 struct TuneChoice {
