@@ -2,6 +2,7 @@
 // behind `idiff` and `oiiotool --diff`).
 #include "image_io.h"
 #include "metrics.h"
+#include "scatter_svg.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <random>
+#include <regex>
 
 using app::DisplayImage;
 
@@ -112,4 +114,37 @@ TEST(Metrics, HeatmapIsBlackWhereEqualAndBrightWhereWrong) {
   const std::vector<uint8_t> heat = app::errorHeatmap(a, b);
   EXPECT_EQ(heat[0], 0);
   EXPECT_EQ(heat[(5 * 16 + 5) * 4], 255);
+}
+
+TEST(ScatterSvg, EveryPointIsLabelledWithoutOverlapAndTheTargetIsDrawn) {
+  // The demo sweep's crowd: fourteen settings within 5 ms and 6 dB of each other.
+  const char* names[] = {"off",         "fxaa",           "resolve",      "resolve/front", "resolve/back",
+                         "resolve/fso", "resolve/window", "resolve/mean", "resolve+fxaa",  "coverage",
+                         "edge",        "adaptive",       "aggregate",    "per-sample"};
+  std::vector<app::ScatterPoint> points;
+  for (int i = 0; i < 14; ++i) points.push_back({names[i], 1.0 + 0.3 * i, 14.8 + 0.4 * (i % 5) + 0.05 * i, i == 10});
+  const std::string svg = app::svgScatter(points, {"GPU ms", "edge PSNR dB", 17.5, "chosen"});
+  const std::regex label("<text x=\"([0-9.]+)\" y=\"([0-9.]+)\" class=\"label[^\"]*\">([^<]+)</text>");
+  struct Box {
+    double x0, y0, x1, y1;
+  };
+  std::vector<Box> boxes;
+  std::vector<std::string> labelled;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), label); it != std::sregex_iterator(); ++it) {
+    const double x = std::stod((*it)[1]), y = std::stod((*it)[2]);
+    boxes.push_back({x, y - 10, x + 6.0 * double((*it)[3].length()), y + 2});
+    labelled.push_back((*it)[3]);
+  }
+  EXPECT_EQ(labelled.size(), points.size()) << svg;
+  for (const app::ScatterPoint& p : points)
+    EXPECT_NE(std::find(labelled.begin(), labelled.end(), p.label), labelled.end()) << p.label;
+  for (size_t a = 0; a < boxes.size(); ++a)
+    for (size_t b = a + 1; b < boxes.size(); ++b)
+      EXPECT_FALSE(boxes[a].x0 < boxes[b].x1 && boxes[b].x0 < boxes[a].x1 && boxes[a].y0 < boxes[b].y1 &&
+                   boxes[b].y0 < boxes[a].y1)
+          << labelled[a] << " overlaps " << labelled[b];
+  EXPECT_NE(svg.find("class=\"target\""), std::string::npos);
+  EXPECT_NE(svg.find(">target 17.5</text>"), std::string::npos);
+  EXPECT_NE(svg.find("Pareto front: no cheaper point is better"), std::string::npos);
+  EXPECT_NE(svg.find(">chosen</text>"), std::string::npos);
 }

@@ -58,7 +58,9 @@ TEST(Regress, CheckFailsNamingTheFigureWhenAMethodIsDegraded) {
 TEST(Regress, ReportHtmlIsWellFormedAndEveryReferenceExists) {
   const fs::path out = tempDir("report");
   ASSERT_EQ(
-      runCli(std::string("regress ") + kSmallRun + " --methods off,edge,aggregate --out " + out.string()).exitCode, 0);
+      runCli(std::string("regress ") + kSmallRun + " --methods off,edge,aggregate,per-sample --out " + out.string())
+          .exitCode,
+      0);
   std::ifstream in(out / "report.html");
   std::stringstream text;
   text << in.rdbuf();
@@ -76,8 +78,18 @@ TEST(Regress, ReportHtmlIsWellFormedAndEveryReferenceExists) {
   int images = 0;
   for (auto it = std::sregex_iterator(html.begin(), html.end(), source); it != std::sregex_iterator(); ++it, ++images)
     EXPECT_TRUE(fs::exists(out / (*it)[1].str())) << "missing " << (*it)[1].str();
-  EXPECT_GE(images, 3 * 3 + 2);  // crop, image and heat map per method, plus the ground truth's
+  EXPECT_GE(images, 4 * 3 + 2);  // crop, image and heat map per method, plus the ground truth's
   EXPECT_NE(html.find("<polyline"), std::string::npos) << "the Pareto front is drawn";
+  EXPECT_NE(html.find("Pareto front: no cheaper point is better"), std::string::npos) << "with a legend";
+  for (const char* method : {"off", "edge", "aggregate", "per-sample"})  // every point carries its label
+    EXPECT_TRUE(html.find(std::string("class=\"label\">") + method + "</text>") != std::string::npos ||
+                html.find(std::string("class=\"label hi\">") + method + "</text>") != std::string::npos)
+        << method;
+  EXPECT_NE(html.find("class=\"ramp heat\""), std::string::npos) << "the heat maps' colour key";
+  EXPECT_NE(html.find("class=\"ramp count\""), std::string::npos) << "the samples maps' colour key";
+  EXPECT_NE(html.find("per-sample: image, error, samples per pixel (1 … 4); every pixel lit 4 times, so one colour"),
+            std::string::npos)
+      << "the per-sample map says why it is one colour";
   std::ifstream json(out / "report.json");
   const nlohmann::json report = nlohmann::json::parse(json);
   ASSERT_EQ(report["scenes"].size(), 1u);

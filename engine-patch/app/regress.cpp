@@ -224,9 +224,13 @@ json writeMethodImages(Session& session, const fs::path& sceneDir, const std::st
               crop(m.display, w, window.first, window.second, cropW, cropH, 4));
   json entry = {{"image", file + ".png"}, {"error", file + "-error.png"}, {"crop", file + "-crop.png"}};
   if (m.stats.slices > 1) {
+    const std::vector<uint8_t> counts = session.plugin().readSliceCounts();
     writeImage8((sceneDir / (file + "-samples.png")).string(), w, h,
-                visualiseCounts("samples", session.plugin().readSliceCounts(), m.display, w, h, m.stats.samples));
+                visualiseCounts("samples", counts, m.display, w, h, m.stats.samples));
     entry["samples"] = file + "-samples.png";
+    entry["samples_scale"] = m.stats.samples;  // the colour key's top: blue 1 … red N evaluations
+    const auto [fewest, most] = std::minmax_element(counts.begin(), counts.end());
+    if (!counts.empty() && *fewest == *most) entry["samples_uniform"] = int(*fewest);
   }
   return entry;
 }
@@ -301,7 +305,7 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
     if (!r["edge_psnr_db"].is_null())  // a scene without edge pixels has nothing to plot
       scatter.push_back({r["method"].get<std::string>(), r["gpu_ms"].get<double>(), r["edge_psnr_db"].get<double>()});
   html << "</table>\n"
-       << svgScatter(scatter, "GPU ms per frame (mean)", "edge PSNR dB")
+       << svgScatter(scatter, {"GPU ms per frame (mean)", "edge PSNR dB", std::nullopt, ""})
        << "\n<h3>Hard-case crop (first frame, 4× nearest)</h3>\n<div>";
   for (const auto& r : scene["rows"]) {
     const std::string m = r["method"];
@@ -310,17 +314,25 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
   }
   html << "<figure><img src=\"" << dir
        << "/ground-truth-crop.png\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n"
-       << "<h3>First frame, error heat maps and samples per pixel</h3>\n<div>";
+       << "<h3>First frame, error heat maps and samples per pixel</h3>\n"
+       << "<p class=\"key\">Error heat map (largest channel difference from the ground truth, display values): "
+          "<span class=\"ramp heat\"></span> 0 … 0.25 and above. Samples per pixel (lighting evaluations, "
+          "sliced methods only): <span class=\"ramp count\"></span> 1 … the sample count.</p>\n<div>";
   for (const auto& r : scene["rows"]) {
     const std::string m = r["method"];
     const json& im = scene["images"][m];
     html << "<figure><img src=\"" << dir << "/" << im["image"].get<std::string>() << "\" width=\"" << w << "\" alt=\""
          << htmlEscape(m) << "\"><img src=\"" << dir << "/" << im["error"].get<std::string>() << "\" width=\"" << w
          << "\" alt=\"error\">";
-    if (im.contains("samples"))
+    std::string caption = htmlEscape(m) + ": image, error";
+    if (im.contains("samples")) {
       html << "<img src=\"" << dir << "/" << im["samples"].get<std::string>() << "\" width=\"" << w
            << "\" alt=\"samples\">";
-    html << "<figcaption>" << htmlEscape(m) << "</figcaption></figure>";
+      caption += ", samples per pixel (1 … " + std::to_string(im["samples_scale"].get<int>()) + ")";
+      if (im.contains("samples_uniform"))  // per-sample: one colour is the whole story
+        caption += "; every pixel lit " + std::to_string(im["samples_uniform"].get<int>()) + " times, so one colour";
+    }
+    html << "<figcaption>" << caption << "</figcaption></figure>";
   }
   html << "<figure><img src=\"" << dir << "/ground-truth.png\" width=\"" << w
        << "\" alt=\"ground truth\"><figcaption>ground truth</figcaption></figure></div>\n";
@@ -336,7 +348,10 @@ void writeHtml(const json& report, const RegressOptions& options) {
          "img{image-rendering:pixelated;border:1px solid "
          "#999;margin:2px}figure{display:inline-block;margin:4px;text-align:center}"
          "figcaption{font-size:12px}.scatter "
-         "text{font-size:11px}.label{fill:#246}.tick{fill:#666}</style></head><body>\n"
+         "text{font-size:11px}.label{fill:#246}.tick{fill:#666}"
+         ".ramp{display:inline-block;width:120px;height:10px;border:1px solid #999;vertical-align:middle}"
+         ".heat{background:linear-gradient(to right,#000,#f00,#ff0,#fff)}"
+         ".count{background:linear-gradient(to right,#00f,#0f0,#f00)}</style></head><body>\n"
       << "<h1>retroaa: speed against error on recorded demo scenes</h1>\n<p>" << htmlEscape(report["renderer"]) << "; "
       << options.width << "×" << options.height << ", ground truth " << options.groundTruthSamples << "×"
       << options.groundTruthSamples

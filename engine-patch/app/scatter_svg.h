@@ -1,6 +1,7 @@
 // Cost against quality as an SVG scatter plot with its Pareto front (no cheaper point is better).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,14 @@ struct ScatterPoint {
   bool highlighted = false;
 };
 
-std::string svgScatter(const std::vector<ScatterPoint>& points, const std::string& xLabel, const std::string& yLabel);
+struct ScatterOptions {
+  std::string xLabel, yLabel;
+  std::optional<double> target;       // a horizontal line at this quality, labelled "target"
+  std::string highlightMeaning = "";  // the legend's word for highlighted points ("chosen"); none if empty
+};
+
+// Every point is labelled; labels are placed where they overlap neither another label nor a point,
+// with a leader line when they had to move away. A legend names the front (and the highlight).
+std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOptions& options);
 
 }  // namespace app

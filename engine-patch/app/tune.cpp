@@ -168,7 +168,9 @@ void writeTuneOutputs(const TuneOptions& options, const std::vector<TunePoint>& 
   std::vector<ScatterPoint> scatter;
   for (size_t i = 0; i < points.size(); ++i)
     scatter.push_back({points[i].spec, points[i].cost, worstFrame(points[i], primary), int(i) == choice.chosen});
-  std::ofstream(options.out + ".svg") << svgScatter(scatter, options.cost + " (mean)", "worst-frame " + primary);
+  const std::string highlight = choice.feasible ? "chosen" : "closest (misses the target)";
+  std::ofstream(options.out + ".svg") << svgScatter(
+      scatter, {options.cost + " (mean)", "worst-frame " + primary, options.targets.front().threshold, highlight});
   std::ofstream(options.out + ".md") << report << "\n![front]("
                                      << std::filesystem::path(options.out).filename().string() << ".svg)\n";
   json worst = json::object();
