@@ -3,13 +3,16 @@
 #include "test_support.h"
 
 #include <glm/gtc/packing.hpp>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 
 using namespace testing_support;
+namespace fs = std::filesystem;
 namespace codec = host::depth_codec;
 
 namespace {
@@ -230,4 +233,52 @@ TEST(ModelLoading, NonFiniteVerticesAreRefusedOrLeftOutWithAWord) {
   for (const host::Vertex& v : half.vertices) EXPECT_TRUE(std::isfinite(v.position.x + v.position.y + v.position.z));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("mesh 'half': 1 of 2 triangles"), std::string::npos) << warnings[0];
+}
+
+TEST(SceneFile, CameraFitFramesTheModelsAsLoaded) {
+  // A 20 m box far off the origin: "fit" aims at its centre and sees all of it, filling a good part.
+  const host::Scene scene = host::parseScene(R"({"camera": "fit", "materials": [{"name": "m"}], "objects": [
+      {"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m",
+       "transform": {"translate": [300, -40, 120], "scale": 20}}]})",
+                                             "fit.json", ".");
+  EXPECT_NEAR(glm::length(scene.camera.target - glm::vec3(300, -40, 120)), 0.0f, 1e-3f);
+  const glm::mat4 viewProjection = scene.camera.projection(640, 480) * scene.camera.view();
+  float extent = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p =
+        glm::vec3(300, -40, 120) + 10.0f * glm::vec3(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+    const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+    ASSERT_GT(clip.w, 0.0f) << "corner " << corner << " behind the camera";
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    EXPECT_LE(std::fabs(ndc.x), 1.0f) << corner;
+    EXPECT_LE(std::fabs(ndc.y), 1.0f) << corner;
+    EXPECT_GT(ndc.z, -1.0f) << corner << " in front of the near plane";
+    extent = std::max({extent, std::fabs(ndc.x), std::fabs(ndc.y)});
+  }
+  EXPECT_GT(extent, 0.4f) << "the box fills a sensible part of the frame";
+  EXPECT_NE(sceneErrorOf(R"({"camera": "fits", "materials": [], "objects": []})")
+                .find("$.camera: expected a camera object or \"fit\""),
+            std::string::npos);
+  EXPECT_NE(sceneErrorOf(R"({"camera": "fit", "materials": [{"name": "m"}], "objects": []})")
+                .find("$.camera: \"fit\" needs at least one object to frame"),
+            std::string::npos);
+}
+
+TEST(Record, FitOrbitsACameraThatFramesTheModels) {
+  const fs::path dir = fs::temp_directory_path() / "retroaa_record_fit";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.json") << R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
+    "materials": [{"name": "m"}], "objects": [{"generator": {"type": "box", "size": [2, 2, 2]}, "material": "m",
+    "transform": {"translate": [50, 0, -200]}}]})";
+  const CliRun run = runCli("record --fit --keys 2 --scene " + (dir / "scene.json").string() + " --out " +
+                            (dir / "path.json").string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(dir / "path.json");
+  const nlohmann::json path = nlohmann::json::parse(in);
+  const nlohmann::json& target = path["keys"][0]["target"];
+  EXPECT_NEAR(target[0].get<float>(), 50.0f, 1e-3f);
+  EXPECT_NEAR(target[2].get<float>(), -200.0f, 1e-3f);
+  const CliRun empty = runCli("record --fit --scene /dev/null --out " + (dir / "x.json").string());
+  EXPECT_EQ(empty.exitCode, 2) << empty.output;
 }

@@ -348,7 +348,10 @@ int runBench(const BenchOptions& options) {
 int runRecord(const RecordOptions& options) {
   if (options.keys < 2) throw std::invalid_argument("--keys must be at least 2");
   const host::Scene scene = host::loadScene(options.scene, false);
-  const host::Camera& camera = scene.camera;
+  if (options.fit && scene.objects.empty()) throw std::invalid_argument("--fit: the scene has no object to frame");
+  const host::Camera camera =
+      options.fit ? host::fitCamera(scene.objects, scene.camera, scene.camera.target - scene.camera.position)
+                  : scene.camera;
   const glm::vec3 up = glm::normalize(camera.up);
   const glm::vec3 offset = camera.position - camera.target;
   nlohmann::json keys = nlohmann::json::array();

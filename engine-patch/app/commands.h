@@ -71,6 +71,7 @@ struct RecordOptions {
   float seconds = 1.0f;
   float framesPerSecond = 30.0f;
   int keys = 5;
+  bool fit = false;  // orbit a camera that frames the scene's models instead of the scene's camera
   std::string out;
 };
 int runRecord(const RecordOptions& options);

@@ -122,6 +122,8 @@ void addRecord(CommandLine& line) {
   sub->add_option("--seconds", options->seconds, "length")->check(CLI::Range(0.01, 3600.0));
   sub->add_option("--fps", options->framesPerSecond, "playback frame rate")->check(CLI::Range(1.0, 1000.0));
   sub->add_option("--keys", options->keys, "keys along the path")->check(CLI::Range(2, 1000));
+  sub->add_flag("--fit", options->fit,
+                "start from a camera that frames the models' bounds (the scene camera's direction)");
   sub->add_option("--out", options->out, "camera path file (JSON)")->required();
   line.commands.push_back({sub, [options](const retroaa::Config&) { return app::runRecord(*options); }});
 }

@@ -4,9 +4,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -181,6 +184,29 @@ SceneError::SceneError(const std::string& file, const std::string& field, const 
 
 glm::mat4 Camera::view() const { return glm::lookAt(position, target, up); }
 
+Camera fitCamera(const std::vector<Object>& objects, const Camera& base, glm::vec3 direction) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const Object& object : objects)
+    for (const Vertex& v : object.mesh.vertices) {
+      const glm::vec3 p = glm::vec3(object.transform * glm::vec4(v.position, 1.0f));
+      lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+  Camera camera = base;
+  if (lo.x > hi.x) return camera;  // nothing to frame
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+  // The sphere fits the vertical fov (the narrower one at landscape sizes), with a 5 % margin.
+  const float distance = 1.05f * radius / std::sin(0.5f * glm::radians(camera.fovYDegrees));
+  if (glm::length(direction) <= 0.0f) direction = glm::vec3(0, 0, -1);
+  direction = glm::normalize(direction);
+  if (std::fabs(glm::dot(direction, glm::normalize(camera.up))) > 0.99f) camera.up = glm::vec3(0, 0, -1);
+  camera.target = centre;
+  camera.position = centre - direction * distance;
+  camera.nearPlane = std::clamp(0.5f * (distance - radius), 1e-4f, 0.1f);
+  camera.farPlane = std::max(camera.farPlane, std::min(4.0f * (distance + radius), 1e7f));
+  return camera;
+}
+
 glm::mat4 Camera::projection(int width, int height, glm::vec2 jitterPixels) const {
   glm::mat4 p = glm::perspective(glm::radians(fovYDegrees), float(width) / float(height), nearPlane, farPlane);
   // A clip-space translation of 2/size per pixel shifts the raster by whole pixels.
@@ -233,7 +259,11 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   Scene scene;
   scene.name = root.has("name") ? root.child("name").string() : fileName;
   if (!root.has("camera")) root.fail("missing required key 'camera'");
-  scene.camera = readCamera(root.child("camera"));
+  // "fit": frame whatever the objects turn out to be (set once they are loaded).
+  const bool fitToObjects = root.child("camera").raw().is_string();
+  if (fitToObjects && root.child("camera").string() != "fit")
+    root.child("camera").fail("expected a camera object or \"fit\"");
+  if (!fitToObjects) scene.camera = readCamera(root.child("camera"));
   scene.ambient = root.vec3Or("ambient", scene.ambient, 0.0f, 1e4f);
   scene.skyColor = root.vec3Or("sky_color", scene.skyColor, 0.0f, 1e4f);
   scene.starDensity = root.numberOr("star_density", scene.starDensity, 0.0f, 10.0f);
@@ -335,6 +365,11 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
       if (count > 1) copy.name += "#" + std::to_string(c);
       scene.objects.push_back(std::move(copy));
     }
+  }
+
+  if (fitToObjects) {
+    if (scene.objects.empty()) root.child("camera").fail("\"fit\" needs at least one object to frame");
+    scene.camera = fitCamera(scene.objects, scene.camera, glm::vec3(-0.5f, -0.3f, -0.8f));  // a three-quarter view
   }
 
   if (root.has("lights")) {

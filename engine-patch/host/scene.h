@@ -94,6 +94,11 @@ struct Scene {
   size_t triangleCount() const;
 };
 
+// A camera looking along `direction` (towards the models) that frames every object's bounds, as loaded
+// and transformed: aimed at the bounds' centre, far enough back that their bounding sphere fits the
+// vertical field of view of `base` (whose fov, up and far plane it keeps; near follows the distance).
+Camera fitCamera(const std::vector<Object>& objects, const Camera& base, glm::vec3 direction);
+
 // A malformed scene: names the file and the field (JSON pointer-like path) and what was expected.
 class SceneError : public std::runtime_error {
  public:
