@@ -1,5 +1,6 @@
 #include "regress.h"
 
+#include "progress.h"
 #include "scatter_svg.h"
 
 #include "commands.h"
@@ -10,11 +11,9 @@
 #include "metrics.h"
 #include "session.h"
 
-#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -28,31 +27,6 @@ namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-// Steps done / total (frames × (methods + the frame's references)) with an ETA from the time per step
-// so far: a bar on a terminal, plain lines otherwise.
-class Progress {
- public:
-  explicit Progress(int total) : total_(total), start_(std::chrono::steady_clock::now()), terminal_(isatty(2)) {}
-  void step(const std::string& what) {
-    ++done_;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double eta = done_ > 0 ? elapsed / done_ * (total_ - done_) : 0;
-    if (terminal_) {
-      const int width = 30, filled = total_ ? width * done_ / total_ : width;
-      std::fprintf(stderr, "\r[%s%s] %d/%d steps, ETA %ds  %-40s", std::string(filled, '#').c_str(),
-                   std::string(width - filled, ' ').c_str(), done_, total_, int(eta), what.c_str());
-      if (done_ == total_) std::fprintf(stderr, "\n");
-    } else {
-      std::fprintf(stderr, "regress: %d/%d steps (ETA %ds) %s\n", done_, total_, int(eta), what.c_str());
-    }
-  }
-
- private:
-  int total_, done_ = 0;
-  std::chrono::steady_clock::time_point start_;
-  bool terminal_;
-};
 
 std::string sceneKey(const std::string& scene) {
   return scene == "default" ? "default" : fs::path(scene).stem().string();
@@ -425,7 +399,7 @@ int runRegress(const RegressOptions& options) {
   int total = 0;
   for (const std::vector<int>& list : frames) total += int(list.size());
   host::HeadlessContext context;
-  Progress progress(total * (int(specs.size()) + 1));  // + each frame's references
+  Progress progress("regress", total * (int(specs.size()) + 1));  // + each frame's references
   fs::create_directories(options.out);
   json report = {
       {"renderer", context.info().summary()},

@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "headless_context.h"
 #include "measure.h"
+#include "progress.h"
 #include "scatter_svg.h"
 #include "scene.h"
 #include "session.h"
@@ -101,11 +102,17 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
   host::HeadlessContext context;
   std::vector<TunePoint> points(specs.size());
   for (size_t i = 0; i < specs.size(); ++i) points[i].spec = specs[i];
+  auto framesOf = [&](const host::Scene& scene) {
+    return std::max(1, std::min(options.frames, scene.path.frameCount()));
+  };
+  int total = 0;
+  for (const std::string& scenePath : options.scenes) total += framesOf(host::loadScene(scenePath)) * int(specs.size());
+  Progress progress("tune", total);
   int measured = 0, reused = 0;
   for (size_t sceneIndex = 0; sceneIndex < options.scenes.size(); ++sceneIndex) {
     const std::string& scenePath = options.scenes[sceneIndex];
     Session session(scenePath, options.width, options.height, context.info().summary());
-    const int frames = std::max(1, std::min(options.frames, session.scene.path.frameCount()));
+    const int frames = framesOf(session.scene);
     for (int f = 0; f < frames; ++f) {
       const int frame = f * std::max(session.scene.path.frameCount() / frames, 1);
       std::ostringstream key;
@@ -123,9 +130,11 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
           config.measureGpuTime = true;
           session.configure(config, specs[i]);
           entry[specs[i]] = figures(measure(session, session.camera(frame), *reference, 1, 1));
-          std::fprintf(stderr, "\rtune: scene %zu/%zu, frame %d/%d, point %zu/%zu: measured %d (%d reused)   ",
-                       sceneIndex + 1, options.scenes.size(), f + 1, frames, i + 1, specs.size(), ++measured, reused);
+          ++measured;
         }
+        progress.step("scene " + std::to_string(sceneIndex + 1) + "/" + std::to_string(options.scenes.size()) +
+                      ", frame " + std::to_string(f + 1) + "/" + std::to_string(frames) + ", point " +
+                      std::to_string(i + 1) + "/" + std::to_string(specs.size()) + ": " + specs[i]);
         const json& e = entry[specs[i]];
         const retroaa::Config asked = parseMethodSpec(specs[i], {}).config;
         const retroaa::MethodInfo* row = retroaa::findMethod(asked.method);
@@ -139,7 +148,7 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
       }
     }
   }
-  std::fprintf(stderr, "\rtune: measured %d points, reused %d from %s\n", measured, reused, options.cache.c_str());
+  std::fprintf(stderr, "tune: measured %d points, reused %d from %s\n", measured, reused, options.cache.c_str());
   for (TunePoint& p : points) p.cost /= double(std::max<size_t>(p.frames.size(), 1));
   return points;
 }

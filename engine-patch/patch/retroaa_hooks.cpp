@@ -2,6 +2,8 @@
 
 #include "depth_codec.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 
 namespace patch {
@@ -47,7 +49,8 @@ retroaa::Result<std::unique_ptr<RetroaaHooks>> RetroaaHooks::create(const host::
   description.maxSamplesLimit = maxSamplesLimit;
   description.layout = describeHostGBuffer(targets);
   description.log = [](retroaa::LogLevel, const std::string& message) {
-    std::fprintf(stderr, "retroaa: warning: %s\n", message.c_str());
+    // On a terminal, clear a progress bar drawn in place first so the warning gets a line of its own.
+    std::fprintf(stderr, "%sretroaa: warning: %s\n", isatty(2) ? "\r\033[K" : "", message.c_str());
   };
   auto plugin = retroaa::Plugin::create(description);
   if (!plugin) return plugin.error();
