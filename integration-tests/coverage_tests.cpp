@@ -67,8 +67,8 @@ struct CoverageFixture {
   }
   std::vector<uint8_t> filter(const char* sampleDepth) {
     retroaa::Plugin& plugin = hooks->plugin();
-    EXPECT_NE(plugin.coverageFramebuffer(), 0u);
-    writeSampleDepth(plugin.coverageFramebuffer(), sampleDepth);
+    EXPECT_NE(plugin.prepassFramebuffer(), 0u);
+    writeSampleDepth(plugin.prepassFramebuffer(), sampleDepth);
     retroaa::FrameInfo info{verticalFovFor(0.8f, kWidth, kHeight), 0.1f, 100.0f};
     EXPECT_TRUE(plugin.resolve(info));
     EXPECT_TRUE(plugin.post());
@@ -160,5 +160,5 @@ TEST(Coverage, HoldsOnlyADepthTargetAndLightsOncePerPixel) {
   EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * (4u * 4u + 4u));  // D24S8 × 4 samples + the post copy
   EXPECT_EQ(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
   host.render("resolve+coverage");  // reuses the G-buffer's depth: no prepass
-  EXPECT_EQ(host.hooks->plugin().coverageFramebuffer(), 0u);
+  EXPECT_EQ(host.hooks->plugin().prepassFramebuffer(), 0u);
 }

@@ -29,8 +29,9 @@ struct FrameView {
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres
 };
 
-// Draws the frame's models again into `target` (depth only: colour writes off).
-using DepthOnlyModelPass = std::function<void(GLuint target)>;
+// Draws the frame's models again into `target` with the model shaders; the target's draw buffers
+// decide which outputs are kept (none: depth only).
+using ModelPrepass = std::function<void(GLuint target)>;
 
 // The host's lighting pass: renders every light of the frame, reading the host's single-sample
 // G-buffer, into `target` (a framebuffer with one RGBA16F colour attachment).
@@ -45,10 +46,10 @@ class FrameHooks {
   virtual GLuint modelPassFramebuffer(GLuint stockGbuffer) { return stockGbuffer; }
   // gr_opengl_deferred_lighting_msaa() / _end(): the model pass is done.
   virtual void modelPassEnd(const FrameView&) {}
-  // After the model pass: an AA module that wants a multisampled depth-only copy of the models
-  // (coverage filtering) draws them here. FreeSpace Open has no such call site: it would be a second
-  // model loop at the end of gr_opengl_deferred_lighting_end() with colour writes off.
-  virtual void depthOnlyPass(const DepthOnlyModelPass&) {}
+  // After the model pass: an AA module that wants a multisampled copy of the models' depth (coverage)
+  // or depth and normals (reconstruct) draws them here. FreeSpace Open has no such call site: it would
+  // be a second model loop at the end of gr_opengl_deferred_lighting_end() into that framebuffer.
+  virtual void modelPrepass(const ModelPrepass&) {}
   // gr_opengl_deferred_lighting_finish(): run the host's lighting.
   virtual void lighting(const LightingPass& pass, GLuint stockLightFramebuffer) { pass(stockLightFramebuffer); }
   // gr_opengl_post_process_end(): after tonemapping, on the display target.

@@ -179,15 +179,15 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   frameView.nearPlane = camera.nearPlane;
   frameView.farPlane = camera.farPlane;
   hooks_->modelPassEnd(frameView);
-  hooks_->depthOnlyPass([&](GLuint target) {
-    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 4, -1, "host.depth_only_models");
+  hooks_->modelPrepass([&](GLuint target) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 4, -1, "host.model_prepass");
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, width, height);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glDepthMask(GL_TRUE);
+    // Draw buffers the target leaves GL_NONE ignore both the clear and the writes.
+    for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(target, GL_COLOR, i, zero);
     glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, 0);
     drawModels(camera, projection);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glPopDebugGroup();
   });
   if (measureTime) glQueryCounter(timestamps[1], GL_TIMESTAMP);

@@ -82,9 +82,9 @@ void RetroaaHooks::modelPassEnd(const host::FrameView& view) {
   report(plugin_->resolve(frame));
 }
 
-// (no FSO call site yet: a second, depth-only model loop; see docs/methods/coverage.md)
-void RetroaaHooks::depthOnlyPass(const host::DepthOnlyModelPass& pass) {
-  if (const GLuint target = plugin_->coverageFramebuffer()) pass(target);
+// (no FSO call site yet: a second model loop into the plugin's prepass; see docs/methods/coverage.md)
+void RetroaaHooks::modelPrepass(const host::ModelPrepass& pass) {
+  if (const GLuint target = plugin_->prepassFramebuffer()) pass(target);
 }
 
 // gr_opengl_deferred_lighting_finish(): the host's lighting runs through the plugin.

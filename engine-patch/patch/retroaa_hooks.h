@@ -25,7 +25,7 @@ class RetroaaHooks : public host::FrameHooks {
   void targetsCreated(const host::HostTargets& targets) override;
   GLuint modelPassFramebuffer(GLuint stockGbuffer) override;
   void modelPassEnd(const host::FrameView& view) override;
-  void depthOnlyPass(const host::DepthOnlyModelPass& pass) override;
+  void modelPrepass(const host::ModelPrepass& pass) override;
   void lighting(const host::LightingPass& pass, GLuint stockLightFramebuffer) override;
   void postProcess() override;
 

@@ -224,6 +224,16 @@ const std::vector<Setter>& setters() {
          return parseFloat("coverage_tolerance", v, 0.0f, 100.0f, c.coverageTolerance);
        },
        [](const Config& c) { return formatFloat(c.coverageTolerance); }},
+      {{"reconstruct_filter", "off", "on, off",
+        "sub-pixel reconstruction on top of resolve (reuses its MSAA depth and normals; no prepass)"},
+       [](Config& c, const std::string& v) { return parseBool("reconstruct_filter", v, c.reconstructFilter); },
+       [](const Config& c) { return std::string(c.reconstructFilter ? "on" : "off"); }},
+      {{"reconstruct_tolerance", "2", "0 .. 100",
+        "reconstruct: c of the depth test that ties a sub-sample to a shaded pixel"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("reconstruct_tolerance", v, 0.0f, 100.0f, c.reconstructTolerance);
+       },
+       [](const Config& c) { return formatFloat(c.reconstructTolerance); }},
       {{"preset", "none", "none, low, medium, high, ultra",
         "a bundle of the keys above, tuned by `make presets` (docs/tune.md#presets); keys after it override"},
        [](Config& c, const std::string& v) -> Status {

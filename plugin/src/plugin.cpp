@@ -247,7 +247,7 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   return std::unique_ptr<Plugin>(new Plugin(std::move(impl)));
 }
 
-GLuintHandle Plugin::coverageFramebuffer() const {
+GLuintHandle Plugin::prepassFramebuffer() const {
   for (const ActiveTechnique& active : impl_->techniques)
     if (const GLuint framebuffer = active.technique->prepassFramebuffer()) return framebuffer;
   return 0;

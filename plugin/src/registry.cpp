@@ -12,6 +12,7 @@ Result<std::unique_ptr<Technique>> createEdgeTechnique(PluginContext&, SharedTar
 Result<std::unique_ptr<Technique>> createAdaptiveTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createAggregateTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createCoverageTechnique(PluginContext&, SharedTargets&);
+Result<std::unique_ptr<Technique>> createReconstructTechnique(PluginContext&, SharedTargets&);
 
 namespace {
 
@@ -42,6 +43,14 @@ std::vector<TechniqueRow>& rows() {
        kStoragePostTarget,
        createCoverageTechnique,
        [](const Config& c) { return c.coverageFilter && usesMsaa(c.method); },
+       kStoragePostTarget},
+      {{Method::Reconstruct, "reconstruct",
+        "depth+normal MSAA prepass; sub-samples rebuilt from neighbouring shaded pixels after tonemapping", true, 2,
+        "reconstruct,resolve+reconstruct", "reconstruct",
+        "reconstruct@samples=2,reconstruct,reconstruct@samples=8,resolve+reconstruct", "reconstruct_filter"},
+       kStoragePostTarget,
+       createReconstructTechnique,
+       [](const Config& c) { return c.reconstructFilter && usesMsaa(c.method); },
        kStoragePostTarget},
       {{Method::Edge, "edge", "edge pixels (a detector decides) lit once per sample through slices", true, 1, "edge",
         "edge", "edge@samples=2,edge,edge@samples=8,edge@edge_detector=plane"},

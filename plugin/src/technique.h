@@ -28,7 +28,7 @@ class Technique {
   virtual SliceRenderer::Plan slicePlan(PluginContext&, SharedTargets&) { return {}; }
   // After the host's tonemap, on the post target (techniques whose row asks for it).
   virtual Status post(PluginContext&, SharedTargets&, const FrameInfo&) { return Status::ok(); }
-  // A multisampled depth-only framebuffer the host draws its models into once more (0: none).
+  // A multisampled framebuffer the host draws its models into once more (Plugin::prepassFramebuffer; 0: none).
   virtual GLuint prepassFramebuffer() const { return 0; }
   // Samples of storage the technique holds itself (0: none; the MSAA G-buffer's count otherwise).
   virtual int samples() const { return 0; }

@@ -23,6 +23,8 @@ enum class Method : uint8_t {
   Adaptive,   // Holländer et al.: k samples per pixel from geometry and shading metrics (1 + Σ(k−1)/pixels)
   Aggregate,  // Crassin et al. (AGAA): ≤ c aggregates per pixel, each lit once, weighted by coverage
   Coverage,   // Pettineo: depth-only MSAA prepass, stock single-sample path, coverage filter after tonemapping (1)
+  Reconstruct,  // SRAA-style: depth+normal MSAA prepass, stock single-sample shading, sub-samples rebuilt from
+                // neighbouring shaded pixels after tonemapping (1)
 };
 
 // How `edge` decides that a pixel's samples see more than one surface.
@@ -89,6 +91,12 @@ struct Config {
   // the pixel's by more than min(d)·tan(hfov/width)·c lies across an edge. Smaller finds more (and,
   // on grazing surfaces, false) edges.
   float coverageTolerance = 2.0f;
+  // Sub-pixel reconstruction stacked on a G-buffer method (`resolve+reconstruct`: its MSAA depth and
+  // normals feed it, so no prepass).
+  bool reconstructFilter = false;
+  // c of the reconstruction's depth test (Eq. 1 style), [0, 100]: a sub-sample belongs to a shaded pixel
+  // whose depth is within min(d)·tan(hfov/width)·c of its own (and whose normal agrees).
+  float reconstructTolerance = 2.0f;
   // A GPU-time budget for the plugin's passes in ms, [0, 1000]; 0 is off. With `adaptive` (or `edge`
   // with the depth detector) a damped controller scales the refinement frame to frame to stay near it;
   // it times the passes itself (timer queries). Free to change every frame.

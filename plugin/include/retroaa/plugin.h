@@ -45,9 +45,12 @@ class RETROAA_API Plugin {
   // The framebuffer the host's model pass renders into: the plugin's MSAA G-buffer for
   // multi-sample methods, the host's own otherwise.
   GLuintHandle geometryFramebuffer() const;
-  // For `coverage`: a multisampled depth-only framebuffer the host draws its models into once more
-  // (colour writes off), after the model pass. 0 when the method needs no such pass.
-  GLuintHandle coverageFramebuffer() const;
+  // For `coverage` and `reconstruct`: a multisampled framebuffer the host draws its models into once
+  // more, after the model pass, with its own model shaders and colour writes on. Clear its depth to 1 and
+  // its draw buffers 0..n to 0 first. Its depth is always kept; `reconstruct` also keeps the output at the
+  // NormalGloss attachment's location (every other draw buffer is GL_NONE). 0 when the method needs no
+  // such pass. Valid until the next reconfigure() or resize().
+  GLuintHandle prepassFramebuffer() const;
   // After the model pass. Returns the first error of a pass (none are expected once create succeeded).
   Status resolve(const FrameInfo& frame);
   // Runs `lighting` once per slice and composites; for single-slice methods, once into the host's
