@@ -15,14 +15,14 @@
 namespace retroaa {
 
 enum class Method : uint8_t {
-  Off,        // the host's stock single-sample path; the plugin holds nothing (1 lighting eval/pixel)
-  Fxaa,       // Lottes' FXAA after tonemapping (1 eval/pixel)
-  Resolve,    // MSAA G-buffer + depth-aware resolve into the host's G-buffer (1 eval/pixel)
-  Edge,       // Thibieroz: edge pixels lit once per sample, the rest once (1 + (N-1)·edge fraction)
-  PerSample,  // every sample of every pixel lit: the quality reference at rate N (N evals/pixel)
-  Adaptive,   // Holländer et al.: k samples per pixel from geometry and shading metrics (1 + Σ(k−1)/pixels)
-  Aggregate,  // Crassin et al. (AGAA): ≤ c aggregates per pixel, each lit once, weighted by coverage
-  Coverage,   // Pettineo: depth-only MSAA prepass, stock single-sample path, coverage filter after tonemapping (1)
+  Off,          // the host's stock single-sample path; the plugin holds nothing (1 lighting eval/pixel)
+  Fxaa,         // Lottes' FXAA after tonemapping (1 eval/pixel)
+  Resolve,      // MSAA G-buffer + depth-aware resolve into the host's G-buffer (1 eval/pixel)
+  Edge,         // Thibieroz: edge pixels lit once per sample, the rest once (1 + (N-1)·edge fraction)
+  PerSample,    // every sample of every pixel lit: the quality reference at rate N (N evals/pixel)
+  Adaptive,     // Holländer et al.: k samples per pixel from geometry and shading metrics (1 + Σ(k−1)/pixels)
+  Aggregate,    // Crassin et al. (AGAA): ≤ c aggregates per pixel, each lit once, weighted by coverage
+  Coverage,     // Pettineo: depth-only MSAA prepass, stock single-sample path, coverage filter after tonemapping (1)
   Reconstruct,  // SRAA-style: depth+normal MSAA prepass, stock single-sample shading, sub-samples rebuilt from
                 // neighbouring shaded pixels after tonemapping (1)
 };

@@ -47,7 +47,8 @@ class ReconstructTechnique : public Technique {
       // normal (z ≥ 0 for what the camera sees), 4 bytes a sample instead of the G-buffer's 8.
       std::vector<GLenum> drawBuffers(size_t(std::max(normalIndex + 1, 1)), GL_NONE);
       if (normalIndex >= 0) {
-        t.normal_ = makeTexture(context, GL_RG16F, layout.width, layout.height, samples, "reconstruct.normal", t.bytes_);
+        t.normal_ =
+            makeTexture(context, GL_RG16F, layout.width, layout.height, samples, "reconstruct.normal", t.bytes_);
         glNamedFramebufferTexture(t.prepass_.get(), GL_COLOR_ATTACHMENT0, t.normal_.get(), 0);
         drawBuffers[size_t(normalIndex)] = GL_COLOR_ATTACHMENT0;
         t.sampleNormal_ = t.normal_.get();

@@ -1,0 +1,164 @@
+// `reconstruct` (SRAA-style): the pass on hand-written sub-samples (depth and normal written per
+// sample into the plugin's prepass), and the method through the host's own model prepass.
+#include "test_support.h"
+
+#include <cmath>
+
+using namespace testing_support;
+
+namespace {
+
+constexpr int kWidth = 16, kHeight = 8;
+
+// Draws one full-screen triangle into `target` with a fragment shader body that runs per sample.
+void drawPerSample(GLuint target, const std::string& body) {
+  const std::string fragment =
+      "#version 450 core\nlayout(location = 2) out vec4 outNormal;\n"
+      "void main() {  // reading gl_SamplePosition runs this once per sample\n"
+      "  int x = int(gl_FragCoord.x);\n  vec2 position = gl_SamplePosition;\n" +
+      body + "\n}\n";
+  const char* vertexText =
+      "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
+      " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
+  const char* fragmentText = fragment.c_str();
+  const GLuint vertex = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexText);
+  const GLuint program = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentText);
+  GLuint pipeline = 0, vao = 0;
+  glCreateProgramPipelines(1, &pipeline);
+  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex);
+  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, program);
+  glCreateVertexArrays(1, &vao);
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, kWidth, kHeight);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  glUseProgram(0);
+  glBindProgramPipeline(pipeline);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindProgramPipeline(0);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+  glDeleteProgramPipelines(1, &pipeline);
+  glDeleteProgram(vertex);
+  glDeleteProgram(program);
+  glDeleteVertexArrays(1, &vao);
+}
+
+float toLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float toDisplay(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
+
+// The host's single-sample results by hand (display, depth, normal per pixel), then the plugin's pass.
+struct ReconstructFixture {
+  SyntheticFrame frame{kWidth, kHeight};
+  std::unique_ptr<patch::RetroaaHooks> hooks;
+
+  ReconstructFixture(const std::vector<uint8_t>& display, const std::vector<float>& pixelDepth,
+                     float tolerance = 2.0f) {
+    retroaa::Config config;
+    config.method = retroaa::Method::Reconstruct;
+    config.samples = 4;
+    config.reconstructTolerance = tolerance;
+    auto created = patch::RetroaaHooks::create(frame.renderer->targets(), config);
+    EXPECT_TRUE(created) << created.error().message;
+    hooks = std::move(created.value());
+    const host::HostTargets& t = frame.renderer->targets();
+    glTextureSubImage2D(t.displayTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, display.data());
+    std::vector<uint32_t> depth(kWidth * kHeight);
+    for (size_t i = 0; i < depth.size(); ++i) depth[i] = uint32_t(double(pixelDepth[i]) * 0xFFFFFF) << 8;
+    glTextureSubImage2D(t.depthStencil, 0, 0, 0, kWidth, kHeight, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, depth.data());
+    const std::vector<glm::vec4> normals(kWidth * kHeight, glm::vec4(0, 0, 1, 0.5f));
+    glTextureSubImage2D(t.normal, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, normals.data());
+  }
+  // `body` sets gl_FragDepth and outNormal of each sub-sample from x and position.
+  std::vector<uint8_t> run(const std::string& body) {
+    retroaa::Plugin& plugin = hooks->plugin();
+    EXPECT_NE(plugin.prepassFramebuffer(), 0u);
+    drawPerSample(plugin.prepassFramebuffer(), body);
+    retroaa::FrameInfo info{verticalFovFor(0.8f, kWidth, kHeight), 0.1f, 100.0f};
+    EXPECT_TRUE(plugin.resolve(info));
+    EXPECT_TRUE(plugin.post());
+    std::vector<uint8_t> out(kWidth * kHeight * 4);
+    glGetTextureImage(frame.renderer->targets().displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()),
+                      out.data());
+    return out;
+  }
+};
+
+std::vector<uint8_t> noise() {
+  std::vector<uint8_t> pixels(kWidth * kHeight * 4);
+  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = uint8_t((i * 2654435761u) >> 13);
+  return pixels;
+}
+
+}  // namespace
+
+TEST(Reconstruct, AFlatInteriorIsReturnedExactly) {
+  // Noise for texture detail: every sub-sample lies on its pixel's surface, so nothing is blended.
+  const std::vector<uint8_t> input = noise();
+  ReconstructFixture fixture(input, std::vector<float>(kWidth * kHeight, 0.5f));
+  EXPECT_EQ(fixture.run("gl_FragDepth = 0.5; outNormal = vec4(0.0, 0.0, 1.0, 0.5);"), input);
+}
+
+TEST(Reconstruct, ADepthStepBelowTheToleranceIsNoEdge) {
+  // Columns alternate between two depths 7e-6 relative apart (log depth buffer, near 0.1, far 100:
+  // depth-buffer 0.5 and 0.500001), and each pixel's right half lies at its neighbours' depth. Within
+  // c = 2 footprints that is one surface and nothing changes; with c = 0 the right halves are rebuilt
+  // from the neighbours they match.
+  const std::vector<uint8_t> input = noise();
+  std::vector<float> depth(kWidth * kHeight);
+  for (int i = 0; i < kWidth * kHeight; ++i) depth[i] = (i % kWidth) % 2 ? 0.500001f : 0.5f;
+  const char* body =
+      "bool odd = x % 2 == 1; float own = odd ? 0.500001 : 0.5, other = odd ? 0.5 : 0.500001;"
+      " gl_FragDepth = position.x > 0.5 ? other : own; outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
+  ReconstructFixture tolerant(input, depth, 2.0f);
+  EXPECT_EQ(tolerant.run(body), input);
+  ReconstructFixture strict(input, depth, 0.0f);
+  EXPECT_NE(strict.run(body), input) << "with no tolerance the same step is an edge";
+}
+
+TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
+  // Left of x = 7.6 a surface (display 200), right of it background (display 30). Column 7's centre is on
+  // the surface; its sub-samples right of 0.6 see the background: half of them at 4× (llvmpipe's and
+  // the standard pattern, x = 0.375, 0.875, 0.125, 0.625).
+  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
+  std::vector<float> depth(kWidth * kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x < 8 ? 200 : 30;
+      depth[y * kWidth + x] = x < 8 ? 0.5f : 1.0f;
+    }
+  ReconstructFixture fixture(display, depth);
+  const std::vector<uint8_t> out =
+      fixture.run("gl_FragDepth = float(x) + position.x >= 7.6 ? 1.0 : 0.5; outNormal = vec4(0.0, 0.0, 1.0, 0.5);");
+  const float mixed = toDisplay(0.5f * toLinear(200.0f / 255.0f) + 0.5f * toLinear(30.0f / 255.0f)) * 255.0f;
+  for (int y = 0; y < kHeight; ++y) {
+    EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0) << "row " << y << ": half surface, half background";
+    EXPECT_EQ(out[(y * kWidth + 6) * 4], 200) << "row " << y;
+    EXPECT_EQ(out[(y * kWidth + 8) * 4], 30) << "row " << y;
+  }
+}
+
+TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
+  PatchedHost host("default", 64, 48);
+  const app::DisplayImage off = host.render("off");
+  const app::DisplayImage rebuilt = host.render("reconstruct");
+  const retroaa::Stats stats = host.hooks->plugin().stats();
+  EXPECT_EQ(stats.evaluationsPerPixel(), 1.0);
+  ASSERT_EQ(stats.samples, 4);
+  // D24S8 and RG16F normals × 4 samples, plus the post copy: 36 B/px against resolve's 160.
+  EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * (4u * 4u + 4u * 4u + 4u));
+  EXPECT_EQ(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
+  // Only edge pixels change: the interior of the image is the host's own.
+  int changed = 0;
+  for (size_t i = 0; i < off.rgb.size(); i += 3) changed += off.rgb[i] != rebuilt.rgb[i];
+  EXPECT_GT(changed, 0);
+  EXPECT_LT(changed, int(off.rgb.size() / 3) / 4);
+  host.render("resolve");
+  const uint64_t resolveBytes = host.hooks->plugin().stats().bytesHeld;
+  EXPECT_LE(stats.bytesHeld * 4, resolveBytes);
+  host.render("resolve+reconstruct");  // the MSAA G-buffer's depth and normals: no prepass
+  EXPECT_EQ(host.hooks->plugin().prepassFramebuffer(), 0u);
+}
