@@ -12,39 +12,7 @@ constexpr int kWidth = 16, kHeight = 8;
 
 // Writes the multisampled depth of `target` per sample: depth(pixel x, sample position) in a shader.
 void writeSampleDepth(GLuint target, const char* depthExpression) {
-  const std::string fragment = std::string(R"(#version 450 core
-void main() {  // reading gl_SamplePosition runs this once per sample
-  int x = int(gl_FragCoord.x);
-  vec2 position = gl_SamplePosition;
-  gl_FragDepth = )") + depthExpression +
-                               ";\n}\n";
-  const char* vertexText =
-      "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
-      " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
-  const char* fragmentText = fragment.c_str();
-  const GLuint vertex = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexText);
-  const GLuint program = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentText);
-  GLuint pipeline = 0, vao = 0;
-  glCreateProgramPipelines(1, &pipeline);
-  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex);
-  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, program);
-  glCreateVertexArrays(1, &vao);
-  glBindFramebuffer(GL_FRAMEBUFFER, target);
-  glViewport(0, 0, kWidth, kHeight);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_ALWAYS);
-  glDepthMask(GL_TRUE);
-  glUseProgram(0);
-  glBindProgramPipeline(pipeline);
-  glBindVertexArray(vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindProgramPipeline(0);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_DEPTH_TEST);
-  glDeleteProgramPipelines(1, &pipeline);
-  glDeleteProgram(vertex);
-  glDeleteProgram(program);
-  glDeleteVertexArrays(1, &vao);
+  writePerSample(target, kWidth, kHeight, std::string("gl_FragDepth = ") + depthExpression + ";");
 }
 
 struct CoverageFixture {

@@ -10,43 +10,6 @@ namespace {
 
 constexpr int kWidth = 16, kHeight = 8;
 
-// Draws one full-screen triangle into `target` with a fragment shader body that runs per sample.
-void drawPerSample(GLuint target, const std::string& body) {
-  const std::string fragment =
-      "#version 450 core\nlayout(location = 2) out vec4 outNormal;\n"
-      "void main() {  // reading gl_SamplePosition runs this once per sample\n"
-      "  int x = int(gl_FragCoord.x);\n  vec2 position = gl_SamplePosition;\n" +
-      body + "\n}\n";
-  const char* vertexText =
-      "#version 450 core\nvoid main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);"
-      " gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }";
-  const char* fragmentText = fragment.c_str();
-  const GLuint vertex = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexText);
-  const GLuint program = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentText);
-  GLuint pipeline = 0, vao = 0;
-  glCreateProgramPipelines(1, &pipeline);
-  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex);
-  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, program);
-  glCreateVertexArrays(1, &vao);
-  glBindFramebuffer(GL_FRAMEBUFFER, target);
-  glViewport(0, 0, kWidth, kHeight);
-  glDisable(GL_BLEND);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_ALWAYS);
-  glDepthMask(GL_TRUE);
-  glUseProgram(0);
-  glBindProgramPipeline(pipeline);
-  glBindVertexArray(vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindProgramPipeline(0);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_DEPTH_TEST);
-  glDeleteProgramPipelines(1, &pipeline);
-  glDeleteProgram(vertex);
-  glDeleteProgram(program);
-  glDeleteVertexArrays(1, &vao);
-}
-
 float toLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 float toDisplay(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
@@ -76,7 +39,7 @@ struct ReconstructFixture {
   std::vector<uint8_t> run(const std::string& body) {
     retroaa::Plugin& plugin = hooks->plugin();
     EXPECT_NE(plugin.prepassFramebuffer(), 0u);
-    drawPerSample(plugin.prepassFramebuffer(), body);
+    writePerSample(plugin.prepassFramebuffer(), kWidth, kHeight, body);
     retroaa::FrameInfo info{verticalFovFor(0.8f, kWidth, kHeight), 0.1f, 100.0f};
     EXPECT_TRUE(plugin.resolve(info));
     EXPECT_TRUE(plugin.post());

@@ -72,6 +72,8 @@ GLuint fullscreenVertexProgram() {
   return glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertex);
 }
 
+}  // namespace
+
 // Draws one full-screen triangle with a separable fragment program; deletes what it made.
 void drawWithFragment(const char* fragmentSource, const std::function<void(GLuint)>& setUniforms) {
   const GLuint vertex = fullscreenVertexProgram();
@@ -99,7 +101,23 @@ void drawWithFragment(const char* fragmentSource, const std::function<void(GLuin
   glDeleteProgram(fragment);
   glDeleteVertexArrays(1, &vao);
 }
-}  // namespace
+
+void writePerSample(GLuint target, int width, int height, const std::string& body) {
+  const std::string fragment =
+      "#version 450 core\nlayout(location = 2) out vec4 outNormal;\n"
+      "void main() {  // reading gl_SamplePosition runs this once per sample\n"
+      "  int x = int(gl_FragCoord.x);\n  vec2 position = gl_SamplePosition;\n" +
+      body + "\n}\n";
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, width, height);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  drawWithFragment(fragment.c_str(), [](GLuint) {});
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+}
 
 int fillGeometry(retroaa::Plugin& plugin, int width, int height,
                  const std::vector<std::vector<SyntheticSample>>& pixels) {

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -49,6 +50,14 @@ SyntheticSample surfaceSample(float depthMetres, glm::vec3 normal = {0, 0, 1}, g
 // over it, keeping its proportions. Returns the allocated sample count.
 int fillGeometry(retroaa::Plugin& plugin, int width, int height,
                  const std::vector<std::vector<SyntheticSample>>& pixels);
+
+// Draws one full-screen triangle with a separable fragment program into the bound framebuffer.
+void drawWithFragment(const char* fragmentSource, const std::function<void(GLuint program)>& setUniforms);
+
+// Writes every sample of `target` (depth test ALWAYS): `body` runs once per sample with `int x` (the
+// pixel column) and `vec2 position` (the sample's position in its pixel) and sets gl_FragDepth and, where
+// the target keeps one, `outNormal` (location 2).
+void writePerSample(GLuint target, int width, int height, const std::string& body);
 
 // A stand-in for a host lighting pass: light = albedo, read from the host's colour attachment.
 void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height);
