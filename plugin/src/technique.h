@@ -7,6 +7,7 @@
 #include "methods/methods.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace retroaa {
@@ -38,6 +39,54 @@ class Technique {
   // Whether the GL objects built for the config it was created under still serve `config`; if not,
   // the plugin rebuilds the technique. (A new sample count or layout rebuilds every technique.)
   virtual bool keepsObjectsFor(const Config& config) const = 0;
+};
+
+// Where a post filter finds each pixel's sub-sample depth (and normals): a multisampled prepass it owns
+// and hands the host (Plugin::prepassFramebuffer: depth, and with `withNormals` the output at the
+// NormalGloss location in RG16F, x and y of the unit normal), or, stacked on a G-buffer method, the MSAA
+// G-buffer's own depth and normals. `coverage` and `reconstruct` read their sub-samples through it.
+struct SampleGeometry {
+  GlTexture depthTexture, normalTexture;  // the prepass's; empty when reading the MSAA G-buffer
+  GlFramebuffer prepass;
+  GLuint depth = 0, normal = 0;  // what the filter reads (normal 0: none)
+  bool packedNormals = false;    // RG16F x, y (the prepass) rather than the G-buffer's xyz
+  bool ownsPrepass = false;
+  int requestedSamples = 0, samples = 1;
+  std::vector<float> samplePositions;  // x, y per sample, in the pixel (the driver's)
+  uint64_t bytes = 0;
+
+  static Result<SampleGeometry> create(PluginContext& context, SharedTargets& shared, bool ownPrepass, bool withNormals,
+                                       const std::string& label);
+  // Whether the objects still serve `config`, given whether the method owns a prepass under it.
+  bool servesConfig(const Config& config, bool ownPrepassUnderConfig) const {
+    return ownPrepassUnderConfig == ownsPrepass && (!ownsPrepass || config.samples == requestedSamples);
+  }
+};
+
+// A post filter over SampleGeometry: it owns the prepass when the config's method is `prepassMethod`
+// and reads the MSAA G-buffer when stacked on another.
+class SampleGeometryTechnique : public Technique {
+ public:
+  GLuint prepassFramebuffer() const override { return geometry_.prepass.get(); }
+  int samples() const override { return geometry_.samples; }
+  uint64_t bytes() const override { return geometry_.bytes; }
+  bool keepsObjectsFor(const Config& config) const override {
+    return geometry_.servesConfig(config, config.method == prepassMethod_);
+  }
+
+ protected:
+  Status createGeometry(PluginContext& context, SharedTargets& shared, Method prepassMethod, bool withNormals,
+                        const std::string& label) {
+    prepassMethod_ = prepassMethod;
+    auto geometry = SampleGeometry::create(context, shared, context.config.method == prepassMethod, withNormals, label);
+    if (!geometry) return geometry.error();
+    geometry_ = std::move(geometry.value());
+    return Status::ok();
+  }
+  SampleGeometry geometry_;
+
+ private:
+  Method prepassMethod_ = Method::Off;
 };
 
 // What a row needs of the shared pieces (slices imply the MSAA G-buffer).
