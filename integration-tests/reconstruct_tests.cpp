@@ -119,6 +119,15 @@ TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
   for (size_t i = 0; i < off.rgb.size(); i += 3) changed += off.rgb[i] != rebuilt.rgb[i];
   EXPECT_GT(changed, 0);
   EXPECT_LT(changed, int(off.rgb.size() / 3) / 4);
+  // Before tonemapping: the same pass on the light target, with a copy of it (8 B/px more).
+  const app::DisplayImage radiance = host.render("reconstruct@reconstruct_before_tonemap=on");
+  EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, stats.bytesHeld + uint64_t(64 * 48) * 8u);
+  EXPECT_EQ(host.hooks->plugin().stats().evaluationsPerPixel(), 1.0);
+  int changedBefore = 0;
+  for (size_t i = 0; i < off.rgb.size(); i += 3) changedBefore += off.rgb[i] != radiance.rgb[i];
+  EXPECT_GT(changedBefore, 0);
+  EXPECT_LT(changedBefore, int(off.rgb.size() / 3) / 4);
+  EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();
   host.render("resolve");
   const uint64_t resolveBytes = host.hooks->plugin().stats().bytesHeld;
   EXPECT_LE(stats.bytesHeld * 4, resolveBytes);

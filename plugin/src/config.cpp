@@ -234,6 +234,12 @@ const std::vector<Setter>& setters() {
          return parseFloat("reconstruct_tolerance", v, 0.0f, 100.0f, c.reconstructTolerance);
        },
        [](const Config& c) { return formatFloat(c.reconstructTolerance); }},
+      {{"reconstruct_before_tonemap", "off", "on, off",
+        "reconstruct on the HDR light target before tonemapping (+8 B/px) instead of on the display"},
+       [](Config& c, const std::string& v) {
+         return parseBool("reconstruct_before_tonemap", v, c.reconstructBeforeTonemap);
+       },
+       [](const Config& c) { return std::string(c.reconstructBeforeTonemap ? "on" : "off"); }},
       {{"preset", "none", "none, low, medium, high, ultra",
         "a bundle of the keys above, tuned by `make presets` (docs/tune.md#presets); keys after it override"},
        [](Config& c, const std::string& v) -> Status {

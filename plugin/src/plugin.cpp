@@ -303,6 +303,10 @@ Status Plugin::shade(const LightingFunction& lighting) {
     lighting(context.layout.lightFramebuffer);
   }
   context.frameStats.lightingEvaluations += context.pixelCount();
+  GlStateGuard guard;
+  SharedTargets shared = impl_->shared();
+  for (ActiveTechnique& active : impl_->techniques)
+    if (Status status = active.technique->afterLighting(context, shared, impl_->lastFrame); !status) return status;
   return Status::ok();
 }
 

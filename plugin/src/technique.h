@@ -27,6 +27,8 @@ class Technique {
   // How the slices light this method (techniques whose row asks for slices). Default: 1 / count
   // weights, sample s in slice s.
   virtual SliceRenderer::Plan slicePlan(PluginContext&, SharedTargets&) { return {}; }
+  // After the host's lighting wrote its light target, before its tonemap (single-slice methods).
+  virtual Status afterLighting(PluginContext&, SharedTargets&, const FrameInfo&) { return Status::ok(); }
   // After the host's tonemap, on the post target (techniques whose row asks for it).
   virtual Status post(PluginContext&, SharedTargets&, const FrameInfo&) { return Status::ok(); }
   // A multisampled framebuffer the host draws its models into once more (Plugin::prepassFramebuffer; 0: none).

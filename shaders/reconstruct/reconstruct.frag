@@ -9,8 +9,9 @@
 // A sub-sample no neighbour matches (a wire thinner than a pixel that no pixel centre hit) cannot be
 // rebuilt and keeps the pixel's colour. Colours are mixed in linear light (the display holds sRGB-encoded
 // values): averaging the encoded values darkens every blended edge, 0.8 dB of edge PSNR on the demo.
-// The plugin prepends SAMPLES, LOGARITHMIC_DEPTH, HAS_NORMALS and PACKED_SAMPLE_NORMALS.
-layout(binding = 0) uniform sampler2D uInput;           // the display image
+// The plugin prepends SAMPLES, LOGARITHMIC_DEPTH, HAS_NORMALS, PACKED_SAMPLE_NORMALS and RADIANCE (run
+// on the HDR light target before tonemapping instead of on the display).
+layout(binding = 0) uniform sampler2D uInput;           // the display image (or the light target)
 layout(binding = 1) uniform sampler2D uPixelDepth;      // the host's single-sample depth buffer
 layout(binding = 2) uniform sampler2D uPixelNormal;     // the host's single-sample normal (xyz)
 layout(binding = 3) uniform sampler2DMS uSampleDepth;   // multisampled depth of the same frame
@@ -24,8 +25,13 @@ out vec4 outColour;
 
 const float kSpatialSigma = 0.75;  // pixels: neighbours nearer the sub-sample weigh more
 
+#if RADIANCE  // the HDR light target: already linear
+vec3 toLinear(vec3 c) { return c; }
+vec3 toDisplay(vec3 c) { return c; }
+#else
 vec3 toLinear(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c)); }
 vec3 toDisplay(vec3 c) { return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c)); }
+#endif
 
 struct Geometry {
   float depth;  // metres

@@ -97,6 +97,9 @@ struct Config {
   // c of the reconstruction's depth test (Eq. 1 style), [0, 100]: a sub-sample belongs to a shaded pixel
   // whose depth is within min(d)·tan(hfov/width)·c of its own (and whose normal agrees).
   float reconstructTolerance = 2.0f;
+  // Reconstruct on the host's HDR light target between lighting and tonemapping (radiance mixes as the
+  // ground truth's supersamples do; +8 B/px for a copy) instead of on the display after tonemapping.
+  bool reconstructBeforeTonemap = false;
   // A GPU-time budget for the plugin's passes in ms, [0, 1000]; 0 is off. With `adaptive` (or `edge`
   // with the depth detector) a damped controller scales the refinement frame to frame to stay near it;
   // it times the passes itself (timer queries). Free to change every frame.

@@ -23,24 +23,57 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     const GBufferLayout& layout = context.layout;
     for (const Attachment& a : layout.attachments)
       if (a.role == AttachmentRole::NormalGloss) t.pixelNormal_ = a.texture;
+    t.beforeTonemap_ = context.config.reconstructBeforeTonemap;
+    if (t.beforeTonemap_) {  // a copy of the light target to read neighbours from while writing it
+      GLint format = GL_RGBA16F;
+      glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+      t.radiance_ = makeTexture(context, GLenum(format), layout.width, layout.height, 0, "reconstruct.radiance",
+                                t.geometry_.bytes);
+    }
     const bool logarithmic = layout.depthBufferEncoding == DepthBufferEncoding::Logarithmic;
-    auto program = context.shaders->program("common/fullscreen.vert", "reconstruct/reconstruct.frag",
-                                            defineLine("SAMPLES", t.geometry_.samples) +
-                                                defineLine("LOGARITHMIC_DEPTH", logarithmic) +
-                                                defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
-                                                defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals),
-                                            {"uSamplePositions", "uNear", "uFar", "uFootprintTan", "uTolerance"});
+    auto program = context.shaders->program(
+        "common/fullscreen.vert", "reconstruct/reconstruct.frag",
+        defineLine("SAMPLES", t.geometry_.samples) + defineLine("LOGARITHMIC_DEPTH", logarithmic) +
+            defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
+            defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) + defineLine("RADIANCE", t.beforeTonemap_),
+        {"uSamplePositions", "uNear", "uFar", "uFootprintTan", "uTolerance"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
+  Status afterLighting(PluginContext& context, SharedTargets&, const FrameInfo& frame) override {
+    if (!beforeTonemap_) return Status::ok();
+    ScopedPass timed(context, "reconstruct");
+    const GBufferLayout& layout = context.layout;
+    glCopyImageSubData(layout.lightTexture, GL_TEXTURE_2D, 0, 0, 0, 0, radiance_.get(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       layout.width, layout.height, 1);
+    context.beginFullscreenPass(layout.lightFramebuffer);
+    glBindTextureUnit(0, radiance_.get());
+    draw(context, frame);
+    return Status::ok();
+  }
+
   Status post(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
+    if (beforeTonemap_) return Status::ok();
     ScopedPass timed(context, "reconstruct");
     const GBufferLayout& layout = context.layout;
     shared.post->bindAsOutput(context);
-    program_.use();
     shared.post->bindInput(layout, 0);
+    draw(context, frame);
+    shared.post->copyBack(layout);
+    return Status::ok();
+  }
+
+  bool keepsObjectsFor(const Config& config) const override {
+    return SampleGeometryTechnique::keepsObjectsFor(config) && config.reconstructBeforeTonemap == beforeTonemap_;
+  }
+
+ private:
+  // The pass itself: its input bound on unit 0, its target bound.
+  void draw(PluginContext& context, const FrameInfo& frame) {
+    const GBufferLayout& layout = context.layout;
+    program_.use();
     glBindTextureUnit(1, layout.depthStencilTexture);
     glBindTextureUnit(2, pixelNormal_);
     glBindTextureUnit(3, geometry_.depth);
@@ -51,13 +84,12 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     program_.set("uFootprintTan", context.footprintTan(frame));
     program_.set("uTolerance", context.config.reconstructTolerance);
     context.drawFullscreen();
-    shared.post->copyBack(layout);
-    return Status::ok();
   }
 
- private:
   ShaderProgram program_;
+  GlTexture radiance_;      // before tonemapping: the light target as lit
   GLuint pixelNormal_ = 0;  // the host's single-sample normal attachment (0: the layout has none)
+  bool beforeTonemap_ = false;
 };
 
 }  // namespace
