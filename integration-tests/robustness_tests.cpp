@@ -79,9 +79,10 @@ TEST(Robustness, EveryMethodOnEveryHardCaseIsFiniteAndNoWorseThanOff) {
                                  "hard cases", ".");
   frame.renderer = std::make_unique<host::Renderer>(frame.scene, kWidth, kHeight);
   const host::Camera camera = frame.scene.camera;
-  const std::vector<std::string> methods = {"off",         "resolve",        "resolve/front", "resolve/back",
-                                            "resolve/fso", "resolve/window", "resolve/mean",  "edge",
-                                            "adaptive",    "aggregate",      "per-sample"};
+  const std::vector<std::string> methods = {
+      "off",         "resolve",        "resolve/front", "resolve/back",
+      "resolve/fso", "resolve/window", "resolve/mean",  "resolve+reconstruct@reconstruct_before_tonemap=on",
+      "edge",        "adaptive",       "aggregate",     "per-sample"};
   std::map<std::string, std::map<std::string, Cell>> matrix[2];
   const int sampleCounts[] = {2, 4};
   for (int n = 0; n < 2; ++n)
