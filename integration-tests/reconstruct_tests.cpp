@@ -2,6 +2,7 @@
 // sample into the plugin's prepass), and the method through the host's own model prepass.
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace testing_support;
@@ -133,4 +134,19 @@ TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
   EXPECT_LE(stats.bytesHeld * 4, resolveBytes);
   host.render("resolve+reconstruct");  // the MSAA G-buffer's depth and normals: no prepass
   EXPECT_EQ(host.hooks->plugin().prepassFramebuffer(), 0u);
+}
+
+TEST(Reconstruct, StackedAtOneSampleIsTurnedOffWithAWord) {
+  // At 1× the G-buffer has no sub-samples to read (its textures are not even multisampled).
+  PatchedHost host("default", 32, 24);
+  const app::DisplayImage stacked = host.render("resolve+reconstruct@samples=1");
+  const std::vector<std::string> warnings = host.hooks->plugin().warnings();
+  EXPECT_NE(std::find_if(warnings.begin(), warnings.end(),
+                         [](const std::string& w) {
+                           return w.find("reconstruct_filter needs at least 2 samples and samples=1") !=
+                                  std::string::npos;
+                         }),
+            warnings.end());
+  EXPECT_EQ(stacked.rgb, host.render("resolve@samples=1").rgb);
+  EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();
 }

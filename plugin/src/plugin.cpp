@@ -137,11 +137,13 @@ struct Plugin::Impl {
                    std::to_string(method->minSamples));
       requested.samples = method->minSamples;
     }
-    if (requested.coverageFilter && usesMsaa(requested.method) && requested.samples < 2) {
-      context.warn("coverage_filter needs at least 2 samples and samples=" + std::to_string(requested.samples) +
-                   "; the filter is off");
-      requested.coverageFilter = false;
-    }
+    // A stacked filter that reads the MSAA G-buffer's sub-samples (+coverage, +reconstruct) has none at 1×.
+    for (const TechniqueRow& row : techniqueRegistry())
+      if (row.stackedOn && row.stackedOn(requested) && requested.samples < row.info.minSamples) {
+        context.warn(std::string(row.info.stackKey) + " needs at least " + std::to_string(row.info.minSamples) +
+                     " samples and samples=" + std::to_string(requested.samples) + "; the filter is off");
+        applySetting(requested, row.info.stackKey, "off");
+      }
     if (requested.measureGpuTime && !caps.timerQuery) {
       context.warn("measure_gpu_time=on but the context has no timer queries: pass times are not measured");
       requested.measureGpuTime = false;
