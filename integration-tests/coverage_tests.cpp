@@ -10,11 +10,6 @@ namespace {
 
 constexpr int kWidth = 16, kHeight = 8;
 
-// Writes the multisampled depth of `target` per sample: depth(pixel x, sample position) in a shader.
-void writeSampleDepth(GLuint target, const char* depthExpression) {
-  writePerSample(target, kWidth, kHeight, std::string("gl_FragDepth = ") + depthExpression + ";");
-}
-
 struct CoverageFixture {
   SyntheticFrame frame{kWidth, kHeight};
   std::unique_ptr<patch::RetroaaHooks> hooks;
@@ -34,16 +29,8 @@ struct CoverageFixture {
     glTextureSubImage2D(t.depthStencil, 0, 0, 0, kWidth, kHeight, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, depth.data());
   }
   std::vector<uint8_t> filter(const char* sampleDepth) {
-    retroaa::Plugin& plugin = hooks->plugin();
-    EXPECT_NE(plugin.prepassFramebuffer(), 0u);
-    writeSampleDepth(plugin.prepassFramebuffer(), sampleDepth);
-    retroaa::FrameInfo info{verticalFovFor(0.8f, kWidth, kHeight), 0.1f, 100.0f};
-    EXPECT_TRUE(plugin.resolve(info));
-    EXPECT_TRUE(plugin.post());
-    std::vector<uint8_t> out(kWidth * kHeight * 4);
-    glGetTextureImage(frame.renderer->targets().displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()),
-                      out.data());
-    return out;
+    return runPrepassFilter(hooks->plugin(), frame.renderer->targets().displayTexture, kWidth, kHeight,
+                            std::string("gl_FragDepth = ") + sampleDepth + ";");
   }
 };
 

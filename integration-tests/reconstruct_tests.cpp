@@ -38,16 +38,7 @@ struct ReconstructFixture {
   }
   // `body` sets gl_FragDepth and outNormal of each sub-sample from x and position.
   std::vector<uint8_t> run(const std::string& body) {
-    retroaa::Plugin& plugin = hooks->plugin();
-    EXPECT_NE(plugin.prepassFramebuffer(), 0u);
-    writePerSample(plugin.prepassFramebuffer(), kWidth, kHeight, body);
-    retroaa::FrameInfo info{verticalFovFor(0.8f, kWidth, kHeight), 0.1f, 100.0f};
-    EXPECT_TRUE(plugin.resolve(info));
-    EXPECT_TRUE(plugin.post());
-    std::vector<uint8_t> out(kWidth * kHeight * 4);
-    glGetTextureImage(frame.renderer->targets().displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()),
-                      out.data());
-    return out;
+    return runPrepassFilter(hooks->plugin(), frame.renderer->targets().displayTexture, kWidth, kHeight, body);
   }
 };
 

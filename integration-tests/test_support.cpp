@@ -119,6 +119,17 @@ void writePerSample(GLuint target, int width, int height, const std::string& bod
   glDisable(GL_DEPTH_TEST);
 }
 
+std::vector<uint8_t> runPrepassFilter(retroaa::Plugin& plugin, GLuint displayTexture, int width, int height,
+                                      const std::string& body) {
+  EXPECT_NE(plugin.prepassFramebuffer(), 0u);
+  writePerSample(plugin.prepassFramebuffer(), width, height, body);
+  EXPECT_TRUE(plugin.resolve({verticalFovFor(0.8f, width, height), 0.1f, 100.0f}));
+  EXPECT_TRUE(plugin.post());
+  std::vector<uint8_t> out(size_t(width) * height * 4);
+  glGetTextureImage(displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
+  return out;
+}
+
 int fillGeometry(retroaa::Plugin& plugin, int width, int height,
                  const std::vector<std::vector<SyntheticSample>>& pixels) {
   const int n = plugin.stats().samples;

@@ -59,6 +59,12 @@ void drawWithFragment(const char* fragmentSource, const std::function<void(GLuin
 // the target keeps one, `outNormal` (location 2).
 void writePerSample(GLuint target, int width, int height, const std::string& body);
 
+// One frame of a post filter over a prepass (coverage, reconstruct) on hand-written data: writes every
+// sub-sample of plugin.prepassFramebuffer() with `body` (writePerSample), resolves with a horizontal fov of
+// 0.8 rad (near 0.1 m, far 100 m), runs post() and reads `displayTexture` back (RGBA8, GL rows).
+std::vector<uint8_t> runPrepassFilter(retroaa::Plugin& plugin, GLuint displayTexture, int width, int height,
+                                      const std::string& body);
+
 // A stand-in for a host lighting pass: light = albedo, read from the host's colour attachment.
 void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height);
 
