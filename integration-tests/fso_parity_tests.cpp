@@ -12,8 +12,6 @@
 #include "depth_codec.h"
 #include "test_support.h"
 
-#include <glm/gtc/packing.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -28,8 +26,10 @@ constexpr float kFovY = 0.87266463f;  // 50°
 constexpr float kFarZ = 2.0e6f;       // the host scene's far plane: FSO's GLOBAL_FAR_Z
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-float throughHalf(float v) { return glm::unpackHalf1x16(glm::packHalf1x16(v)); }
-glm::vec4 throughHalf(glm::vec4 v) { return {throughHalf(v.x), throughHalf(v.y), throughHalf(v.z), throughHalf(v.w)}; }
+glm::vec4 throughHalf(glm::vec4 v) {
+  using testing_support::throughHalf;
+  return {throughHalf(v.x), throughHalf(v.y), throughHalf(v.z), throughHalf(v.w)};
+}
 glm::vec4 throughUnorm8(glm::vec4 v) { return glm::round(glm::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f; }
 float throughUnorm24(float v) { return float(std::round(double(v) * 16777215.0) / 16777215.0); }
 

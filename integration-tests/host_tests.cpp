@@ -2,7 +2,6 @@
 #include "depth_codec.h"
 #include "test_support.h"
 
-#include <glm/gtc/packing.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -16,7 +15,6 @@ namespace fs = std::filesystem;
 namespace codec = host::depth_codec;
 
 namespace {
-float throughHalf(float value) { return glm::unpackHalf1x16(glm::packHalf1x16(value)); }
 
 std::string sceneErrorOf(const std::string& json) {
   try {

@@ -5,6 +5,7 @@
 
 #include <sys/wait.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include <cstdio>
 
@@ -39,6 +40,8 @@ app::DisplayImage PatchedHost::render(const std::string& methodSpec, const retro
 host::GroundTruth PatchedHost::groundTruth(int samplesPerAxis) {
   return host::renderGroundTruth(*renderer, scene.camera, samplesPerAxis);
 }
+
+float throughHalf(float value) { return glm::unpackHalf1x16(glm::packHalf1x16(value)); }
 
 float verticalFovFor(float horizontalFov, int width, int height) {
   return 2.0f * std::atan(std::tan(horizontalFov * 0.5f) * float(height) / float(width));

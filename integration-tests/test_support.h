@@ -20,6 +20,9 @@ namespace testing_support {
 // Created on first use, lives until the process exits.
 host::HeadlessContext& context();
 
+// `value` as an FP16 target stores it (round to nearest even).
+float throughHalf(float value);
+
 // Path of a file in integration-tests/ (scenes, fixtures).
 std::string testDataPath(const std::string& relative);
 

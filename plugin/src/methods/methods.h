@@ -16,6 +16,9 @@ namespace retroaa {
 // The uniforms MsaaGBuffer::beginPass sets, for the uniform list of a program that reads the G-buffer.
 #define RETROAA_GBUFFER_PASS_UNIFORMS RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan"
 
+// The index of the layout's first attachment with `role`; -1 where it has none.
+int findRole(const GBufferLayout& layout, AttachmentRole role);
+
 class MsaaGBuffer {
  public:
   static Result<std::unique_ptr<MsaaGBuffer>> create(PluginContext& context, int samples);

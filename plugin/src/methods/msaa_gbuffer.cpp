@@ -38,12 +38,13 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   return gbuffer;
 }
 
-namespace {
 int findRole(const GBufferLayout& layout, AttachmentRole role) {
   for (size_t i = 0; i < layout.attachments.size(); ++i)
     if (layout.attachments[i].role == role) return static_cast<int>(i);
   return -1;
 }
+
+namespace {
 // FSO's shaders get GLOBAL_FAR_Z as a #define; ours too, printed so that it reads back exactly.
 std::string fsoFarDefine(const DepthEncoding& encoding) {
   if (encoding.kind != DepthEncoding::Kind::FsoCompressedViewZ) return "";

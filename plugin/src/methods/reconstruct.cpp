@@ -21,8 +21,8 @@ class ReconstructTechnique : public SampleGeometryTechnique {
       return status.error();
     ReconstructTechnique& t = *technique;
     const GBufferLayout& layout = context.layout;
-    for (const Attachment& a : layout.attachments)
-      if (a.role == AttachmentRole::NormalGloss) t.pixelNormal_ = a.texture;
+    if (const int normal = findRole(layout, AttachmentRole::NormalGloss); normal >= 0)
+      t.pixelNormal_ = layout.attachments[size_t(normal)].texture;
     t.beforeTonemap_ = context.config.reconstructBeforeTonemap;
     if (t.beforeTonemap_) {  // a copy of the light target to read neighbours from while writing it
       GLint format = GL_RGBA16F;

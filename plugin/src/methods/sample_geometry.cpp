@@ -7,10 +7,7 @@ Result<SampleGeometry> SampleGeometry::create(PluginContext& context, SharedTarg
                                               bool withNormals, const std::string& label) {
   SampleGeometry g;
   const GBufferLayout& layout = context.layout;
-  int normalIndex = -1;
-  for (size_t i = 0; i < layout.attachments.size(); ++i)
-    if (layout.attachments[i].role == AttachmentRole::NormalGloss) normalIndex = int(i);
-  if (!withNormals) normalIndex = -1;
+  const int normalIndex = withNormals ? findRole(layout, AttachmentRole::NormalGloss) : -1;
   g.ownsPrepass = ownPrepass;
   g.requestedSamples = context.config.samples;
   GLuint framebuffer = 0;
