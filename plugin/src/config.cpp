@@ -100,6 +100,10 @@ constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWei
                                             ResolveWeighting::Back,   ResolveWeighting::Fso,
                                             ResolveWeighting::Mean,   ResolveWeighting::Window};
 constexpr FxaaQuality kFxaaQualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
+constexpr SmaaQuality kSmaaQualities[] = {SmaaQuality::Low, SmaaQuality::Medium, SmaaQuality::High,
+                                          SmaaQuality::Ultra};
+constexpr SmaaEdgeDetection kSmaaEdgeDetections[] = {SmaaEdgeDetection::Luma, SmaaEdgeDetection::Colour,
+                                                     SmaaEdgeDetection::Depth};
 
 struct Setter {
   ConfigKey key;
@@ -275,6 +279,21 @@ const std::vector<Setter>& setters() {
          return parseFloat("fxaa_edge_threshold", v, 0.063f, 0.333f, c.fxaaEdgeThreshold);
        },
        [](const Config& c) { return formatFloat(c.fxaaEdgeThreshold); }},
+      {{"smaa", "off", "on, off", "SMAA 1x after tonemapping, stacked on the method (before +fxaa)"},
+       [](Config& c, const std::string& v) { return parseBool("smaa", v, c.smaa); },
+       [](const Config& c) { return std::string(c.smaa ? "on" : "off"); }},
+      {{"smaa_quality", "high", "low, medium, high, ultra",
+        "SMAA preset: threshold 0.15/0.1/0.1/0.05, search 8/16/32/64 px each way, diagonals and corner rounding "
+        "from high on; cost grows with it (FreeSpace Open's -aa_preset 3..6)"},
+       [](Config& c, const std::string& v) { return parseEnum("smaa_quality", v, kSmaaQualities, c.smaaQuality); },
+       [](const Config& c) { return std::string(toString(c.smaaQuality)); }},
+      {{"smaa_edge_detection", "luma", "luma, colour, depth",
+        "what SMAA finds edges in: luma contrast, per-channel contrast (chroma edges too), or view-depth steps "
+        "(geometry only: keeps texture detail, misses shading edges)"},
+       [](Config& c, const std::string& v) {
+         return parseEnum("smaa_edge_detection", v, kSmaaEdgeDetections, c.smaaEdgeDetection);
+       },
+       [](const Config& c) { return std::string(toString(c.smaaEdgeDetection)); }},
       {{"shader_override_dir", "", "a folder",
         "files there replace built-in shaders of the same path; compile errors fall back"},
        [](Config& c, const std::string& v) { return c.shaderOverrideDirectory = v, Status::ok(); },
@@ -310,6 +329,25 @@ const char* toString(FxaaQuality quality) {
     case FxaaQuality::Low: return "low";
     case FxaaQuality::Medium: return "medium";
     case FxaaQuality::High: return "high";
+  }
+  return "?";
+}
+
+const char* toString(SmaaQuality quality) {
+  switch (quality) {
+    case SmaaQuality::Low: return "low";
+    case SmaaQuality::Medium: return "medium";
+    case SmaaQuality::High: return "high";
+    case SmaaQuality::Ultra: return "ultra";
+  }
+  return "?";
+}
+
+const char* toString(SmaaEdgeDetection detection) {
+  switch (detection) {
+    case SmaaEdgeDetection::Luma: return "luma";
+    case SmaaEdgeDetection::Colour: return "colour";
+    case SmaaEdgeDetection::Depth: return "depth";
   }
   return "?";
 }
@@ -430,6 +468,7 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
     } else {
       config.samples = static_cast<int>(n);
       if (config.method == Method::Fxaa) config.fxaa = true;          // -aa_preset came first: keep FXAA
+      if (config.method == Method::Smaa) config.smaa = true;          // … or SMAA
       if (!usesMsaa(config.method)) config.method = Method::Resolve;  // FSO's MSAA is the resolve
     }
     return Status::ok();
@@ -437,14 +476,21 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
   if (flag == "-aa_preset") {
     if (!isInteger || n < 0 || n > 6)
       return invalid("-aa_preset: value " + quoted(value) + " is not an integer in 0..6");
-    static const FxaaQuality qualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
-    if (n >= 3)
-      warnings.push_back("-aa_preset " + value + " selects SMAA in FreeSpace Open; retroaa uses FXAA high instead");
-    config.fxaaQuality = n >= 3 ? FxaaQuality::High : qualities[n];
-    if (config.method == Method::Off)
-      config.method = Method::Fxaa;
-    else if (config.method != Method::Fxaa)
-      config.fxaa = true;
+    // FreeSpace Open's presets: 0..2 FXAA low/medium/high, 3..6 SMAA low/medium/high/ultra.
+    const bool smaa = n >= 3;
+    if (smaa)
+      config.smaaQuality = kSmaaQualities[n - 3];
+    else
+      config.fxaaQuality = kFxaaQualities[n];
+    const Method post = smaa ? Method::Smaa : Method::Fxaa;
+    // The last -aa_preset wins: one post filter, as in FreeSpace Open.
+    if (config.method == Method::Off || config.method == Method::Fxaa || config.method == Method::Smaa) {
+      config.method = post;
+      config.fxaa = config.smaa = false;
+    } else {
+      config.fxaa = !smaa;
+      config.smaa = smaa;
+    }
     return Status::ok();
   }
   return invalid("unknown FreeSpace Open flag " + quoted(flag) + " (known: -msaa, -aa_preset)");

@@ -13,6 +13,8 @@ Result<std::unique_ptr<Technique>> createAdaptiveTechnique(PluginContext&, Share
 Result<std::unique_ptr<Technique>> createAggregateTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createCoverageTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createReconstructTechnique(PluginContext&, SharedTargets&);
+Result<std::unique_ptr<Technique>> createSmaaTechnique(PluginContext&, SharedTargets&);
+Result<std::unique_ptr<Technique>> createSmaaS2xTechnique(PluginContext&, SharedTargets&);
 
 namespace {
 
@@ -33,6 +35,13 @@ std::vector<TechniqueRow>& rows() {
        [](const Config& c) { return c.fxaa; },
        kStoragePostTarget,
        /*postLast=*/true},
+      {{Method::Smaa, "smaa", "SMAA 1x after tonemapping (FreeSpace Open's default AA, -aa_preset 3..6)", false, 1,
+        "smaa,resolve+smaa", "smaa", "smaa@smaa_quality=low,smaa@smaa_quality=medium,smaa,smaa@smaa_quality=ultra",
+        "smaa"},
+       kStoragePostTarget,
+       createSmaaTechnique,
+       [](const Config& c) { return c.smaa; },
+       kStoragePostTarget},
       {{Method::Resolve, "resolve", "MSAA G-buffer and a depth-aware resolve into the host's G-buffer", true, 1,
         "resolve,resolve/front,resolve/back,resolve/fso,resolve/window,resolve/mean,resolve+fxaa", "resolve",
         "resolve@samples=2,resolve,resolve@samples=8,resolve/fso,resolve/window,resolve+fxaa,resolve+coverage"},
@@ -64,6 +73,11 @@ std::vector<TechniqueRow>& rows() {
         "aggregate", "aggregate", "aggregate@aggregate_count=1,aggregate,aggregate@aggregate_count=3"},
        kSliced,
        createAggregateTechnique},
+      {{Method::SmaaS2x, "smaa-s2x",
+        "SMAA S2x: SMAA 1x on two single-sample slices of the MSAA G-buffer, each lit by the host, blended 50/50",
+        true, 2, "smaa-s2x", "smaa-s2x", "smaa-s2x@smaa_quality=medium,smaa-s2x"},
+       kSliced,
+       createSmaaS2xTechnique},
       {{Method::PerSample, "per-sample", "every sample lit through slices: the quality reference at rate N", true, 1,
         "per-sample", "per-sample", "per-sample@samples=2,per-sample,per-sample@samples=8"},
        kSliced,

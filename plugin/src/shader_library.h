@@ -27,6 +27,7 @@ class ShaderProgram {
   void set(const char* name, int value) const { glProgramUniform1i(get(), location(name), value); }
   void set(const char* name, float value) const { glProgramUniform1f(get(), location(name), value); }
   void set(const char* name, float x, float y) const { glProgramUniform2f(get(), location(name), x, y); }
+  void setVec4(const char* name, const float* xyzw) const { glProgramUniform4fv(get(), location(name), 1, xyzw); }
   void setVec2Array(const char* name, int count, const float* xy) const {
     glProgramUniform2fv(get(), location(name), count, xy);
   }

@@ -27,7 +27,7 @@ TEST(Config, UnknownKeyNamesKnownKeys) {
 TEST(Config, BadValuesNameKeyValueAndAllowedSet) {
   Config config;
   Status s = applySetting(config, "method", "taa");
-  EXPECT_NE(s.error().message.find("'method': unknown value 'taa' (allowed: off, fxaa, resolve"), std::string::npos)
+  EXPECT_NE(s.error().message.find("'method': unknown value 'taa' (allowed: off, fxaa, smaa, resolve"), std::string::npos)
       << s.error().message;
   s = applySetting(config, "samples", "3");
   EXPECT_NE(s.error().message.find("unsupported sample count '3' (allowed: 1, 2, 4, 8, 16)"), std::string::npos);
@@ -85,8 +85,18 @@ TEST(Config, FreeSpaceOpenFlags) {
   EXPECT_EQ(config.method, Method::Off);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("-msaa 6"), std::string::npos);
-  ASSERT_TRUE(applyFsoFlag(config, "-aa_preset", "5", warnings));  // SMAA in FSO
-  EXPECT_EQ(warnings.size(), 2u);
+  ASSERT_TRUE(applyFsoFlag(config, "-aa_preset", "5", warnings));  // SMAA high, as in FSO
+  EXPECT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(config.method, Method::Smaa);
+  EXPECT_EQ(config.smaaQuality, SmaaQuality::High);
+  ASSERT_TRUE(applyFsoFlag(config, "-msaa", "4", warnings));  // preset first, then msaa: SMAA stacks on resolve
+  EXPECT_EQ(config.method, Method::Resolve);
+  EXPECT_TRUE(config.smaa);
+  EXPECT_FALSE(config.fxaa);
+  ASSERT_TRUE(applyFsoFlag(config, "-aa_preset", "0", warnings));  // the last preset wins: one post filter
+  EXPECT_TRUE(config.fxaa);
+  EXPECT_FALSE(config.smaa);
+  EXPECT_EQ(config.fxaaQuality, FxaaQuality::Low);
   EXPECT_FALSE(applyFsoFlag(config, "-aa_preset", "9", warnings));
   EXPECT_FALSE(applyFsoFlag(config, "-msaa", "four", warnings));
   EXPECT_FALSE(applyFsoFlag(config, "-smaa", "1", warnings));

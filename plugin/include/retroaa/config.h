@@ -25,6 +25,8 @@ enum class Method : uint8_t {
   Coverage,     // Pettineo: depth-only MSAA prepass, stock single-sample path, coverage filter after tonemapping (1)
   Reconstruct,  // SRAA-style: depth+normal MSAA prepass, stock single-sample shading, sub-samples rebuilt from
                 // neighbouring shaded pixels after tonemapping (1)
+  Smaa,         // Jimenez et al.: SMAA 1x after tonemapping (FreeSpace Open's default AA, -aa_preset 3..6) (1)
+  SmaaS2x,      // SMAA S2x: SMAA 1x on two single-sample slices of the MSAA G-buffer, blended 50/50 (2)
 };
 
 // How `edge` decides that a pixel's samples see more than one surface.
@@ -51,6 +53,21 @@ enum class FxaaQuality : uint8_t {
   Low,     // FXAA 3.11 preset 10: 3 search steps
   Medium,  // preset 20: 6 search steps
   High,    // preset 39: 12 search steps (FreeSpace Open's -aa_preset 2)
+};
+
+// SMAA's presets: the paper's (and its reference's) threshold, search lengths and corner rounding.
+enum class SmaaQuality : uint8_t {
+  Low,     // threshold 0.15, 4 search steps (8 px each way), no diagonals, no corner rounding
+  Medium,  // threshold 0.1, 8 steps (16 px), no diagonals, no corner rounding
+  High,    // threshold 0.1, 16 steps (32 px), 8 diagonal steps, corner rounding 25 %
+  Ultra,   // threshold 0.05, 32 steps (64 px), 16 diagonal steps, corner rounding 25 %
+};
+
+// What SMAA's first pass finds edges in.
+enum class SmaaEdgeDetection : uint8_t {
+  Luma,    // luma contrast of the tonemapped colour (the reference's default)
+  Colour,  // the largest per-channel contrast: finds chroma-only edges luma misses
+  Depth,   // relative steps in the host's view depth: geometry edges only, no texture or shading edges
 };
 
 struct Config {
@@ -109,6 +126,11 @@ struct Config {
   FxaaQuality fxaaQuality = FxaaQuality::High;
   // FXAA edge threshold relative to local contrast, [0.063, 0.333]; lower finds more edges.
   float fxaaEdgeThreshold = 0.125f;
+  // SMAA 1x after tonemapping, stacked on any lighting-stage method (`resolve+smaa`, `edge+smaa`).
+  bool smaa = false;
+  // Preset of `smaa`, `+smaa` and `smaa-s2x` (FreeSpace Open's -aa_preset 3..6 are low..ultra).
+  SmaaQuality smaaQuality = SmaaQuality::High;
+  SmaaEdgeDetection smaaEdgeDetection = SmaaEdgeDetection::Luma;
   // A folder whose files replace the built-in shaders of the same relative path (for modders);
   // a file that does not compile falls back to the built-in one with a warning naming file and line.
   std::string shaderOverrideDirectory;
@@ -154,6 +176,8 @@ RETROAA_API const char* toString(Method method);
 RETROAA_API const char* toString(ResolveWeighting weighting);
 RETROAA_API const char* toString(FxaaQuality quality);
 RETROAA_API const char* toString(EdgeDetector detector);
+RETROAA_API const char* toString(SmaaQuality quality);
+RETROAA_API const char* toString(SmaaEdgeDetection detection);
 
 // The value of one key as toConfigText writes it; empty for an unknown key.
 RETROAA_API std::string readSetting(const Config& config, const std::string& key);
@@ -169,8 +193,8 @@ RETROAA_API Status applyConfigFile(Config& config, const std::string& path);
 RETROAA_API Status applySettingsList(Config& config, const std::string& list, const std::string& sourceName);
 // FreeSpace Open's flags: `-msaa 0|4|8|16` (others warn and mean 0; N>0 selects `resolve` unless a
 // multi-sample method is already chosen) and
-// `-aa_preset 0..6` (0-2 FXAA low/medium/high; 3-6 are SMAA in FSO, which retroaa maps to FXAA high
-// with a warning). `warnings` receives what was adjusted.
+// `-aa_preset 0..6` (0-2 FXAA low/medium/high, 3-6 SMAA low/medium/high/ultra, as in FSO; stacked as
+// `+fxaa`/`+smaa` on a multi-sample method). `warnings` receives what was adjusted.
 RETROAA_API Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
                                 std::vector<std::string>& warnings);
 // Checks every field of a config built in code with the rules the text parser applies to the same key

@@ -5,6 +5,7 @@
 
 #include "../context.h"
 
+#include <array>
 #include <functional>
 
 namespace retroaa {
@@ -18,6 +19,8 @@ namespace retroaa {
 
 // The index of the layout's first attachment with `role`; -1 where it has none.
 int findRole(const GBufferLayout& layout, AttachmentRole role);
+// The #defines common/depth.glsl needs for the layout's position channel (DEPTH_CHANNEL, DEPTH_ENCODING).
+std::string depthEncodingDefines(const GBufferLayout& layout);
 
 class MsaaGBuffer {
  public:
@@ -91,6 +94,9 @@ class SliceRenderer {
     // light on unit 0 and the counts on unit 1; `bindCompositeInputs` binds the rest.
     const ShaderProgram* compositeProgram = nullptr;
     std::function<void()> bindCompositeInputs;
+    // Runs on each slice's light before it is composited (SMAA S2x filters it): given the slice and its
+    // light texture, returns the texture to composite instead. Empty: the light as lit.
+    std::function<Result<GLuint>(int slice, GLuint light)> filterSliceLight;
   };
   // Lights every slice through `lighting` and composites (weight 1 / count). Counts evaluations with
   // occlusion queries.
@@ -111,6 +117,11 @@ class SliceRenderer {
 // The order that spreads the first k of N samples over the pixel for every k: the sample nearest the
 // centre first, then each time the one farthest from those already taken. `positions` in [0, 1)².
 std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY);
+
+// SMAA's subsample indices for a sample at (x, y) in its pixel ([0, 1)², the driver's position): the
+// area-texture rows of its orthogonal offsets along x and y and of its diagonal offset (smaa.cpp).
+// The reference's S2x samples at D3D's (+¼, +¼) and (−¼, −¼) read rows (1, 1, 1, 0) and (2, 2, 2, 0).
+std::array<float, 4> smaaSubsampleIndices(float x, float y);
 
 // Where the post passes (coverage filter, FXAA) render: a plugin-owned RGBA8 copy of the host's
 // display target, copied back after each pass, and the bilinear sampler they read the display with.

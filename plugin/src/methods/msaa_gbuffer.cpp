@@ -54,6 +54,11 @@ std::string fsoFarDefine(const DepthEncoding& encoding) {
 }
 }  // namespace
 
+std::string depthEncodingDefines(const GBufferLayout& layout) {
+  return defineLine("DEPTH_CHANNEL", layout.depthChannel) + defineLine("DEPTH_ENCODING", int(layout.depthEncoding.kind)) +
+         fsoFarDefine(layout.depthEncoding);
+}
+
 std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOutputs) const {
   const size_t count = layout.attachments.size();
   std::string d = defineLine("SAMPLES", samples_) + defineLine("MULTISAMPLED", multisampled()) +
@@ -62,8 +67,7 @@ std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOut
                   defineLine("NORMAL_ATTACHMENT", findRole(layout, AttachmentRole::NormalGloss)) +
                   defineLine("ALBEDO_ATTACHMENT", findRole(layout, AttachmentRole::Albedo)) +
                   defineLine("SPECULAR_ATTACHMENT", findRole(layout, AttachmentRole::Specular)) +
-                  defineLine("DEPTH_CHANNEL", layout.depthChannel) +
-                  defineLine("DEPTH_ENCODING", int(layout.depthEncoding.kind)) + fsoFarDefine(layout.depthEncoding);
+                  depthEncodingDefines(layout);
   std::string store = "#define STORE_OUTPUTS(v)";
   for (size_t i = 0; i < count && withOutputs; ++i) {
     d += "layout(location = " + std::to_string(i) + ") out vec4 out" + std::to_string(i) + ";\n";

@@ -153,6 +153,12 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     if (slice == 0 && plan.maskAfterFirstSlice) {
       if (Status status = plan.maskAfterFirstSlice(); !status) return status;
     }
+    GLuint sliceLight = light_.get();
+    if (plan.filterSliceLight) {
+      auto filtered = plan.filterSliceLight(slice, sliceLight);
+      if (!filtered) return filtered.error();
+      sliceLight = filtered.value();
+    }
     {
       ScopedPass timed(context, "slices.composite");
       context.beginFullscreenPass(compositeTarget_.get());
@@ -161,7 +167,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
       }
-      glBindTextureUnit(0, light_.get());
+      glBindTextureUnit(0, sliceLight);
       glBindTextureUnit(1, counts_.get());
       if (plan.compositeProgram) {
         plan.compositeProgram->use();

@@ -1,0 +1,290 @@
+// `smaa` (SMAA 1x after tonemapping, as a method or stacked: `resolve+smaa`) and `smaa-s2x` (SMAA 1x on
+// two single-sample slices of the MSAA G-buffer, each lit by the host, blended 50/50): Jimenez,
+// Echevarria, Sousa, Gutierrez, "SMAA: Enhanced Subpixel Morphological Antialiasing", Eurographics
+// 2012. Three passes (shaders/smaa/): edges, blending weights (area and search lookup textures,
+// generated at build time by plugin/tools/smaa_lookup_tables.cpp), neighbourhood blending.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "../gl_state.h"
+#include "../shared_constants.h"
+#include "../technique.h"
+
+namespace retroaa {
+
+// SMAA's subsample indices (methods.h).
+// The rows hold orthogonal offsets {0, −¼, ¼, −⅛, ⅛, −⅜, ⅜} and diagonal ones {0, (¼, −¼), (−¼, ¼),
+// (⅛, −⅛), (−⅛, ⅛)}; the nearest of each is taken. Orthogonal offsets are the sample's offset from the
+// centre, negated (the reference's convention: its S2x sample at (+¼, +¼) reads rows 1, 1 and diagonal
+// row 1); the shaders' mirrored frame (y up) needs no other change.
+std::array<float, 4> smaaSubsampleIndices(float x, float y) {
+  static const float ortho[7] = {0.0f, -0.25f, 0.25f, -0.125f, 0.125f, -0.375f, 0.375f};
+  static const float diag[5][2] = {{0, 0}, {0.25f, -0.25f}, {-0.25f, 0.25f}, {0.125f, -0.125f}, {-0.125f, 0.125f}};
+  const float dx = x - 0.5f, dy = y - 0.5f;
+  auto nearestOrtho = [&](float offset) {
+    int best = 0;
+    for (int i = 1; i < 7; ++i)
+      if (std::abs(ortho[i] - offset) < std::abs(ortho[best] - offset)) best = i;
+    return float(best);
+  };
+  int bestDiag = 0;
+  float bestDistance = 1e9f;
+  for (int i = 0; i < 5; ++i) {
+    const float distance = std::hypot(diag[i][0] - dx, diag[i][1] + dy);
+    if (distance < bestDistance) bestDistance = distance, bestDiag = i;
+  }
+  return {nearestOrtho(-dx), nearestOrtho(-dy), float(bestDiag), 0.0f};
+}
+
+namespace {
+
+#include "smaa_lookup_tables.inc"
+
+struct SmaaPreset {
+  float threshold;
+  int searchSteps, diagonalSteps, cornerRounding;
+};
+
+// The reference's presets (SMAA_PRESET_LOW … ULTRA).
+SmaaPreset presetFor(SmaaQuality quality) {
+  switch (quality) {
+    case SmaaQuality::Low: return {0.15f, 4, 0, 100};
+    case SmaaQuality::Medium: return {0.1f, 8, 0, 100};
+    case SmaaQuality::High: return {0.1f, 16, 8, 25};
+    case SmaaQuality::Ultra: return {0.05f, 32, 16, 25};
+  }
+  return {0.1f, 16, 8, 25};
+}
+
+// SMAA's three passes and what they hold, for one kind of input: the tonemapped display (sRGB-encoded)
+// or, for S2x, a slice's linear HDR light.
+class SmaaPasses {
+ public:
+  static Result<SmaaPasses> create(PluginContext& context, bool hdrInput, const char* label) {
+    SmaaPasses p;
+    const GBufferLayout& layout = context.layout;
+    p.quality_ = context.config.smaaQuality;
+    p.detection_ = context.config.smaaEdgeDetection;
+    p.positionAttachment_ = findRole(layout, AttachmentRole::ViewPosition);
+    if (p.detection_ == SmaaEdgeDetection::Depth && p.positionAttachment_ < 0) {
+      context.warn("smaa_edge_detection=depth needs a ViewPosition attachment and the layout has none; using luma");
+      p.detection_ = SmaaEdgeDetection::Luma;
+    }
+    const std::string name = label;
+    p.edges_ = makeTexture(context, GL_RG8, layout.width, layout.height, 0, (name + ".edges").c_str(), p.bytes_);
+    p.weights_ = makeTexture(context, GL_RGBA8, layout.width, layout.height, 0, (name + ".weights").c_str(), p.bytes_);
+    // The weights pass reads two edges per bilinear fetch, and interpolates the area texture's distances.
+    for (GLuint texture : {p.edges_.get()}) {
+      glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
+    p.area_ = makeTexture(context, GL_RG8, kSmaaAreaWidth, kSmaaAreaHeight, 0, (name + ".area").c_str(), p.bytes_);
+    glTextureParameteri(p.area_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(p.area_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    p.search_ =
+        makeTexture(context, GL_R8UI, kSmaaSearchWidth, kSmaaSearchHeight, 0, (name + ".search").c_str(), p.bytes_);
+    GLint alignment = 4;
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // the search texture's rows are 66 bytes
+    glTextureSubImage2D(p.area_.get(), 0, 0, 0, kSmaaAreaWidth, kSmaaAreaHeight, GL_RG, GL_UNSIGNED_BYTE,
+                        kSmaaAreaTexture);
+    glTextureSubImage2D(p.search_.get(), 0, 0, 0, kSmaaSearchWidth, kSmaaSearchHeight, GL_RED_INTEGER,
+                        GL_UNSIGNED_BYTE, kSmaaSearchTexture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+
+    p.edgesTarget_ = makeFramebuffer(context, (name + ".edges").c_str());
+    glNamedFramebufferTexture(p.edgesTarget_.get(), GL_COLOR_ATTACHMENT0, p.edges_.get(), 0);
+    p.weightsTarget_ = makeFramebuffer(context, (name + ".weights").c_str());
+    glNamedFramebufferTexture(p.weightsTarget_.get(), GL_COLOR_ATTACHMENT0, p.weights_.get(), 0);
+    for (GLuint fbo : {p.edgesTarget_.get(), p.weightsTarget_.get()})
+      if (Status status = checkFramebuffer(fbo, label); !status) return status.error();
+
+    const SmaaPreset preset = presetFor(p.quality_);
+    char threshold[48];
+    std::snprintf(threshold, sizeof threshold, "#define SMAA_THRESHOLD %.9g\n", double(preset.threshold));
+    const std::string common = defineLine("SMAA_HDR_INPUT", hdrInput);
+    const bool depth = p.detection_ == SmaaEdgeDetection::Depth;
+    const std::string edgeDefines = common + threshold + defineLine("SMAA_EDGE_MODE", int(p.detection_)) +
+                                    (depth ? depthEncodingDefines(layout) : std::string());
+    auto edges = depth ? context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines,
+                                                  {"uMetrics", RETROAA_DEPTH_ENCODING_UNIFORMS})
+                       : context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines, {"uMetrics"});
+    if (!edges) return edges.error();
+    p.edgesProgram_ = std::move(edges.value());
+    auto weights = context.shaders->program(
+        "common/fullscreen.vert", "smaa/weights.frag",
+        common + defineLine("SMAA_MAX_SEARCH_STEPS", preset.searchSteps) +
+            defineLine("SMAA_MAX_SEARCH_STEPS_DIAG", preset.diagonalSteps) +
+            defineLine("SMAA_CORNER_ROUNDING", preset.cornerRounding),
+        {"uMetrics", "uSubsampleIndices"});
+    if (!weights) return weights.error();
+    p.weightsProgram_ = std::move(weights.value());
+    auto blend = context.shaders->program("common/fullscreen.vert", "smaa/blend.frag", common, {"uMetrics"});
+    if (!blend) return blend.error();
+    p.blendProgram_ = std::move(blend.value());
+    return p;
+  }
+
+  // SMAA of `input`, written where `bindOutput` binds (with the layout's viewport). `subsample`: the
+  // area-texture rows (0 for 1x).
+  template <typename BindOutput>
+  void run(PluginContext& context, GLuint input, const BindOutput& bindOutput, const float subsample[4]) const {
+    const GBufferLayout& layout = context.layout;
+    const float metrics[4] = {1.0f / layout.width, 1.0f / layout.height, float(layout.width), float(layout.height)};
+    for (GLuint unit : {0u, 1u, 2u}) glBindSampler(unit, 0);  // the textures' own filters
+    {
+      ScopedPass timed(context, "smaa.edges");
+      context.beginFullscreenPass(edgesTarget_.get());
+      const GLfloat zero[4] = {0, 0, 0, 0};
+      glClearNamedFramebufferfv(edgesTarget_.get(), GL_COLOR, 0, zero);  // pixels without edges discard
+      edgesProgram_.use();
+      if (detection_ == SmaaEdgeDetection::Depth) {
+        edgesProgram_.setDepthEncoding(layout);
+        glBindTextureUnit(0, layout.attachments[size_t(positionAttachment_)].texture);
+      } else {
+        glBindTextureUnit(0, input);
+      }
+      edgesProgram_.setVec4("uMetrics", metrics);
+      context.drawFullscreen();
+    }
+    {
+      ScopedPass timed(context, "smaa.weights");
+      context.beginFullscreenPass(weightsTarget_.get());
+      weightsProgram_.use();
+      glBindTextureUnit(0, edges_.get());
+      glBindTextureUnit(1, area_.get());
+      glBindTextureUnit(2, search_.get());
+      weightsProgram_.setVec4("uMetrics", metrics);
+      weightsProgram_.setVec4("uSubsampleIndices", subsample);
+      context.drawFullscreen();
+    }
+    {
+      ScopedPass timed(context, "smaa.blend");
+      bindOutput();
+      blendProgram_.use();
+      glBindSampler(0, 0);
+      glBindTextureUnit(0, input);
+      glBindTextureUnit(1, weights_.get());
+      blendProgram_.setVec4("uMetrics", metrics);
+      context.drawFullscreen();
+    }
+  }
+
+  bool servesConfig(const Config& config) const {
+    return config.smaaQuality == quality_ && config.smaaEdgeDetection == requestedDetection(config);
+  }
+  uint64_t bytes() const { return bytes_; }
+
+ private:
+  SmaaEdgeDetection requestedDetection(const Config& config) const {
+    // A depth request the layout cannot serve was granted as luma: the same objects still serve it.
+    return config.smaaEdgeDetection == SmaaEdgeDetection::Depth && positionAttachment_ < 0 ? SmaaEdgeDetection::Luma
+                                                                                            : config.smaaEdgeDetection;
+  }
+
+  GlTexture edges_, weights_, area_, search_;
+  GlFramebuffer edgesTarget_, weightsTarget_;
+  ShaderProgram edgesProgram_, weightsProgram_, blendProgram_;
+  SmaaQuality quality_ = SmaaQuality::High;
+  SmaaEdgeDetection detection_ = SmaaEdgeDetection::Luma;
+  int positionAttachment_ = -1;
+  uint64_t bytes_ = 0;
+};
+
+// SMAA 1x on the display target, after tonemapping.
+class SmaaTechnique : public Technique {
+ public:
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets&) {
+    auto passes = SmaaPasses::create(context, /*hdrInput=*/false, "smaa");
+    if (!passes) return passes.error();
+    auto technique = std::make_unique<SmaaTechnique>();
+    technique->passes_ = std::move(passes.value());
+    return std::unique_ptr<Technique>(std::move(technique));
+  }
+
+  Status post(PluginContext& context, SharedTargets& shared, const FrameInfo&) override {
+    static const float kNoSubsample[4] = {0, 0, 0, 0};
+    passes_.run(
+        context, context.layout.displayTexture, [&] { shared.post->bindAsOutput(context); }, kNoSubsample);
+    shared.post->copyBack(context.layout);
+    return Status::ok();
+  }
+
+  uint64_t bytes() const override { return passes_.bytes(); }
+  bool keepsObjectsFor(const Config& config) const override { return passes_.servesConfig(config); }
+
+ private:
+  SmaaPasses passes_;
+};
+
+// SMAA S2x: slices 0 and 1 light samples 0 and 1 of every pixel; SMAA 1x filters each slice's light
+// (HDR, before the host's tonemap) with that sample's subsample indices; the composite averages them.
+class SmaaS2xTechnique : public Technique {
+ public:
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
+    auto technique = std::make_unique<SmaaS2xTechnique>();
+    SmaaS2xTechnique& t = *technique;
+    auto passes = SmaaPasses::create(context, /*hdrInput=*/true, "smaa_s2x");
+    if (!passes) return passes.error();
+    t.passes_ = std::move(passes.value());
+    t.stencilExport_ = context.capabilities.stencilExport;
+    auto mask = context.shaders->program("common/fullscreen.vert", "smaa/s2x_counts.frag",
+                                         defineLine("STENCIL_EXPORT", t.stencilExport_));
+    if (!mask) return mask.error();
+    t.maskProgram_ = std::move(mask.value());
+    const GBufferLayout& layout = context.layout;
+    t.filtered_ = makeTexture(context, GL_RGBA16F, layout.width, layout.height, 0, "smaa_s2x.filtered", t.bytes_);
+    t.filteredTarget_ = makeFramebuffer(context, "smaa_s2x.filtered");
+    glNamedFramebufferTexture(t.filteredTarget_.get(), GL_COLOR_ATTACHMENT0, t.filtered_.get(), 0);
+    if (Status status = checkFramebuffer(t.filteredTarget_.get(), "smaa_s2x.filtered"); !status)
+      return status.error();
+    std::vector<float> positions(size_t(std::max(shared.msaa->samples(), 2)) * 2, 0.5f);
+    if (shared.msaa->multisampled()) readSamplePositions(shared.msaa->framebuffer(), positions);
+    for (int s = 0; s < 2; ++s) t.indices_[size_t(s)] = smaaSubsampleIndices(positions[2 * s], positions[2 * s + 1]);
+    return std::unique_ptr<Technique>(std::move(technique));
+  }
+
+  Status afterResolve(PluginContext& context, SharedTargets& shared, const FrameInfo&) override {
+    ScopedPass timed(context, "smaa_s2x.mask");
+    return shared.slices->writeMask(context, maskProgram_.get(), stencilExport_);
+  }
+
+  SliceRenderer::Plan slicePlan(PluginContext& context, SharedTargets&) override {
+    SliceRenderer::Plan plan;
+    plan.sampleOrder = {0, 1};
+    plan.firstSliceEverywhere = true;
+    plan.sliceCount = 2;
+    plan.filterSliceLight = [this, &context](int slice, GLuint light) -> Result<GLuint> {
+      GlStateGuard guard;
+      passes_.run(
+          context, light, [&] { context.beginFullscreenPass(filteredTarget_.get()); }, indices_[size_t(slice)].data());
+      return filtered_.get();
+    };
+    return plan;
+  }
+
+  uint64_t bytes() const override { return bytes_ + passes_.bytes(); }
+  bool keepsObjectsFor(const Config& config) const override { return passes_.servesConfig(config); }
+
+ private:
+  SmaaPasses passes_;
+  ShaderProgram maskProgram_;
+  GlTexture filtered_;
+  GlFramebuffer filteredTarget_;
+  std::array<std::array<float, 4>, 2> indices_{};
+  bool stencilExport_ = false;
+  uint64_t bytes_ = 0;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<Technique>> createSmaaTechnique(PluginContext& context, SharedTargets& shared) {
+  return SmaaTechnique::create(context, shared);
+}
+Result<std::unique_ptr<Technique>> createSmaaS2xTechnique(PluginContext& context, SharedTargets& shared) {
+  return SmaaS2xTechnique::create(context, shared);
+}
+
+}  // namespace retroaa
