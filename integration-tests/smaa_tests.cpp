@@ -142,6 +142,17 @@ TEST(SmaaS2x, SubsampleIndicesFollowTheReferencesS2xConvention) {
   EXPECT_EQ(retroaa::smaaSubsampleIndices(0.375f, 0.125f), (std::array<float, 4>{4, 6, 2, 0}));
 }
 
+TEST(SmaaS2x, LightsTheCentredPairOfSamples) {
+  // GL's standard 2× pattern: both samples.
+  EXPECT_EQ(retroaa::smaaS2xSamplePair({0.75f, 0.75f, 0.25f, 0.25f}), (std::array<int, 2>{0, 1}));
+  // llvmpipe's 4× pattern: samples 0 and 1 average to (0.625, 0.25), a quarter pixel off; 0 and 3 are
+  // centred (as are 1 and 2; the lower indices win).
+  EXPECT_EQ(retroaa::smaaS2xSamplePair({0.375f, 0.125f, 0.875f, 0.375f, 0.125f, 0.625f, 0.625f, 0.875f}),
+            (std::array<int, 2>{0, 3}));
+  // A centred pair farther apart wins over a closer centred one.
+  EXPECT_EQ(retroaa::smaaS2xSamplePair({0.4f, 0.5f, 0.6f, 0.5f, 0.1f, 0.1f, 0.9f, 0.9f}), (std::array<int, 2>{2, 3}));
+}
+
 TEST(SmaaS2x, LightsTwoSamplesPerPixelAndSitsBetweenSmaaAndEdgeInQuality) {
   PatchedHost host("default", 240, 180);
   const host::GroundTruth gt = host.groundTruth(8);

@@ -19,10 +19,10 @@
 
 namespace {
 
-// --config FILE, --set key=value, -msaa N, -aa_preset N and RETROAA_SETTINGS, in that order of
+// --config FILE, --set key=value, -msaa N, -post_process_aa, -aa_preset N and RETROAA_SETTINGS, in that order of
 // precedence from lowest: environment, file, FSO flags, --set.
 retroaa::Config buildConfig(const std::string& configFile, const std::vector<std::string>& sets,
-                            const std::string& msaa, const std::string& aaPreset) {
+                            const std::string& msaa, const std::string& aaPreset, bool postProcessAa) {
   retroaa::Config config;
   auto check = [](const retroaa::Status& status) {
     if (!status) throw std::invalid_argument(status.error().message);
@@ -32,6 +32,7 @@ retroaa::Config buildConfig(const std::string& configFile, const std::vector<std
   if (!configFile.empty()) check(retroaa::applyConfigFile(config, configFile));
   std::vector<std::string> warnings;
   if (!msaa.empty()) check(retroaa::applyFsoFlag(config, "-msaa", msaa, warnings));
+  if (postProcessAa) check(retroaa::applyFsoFlag(config, "-post_process_aa", "", warnings));
   if (!aaPreset.empty()) check(retroaa::applyFsoFlag(config, "-aa_preset", aaPreset, warnings));
   for (const std::string& w : warnings) std::fprintf(stderr, "retroaa: warning: %s\n", w.c_str());
   for (const std::string& set : sets) {
@@ -47,6 +48,7 @@ retroaa::Config buildConfig(const std::string& configFile, const std::vector<std
 struct CommandLine {
   CLI::App cli{"retroaa: retrofit anti-aliasing for deferred renderers"};
   std::string configFile, msaa, aaPreset, samples;
+  bool postProcessAa = false;
   std::vector<std::string> sets;
   std::vector<std::pair<CLI::App*, std::function<int(const retroaa::Config&)>>> commands;
 
@@ -60,10 +62,11 @@ struct CommandLine {
     sub->add_option("--samples", samples, "MSAA samples (same as --set samples=N)");
     sub->add_option("-m,--msaa", msaa, "FreeSpace Open's -msaa 0|4|8|16");
     sub->add_option("--aa_preset", aaPreset, "FreeSpace Open's -aa_preset 0..6");
+    sub->add_flag("--post_process_aa", postProcessAa, "FreeSpace Open's -post_process_aa (SMAA low unless --aa_preset)");
   }
   retroaa::Config config() {
     if (!samples.empty()) sets.insert(sets.begin(), "samples=" + samples);
-    return buildConfig(configFile, sets, msaa, aaPreset);
+    return buildConfig(configFile, sets, msaa, aaPreset, postProcessAa);
   }
 };
 

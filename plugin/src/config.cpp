@@ -493,7 +493,14 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
     }
     return Status::ok();
   }
-  return invalid("unknown FreeSpace Open flag " + quoted(flag) + " (known: -msaa, -aa_preset)");
+  if (flag == "-post_process_aa") {
+    // FreeSpace Open (code/cmdline/cmdline.cpp): post-processing AA on, SMAA low unless -aa_preset names
+    // a preset; the preset wins in either order.
+    if (config.method == Method::Fxaa || config.method == Method::Smaa || config.fxaa || config.smaa)
+      return Status::ok();
+    return applyFsoFlag(config, "-aa_preset", "3", warnings);
+  }
+  return invalid("unknown FreeSpace Open flag " + quoted(flag) + " (known: -msaa, -aa_preset, -post_process_aa)");
 }
 
 Status validateConfig(const Config& config) {

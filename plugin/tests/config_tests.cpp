@@ -100,6 +100,16 @@ TEST(Config, FreeSpaceOpenFlags) {
   EXPECT_FALSE(applyFsoFlag(config, "-aa_preset", "9", warnings));
   EXPECT_FALSE(applyFsoFlag(config, "-msaa", "four", warnings));
   EXPECT_FALSE(applyFsoFlag(config, "-smaa", "1", warnings));
+
+  Config postProcess;  // FSO: -post_process_aa alone is SMAA low; a preset, in either order, wins
+  ASSERT_TRUE(applyFsoFlag(postProcess, "-post_process_aa", "", warnings));
+  EXPECT_EQ(postProcess.method, Method::Smaa);
+  EXPECT_EQ(postProcess.smaaQuality, SmaaQuality::Low);
+  ASSERT_TRUE(applyFsoFlag(postProcess, "-aa_preset", "1", warnings));
+  EXPECT_EQ(postProcess.method, Method::Fxaa);
+  ASSERT_TRUE(applyFsoFlag(postProcess, "-post_process_aa", "", warnings));
+  EXPECT_EQ(postProcess.method, Method::Fxaa);
+  EXPECT_EQ(postProcess.fxaaQuality, FxaaQuality::Medium);
 }
 
 TEST(Config, PresetsApplyTheirTunedBundleAndLaterKeysOverride) {

@@ -25,7 +25,7 @@ enum class Method : uint8_t {
   Coverage,     // Pettineo: depth-only MSAA prepass, stock single-sample path, coverage filter after tonemapping (1)
   Reconstruct,  // SRAA-style: depth+normal MSAA prepass, stock single-sample shading, sub-samples rebuilt from
                 // neighbouring shaded pixels after tonemapping (1)
-  Smaa,         // Jimenez et al.: SMAA 1x after tonemapping (FreeSpace Open's default AA, -aa_preset 3..6) (1)
+  Smaa,         // Jimenez et al.: SMAA 1x after tonemapping (FreeSpace Open's -post_process_aa, -aa_preset 3..6) (1)
   SmaaS2x,      // SMAA S2x: SMAA 1x on two single-sample slices of the MSAA G-buffer, blended 50/50 (2)
 };
 
@@ -194,7 +194,8 @@ RETROAA_API Status applySettingsList(Config& config, const std::string& list, co
 // FreeSpace Open's flags: `-msaa 0|4|8|16` (others warn and mean 0; N>0 selects `resolve` unless a
 // multi-sample method is already chosen) and
 // `-aa_preset 0..6` (0-2 FXAA low/medium/high, 3-6 SMAA low/medium/high/ultra, as in FSO; stacked as
-// `+fxaa`/`+smaa` on a multi-sample method). `warnings` receives what was adjusted.
+// `+fxaa`/`+smaa` on a multi-sample method; the last one wins) and `-post_process_aa` (value ignored:
+// SMAA low unless a preset chose a filter). `warnings` receives what was adjusted.
 RETROAA_API Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
                                 std::vector<std::string>& warnings);
 // Checks every field of a config built in code with the rules the text parser applies to the same key

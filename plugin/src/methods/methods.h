@@ -7,6 +7,7 @@
 
 #include <array>
 #include <functional>
+#include <vector>
 
 namespace retroaa {
 
@@ -122,6 +123,10 @@ std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY);
 // area-texture rows of its orthogonal offsets along x and y and of its diagonal offset (smaa.cpp).
 // The reference's S2x samples at D3D's (+¼, +¼) and (−¼, −¼) read rows (1, 1, 1, 0) and (2, 2, 2, 0).
 std::array<float, 4> smaaSubsampleIndices(float x, float y);
+// The two samples S2x lights, from the driver's positions (x, y pairs): the pair whose midpoint is
+// nearest the pixel centre (their average must not shift the image), the farther apart on a tie, the
+// lowest indices after that. 2×: samples 0 and 1; llvmpipe's 4× (0.375, 0.125) … : samples 0 and 3.
+std::array<int, 2> smaaS2xSamplePair(const std::vector<float>& positionsXY);
 
 // Where the post passes (coverage filter, FXAA) render: a plugin-owned RGBA8 copy of the host's
 // display target, copied back after each pass, and the bilinear sampler they read the display with.

@@ -38,6 +38,26 @@ std::array<float, 4> smaaSubsampleIndices(float x, float y) {
   return {nearestOrtho(-dx), nearestOrtho(-dy), float(bestDiag), 0.0f};
 }
 
+std::array<int, 2> smaaS2xSamplePair(const std::vector<float>& positionsXY) {
+  const int count = int(positionsXY.size() / 2);
+  std::array<int, 2> best{0, std::min(1, count - 1)};
+  double bestOffCentre = 1e9, bestSeparation = -1;
+  for (int a = 0; a < count; ++a)
+    for (int b = a + 1; b < count; ++b) {
+      const double ax = positionsXY[2 * a], ay = positionsXY[2 * a + 1];
+      const double bx = positionsXY[2 * b], by = positionsXY[2 * b + 1];
+      const double offCentre = std::hypot((ax + bx) / 2 - 0.5, (ay + by) / 2 - 0.5);
+      const double separation = std::hypot(ax - bx, ay - by);
+      // Centred first (an average of two samples off the centre shifts the image), then spread.
+      if (offCentre < bestOffCentre - 1e-6 || (offCentre < bestOffCentre + 1e-6 && separation > bestSeparation + 1e-6)) {
+        best = {a, b};
+        bestOffCentre = offCentre;
+        bestSeparation = separation;
+      }
+    }
+  return best;
+}
+
 namespace {
 
 #include "smaa_lookup_tables.inc"
@@ -219,7 +239,7 @@ class SmaaTechnique : public Technique {
   SmaaPasses passes_;
 };
 
-// SMAA S2x: slices 0 and 1 light samples 0 and 1 of every pixel; SMAA 1x filters each slice's light
+// SMAA S2x: slices 0 and 1 light the two samples of smaaS2xSamplePair in every pixel; SMAA 1x filters each slice's light
 // (HDR, before the host's tonemap) with that sample's subsample indices; the composite averages them.
 class SmaaS2xTechnique : public Technique {
  public:
@@ -242,7 +262,11 @@ class SmaaS2xTechnique : public Technique {
       return status.error();
     std::vector<float> positions(size_t(std::max(shared.msaa->samples(), 2)) * 2, 0.5f);
     if (shared.msaa->multisampled()) readSamplePositions(shared.msaa->framebuffer(), positions);
-    for (int s = 0; s < 2; ++s) t.indices_[size_t(s)] = smaaSubsampleIndices(positions[2 * s], positions[2 * s + 1]);
+    t.pair_ = smaaS2xSamplePair(positions);
+    for (size_t s = 0; s < 2; ++s) {
+      const int sample = t.pair_[s];
+      t.indices_[s] = smaaSubsampleIndices(positions[2 * sample], positions[2 * sample + 1]);
+    }
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
@@ -253,7 +277,7 @@ class SmaaS2xTechnique : public Technique {
 
   SliceRenderer::Plan slicePlan(PluginContext& context, SharedTargets&) override {
     SliceRenderer::Plan plan;
-    plan.sampleOrder = {0, 1};
+    plan.sampleOrder = {pair_[0], pair_[1]};
     plan.firstSliceEverywhere = true;
     plan.sliceCount = 2;
     plan.filterSliceLight = [this, &context](int slice, GLuint light) -> Result<GLuint> {
@@ -273,6 +297,7 @@ class SmaaS2xTechnique : public Technique {
   ShaderProgram maskProgram_;
   GlTexture filtered_;
   GlFramebuffer filteredTarget_;
+  std::array<int, 2> pair_{0, 1};
   std::array<std::array<float, 4>, 2> indices_{};
   bool stencilExport_ = false;
   uint64_t bytes_ = 0;
