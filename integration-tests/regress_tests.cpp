@@ -29,7 +29,7 @@ TEST(Regress, CommittedGoldensHoldForTheFastSubset) {
   const fs::path out = tempDir("subset");
   const CliRun run =
       runCli(std::string("regress ") + kSmallRun +
-             " --methods off,fxaa,resolve,resolve+coverage,edge,adaptive,aggregate,per-sample --out " + out.string() +
+             " --methods off,fxaa,smaa,resolve,resolve+coverage,reconstruct,edge,adaptive,aggregate,smaa-s2x,per-sample --out " + out.string() +
              " --golden-dir " + RETROAA_SOURCE_DIR + "/integration-tests/golden/ci --check");
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("check: every figure within tolerance"), std::string::npos) << run.output;
