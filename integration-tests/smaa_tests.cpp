@@ -170,3 +170,18 @@ TEST(SmaaS2x, LightsTwoSamplesPerPixelAndSitsBetweenSmaaAndEdgeInQuality) {
   EXPECT_GT(s2x.edgePsnrDb, smaa.edgePsnrDb + 0.5);
   EXPECT_LT(s2x.edgePsnrDb, edge.edgePsnrDb);
 }
+
+TEST(Smaa, ReconfiguringTheEdgeDetectionOrQualityRebuildsItsPasses) {
+  // Each setting renders what a fresh plugin with it renders, whatever ran before it.
+  PatchedHost host("default", 160, 120);
+  const char* specs[] = {"smaa", "smaa@smaa_edge_detection=colour", "smaa@smaa_edge_detection=depth",
+                         "smaa@smaa_quality=low", "smaa"};
+  std::vector<std::vector<float>> sequential;
+  for (const char* spec : specs) sequential.push_back(host.render(spec).rgb);
+  for (size_t i = 0; i < std::size(specs); ++i) {
+    PatchedHost fresh("default", 160, 120);
+    EXPECT_EQ(fresh.render(specs[i]).rgb, sequential[i]) << specs[i];
+  }
+  EXPECT_NE(sequential[1], sequential[2]) << "colour and depth edges differ on the demo frame";
+  EXPECT_NE(sequential[0], sequential[2]);
+}

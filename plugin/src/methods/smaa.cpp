@@ -193,13 +193,13 @@ class SmaaPasses {
   }
 
   bool servesConfig(const Config& config) const {
-    return config.smaaQuality == quality_ && config.smaaEdgeDetection == requestedDetection(config);
+    return config.smaaQuality == quality_ && grantedDetection(config) == detection_;
   }
   uint64_t bytes() const { return bytes_; }
 
  private:
-  SmaaEdgeDetection requestedDetection(const Config& config) const {
-    // A depth request the layout cannot serve was granted as luma: the same objects still serve it.
+  SmaaEdgeDetection grantedDetection(const Config& config) const {
+    // A depth request the layout cannot serve is granted as luma.
     return config.smaaEdgeDetection == SmaaEdgeDetection::Depth && positionAttachment_ < 0 ? SmaaEdgeDetection::Luma
                                                                                             : config.smaaEdgeDetection;
   }
