@@ -82,7 +82,8 @@ TEST(Robustness, EveryMethodOnEveryHardCaseIsFiniteAndNoWorseThanOff) {
   const std::vector<std::string> methods = {
       "off",         "resolve",        "resolve/front", "resolve/back",
       "resolve/fso", "resolve/window", "resolve/mean",  "resolve+reconstruct@reconstruct_before_tonemap=on",
-      "edge",        "adaptive",       "aggregate",     "per-sample"};
+      "edge",        "adaptive",       "aggregate",     "smaa-s2x",
+      "per-sample"};
   std::map<std::string, std::map<std::string, Cell>> matrix[2];
   const int sampleCounts[] = {2, 4};
   for (int n = 0; n < 2; ++n)
