@@ -29,8 +29,9 @@ TEST(Regress, CommittedGoldensHoldForTheFastSubset) {
   const fs::path out = tempDir("subset");
   const CliRun run =
       runCli(std::string("regress ") + kSmallRun +
-             " --methods off,fxaa,smaa,resolve,resolve+coverage,reconstruct,edge,adaptive,aggregate,smaa-s2x,per-sample --out " + out.string() +
-             " --golden-dir " + RETROAA_SOURCE_DIR + "/integration-tests/golden/ci --check");
+             " --methods "
+             "off,fxaa,smaa,resolve,resolve+coverage,reconstruct,edge,adaptive,aggregate,smaa-s2x,per-sample --out " +
+             out.string() + " --golden-dir " + RETROAA_SOURCE_DIR + "/integration-tests/golden/ci --check");
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("check: every figure within tolerance"), std::string::npos) << run.output;
 }

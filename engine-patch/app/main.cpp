@@ -62,7 +62,8 @@ struct CommandLine {
     sub->add_option("--samples", samples, "MSAA samples (same as --set samples=N)");
     sub->add_option("-m,--msaa", msaa, "FreeSpace Open's -msaa 0|4|8|16");
     sub->add_option("--aa_preset", aaPreset, "FreeSpace Open's -aa_preset 0..6");
-    sub->add_flag("--post_process_aa", postProcessAa, "FreeSpace Open's -post_process_aa (SMAA low unless --aa_preset)");
+    sub->add_flag("--post_process_aa", postProcessAa,
+                  "FreeSpace Open's -post_process_aa (SMAA low unless --aa_preset)");
   }
   retroaa::Config config() {
     if (!samples.empty()) sets.insert(sets.begin(), "samples=" + samples);

@@ -100,8 +100,7 @@ constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWei
                                             ResolveWeighting::Back,   ResolveWeighting::Fso,
                                             ResolveWeighting::Mean,   ResolveWeighting::Window};
 constexpr FxaaQuality kFxaaQualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
-constexpr SmaaQuality kSmaaQualities[] = {SmaaQuality::Low, SmaaQuality::Medium, SmaaQuality::High,
-                                          SmaaQuality::Ultra};
+constexpr SmaaQuality kSmaaQualities[] = {SmaaQuality::Low, SmaaQuality::Medium, SmaaQuality::High, SmaaQuality::Ultra};
 constexpr SmaaEdgeDetection kSmaaEdgeDetections[] = {SmaaEdgeDetection::Luma, SmaaEdgeDetection::Colour,
                                                      SmaaEdgeDetection::Depth};
 

@@ -27,7 +27,8 @@ TEST(Config, UnknownKeyNamesKnownKeys) {
 TEST(Config, BadValuesNameKeyValueAndAllowedSet) {
   Config config;
   Status s = applySetting(config, "method", "taa");
-  EXPECT_NE(s.error().message.find("'method': unknown value 'taa' (allowed: off, fxaa, smaa, resolve"), std::string::npos)
+  EXPECT_NE(s.error().message.find("'method': unknown value 'taa' (allowed: off, fxaa, smaa, resolve"),
+            std::string::npos)
       << s.error().message;
   s = applySetting(config, "samples", "3");
   EXPECT_NE(s.error().message.find("unsupported sample count '3' (allowed: 1, 2, 4, 8, 16)"), std::string::npos);

@@ -25,7 +25,7 @@ namespace {
 constexpr int kOrthoSize = 16, kDiagSize = 20, kSlot = 80;
 constexpr int kAreaWidth = 2 * kSlot, kAreaHeight = 7 * kSlot;
 constexpr int kSearchWidth = 66, kSearchHeight = 33;
-constexpr int kDiagSamples = 30;          // brute-force samples per axis for a diagonal area
+constexpr int kDiagSamples = 30;           // brute-force samples per axis for a diagonal area
 constexpr double kSmoothMaxDistance = 32;  // U patterns shorter than this are rounded off
 
 // Subsample offsets of the rows (SMAA's subsample indices select them): 0 for SMAA 1x, ±0.25 for S2x's
@@ -56,8 +56,7 @@ Vec2 areaUnderLine(Vec2 p1, Vec2 p2, double x) {
   const double y2 = p1.y + d.y * (x2 - p1.x) / d.x;
   const bool inside = (x1 >= p1.x && x1 < p2.x) || (x2 > p1.x && x2 <= p2.x);
   if (!inside) return {0, 0};
-  const bool trapezoid =
-      std::copysign(1.0, y1) == std::copysign(1.0, y2) || std::abs(y1) < 1e-4 || std::abs(y2) < 1e-4;
+  const bool trapezoid = std::copysign(1.0, y1) == std::copysign(1.0, y2) || std::abs(y1) < 1e-4 || std::abs(y2) < 1e-4;
   if (trapezoid) {
     const double a = (y1 + y2) / 2;
     return a < 0 ? Vec2{std::abs(a), 0} : Vec2{0, std::abs(a)};
@@ -94,7 +93,7 @@ Vec2 orthoArea(int pattern, double left, double right, double offset) {
     return (full + halves) * 0.5;
   };
   switch (pattern) {
-    case 0: return {0, 0};                                       // ──────
+    case 0: return {0, 0};                                             // ──────
     case 1: return left <= right ? area({0, below}, middle) : Vec2{};  // L pointing down at the left
     case 2: return left >= right ? area(middle, {d, below}) : Vec2{};
     case 3: {  // U opening down

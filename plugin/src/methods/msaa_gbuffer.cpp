@@ -55,8 +55,8 @@ std::string fsoFarDefine(const DepthEncoding& encoding) {
 }  // namespace
 
 std::string depthEncodingDefines(const GBufferLayout& layout) {
-  return defineLine("DEPTH_CHANNEL", layout.depthChannel) + defineLine("DEPTH_ENCODING", int(layout.depthEncoding.kind)) +
-         fsoFarDefine(layout.depthEncoding);
+  return defineLine("DEPTH_CHANNEL", layout.depthChannel) +
+         defineLine("DEPTH_ENCODING", int(layout.depthEncoding.kind)) + fsoFarDefine(layout.depthEncoding);
 }
 
 std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOutputs) const {

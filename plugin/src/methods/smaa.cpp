@@ -49,7 +49,8 @@ std::array<int, 2> smaaS2xSamplePair(const std::vector<float>& positionsXY) {
       const double offCentre = std::hypot((ax + bx) / 2 - 0.5, (ay + by) / 2 - 0.5);
       const double separation = std::hypot(ax - bx, ay - by);
       // Centred first (an average of two samples off the centre shifts the image), then spread.
-      if (offCentre < bestOffCentre - 1e-6 || (offCentre < bestOffCentre + 1e-6 && separation > bestSeparation + 1e-6)) {
+      if (offCentre < bestOffCentre - 1e-6 ||
+          (offCentre < bestOffCentre + 1e-6 && separation > bestSeparation + 1e-6)) {
         best = {a, b};
         bestOffCentre = offCentre;
         bestSeparation = separation;
@@ -110,8 +111,8 @@ class SmaaPasses {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // the search texture's rows are 66 bytes
     glTextureSubImage2D(p.area_.get(), 0, 0, 0, kSmaaAreaWidth, kSmaaAreaHeight, GL_RG, GL_UNSIGNED_BYTE,
                         kSmaaAreaTexture);
-    glTextureSubImage2D(p.search_.get(), 0, 0, 0, kSmaaSearchWidth, kSmaaSearchHeight, GL_RED_INTEGER,
-                        GL_UNSIGNED_BYTE, kSmaaSearchTexture);
+    glTextureSubImage2D(p.search_.get(), 0, 0, 0, kSmaaSearchWidth, kSmaaSearchHeight, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
+                        kSmaaSearchTexture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
 
     p.edgesTarget_ = makeFramebuffer(context, (name + ".edges").c_str());
@@ -128,17 +129,17 @@ class SmaaPasses {
     const bool depth = p.detection_ == SmaaEdgeDetection::Depth;
     const std::string edgeDefines = common + threshold + defineLine("SMAA_EDGE_MODE", int(p.detection_)) +
                                     (depth ? depthEncodingDefines(layout) : std::string());
-    auto edges = depth ? context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines,
-                                                  {"uMetrics", RETROAA_DEPTH_ENCODING_UNIFORMS})
-                       : context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines, {"uMetrics"});
+    auto edges = depth
+                     ? context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines,
+                                                {"uMetrics", RETROAA_DEPTH_ENCODING_UNIFORMS})
+                     : context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines, {"uMetrics"});
     if (!edges) return edges.error();
     p.edgesProgram_ = std::move(edges.value());
-    auto weights = context.shaders->program(
-        "common/fullscreen.vert", "smaa/weights.frag",
-        common + defineLine("SMAA_MAX_SEARCH_STEPS", preset.searchSteps) +
-            defineLine("SMAA_MAX_SEARCH_STEPS_DIAG", preset.diagonalSteps) +
-            defineLine("SMAA_CORNER_ROUNDING", preset.cornerRounding),
-        {"uMetrics", "uSubsampleIndices"});
+    auto weights = context.shaders->program("common/fullscreen.vert", "smaa/weights.frag",
+                                            common + defineLine("SMAA_MAX_SEARCH_STEPS", preset.searchSteps) +
+                                                defineLine("SMAA_MAX_SEARCH_STEPS_DIAG", preset.diagonalSteps) +
+                                                defineLine("SMAA_CORNER_ROUNDING", preset.cornerRounding),
+                                            {"uMetrics", "uSubsampleIndices"});
     if (!weights) return weights.error();
     p.weightsProgram_ = std::move(weights.value());
     auto blend = context.shaders->program("common/fullscreen.vert", "smaa/blend.frag", common, {"uMetrics"});
@@ -201,7 +202,7 @@ class SmaaPasses {
   SmaaEdgeDetection grantedDetection(const Config& config) const {
     // A depth request the layout cannot serve is granted as luma.
     return config.smaaEdgeDetection == SmaaEdgeDetection::Depth && positionAttachment_ < 0 ? SmaaEdgeDetection::Luma
-                                                                                            : config.smaaEdgeDetection;
+                                                                                           : config.smaaEdgeDetection;
   }
 
   GlTexture edges_, weights_, area_, search_;
@@ -239,8 +240,8 @@ class SmaaTechnique : public Technique {
   SmaaPasses passes_;
 };
 
-// SMAA S2x: slices 0 and 1 light the two samples of smaaS2xSamplePair in every pixel; SMAA 1x filters each slice's light
-// (HDR, before the host's tonemap) with that sample's subsample indices; the composite averages them.
+// SMAA S2x: slices 0 and 1 light the two samples of smaaS2xSamplePair in every pixel; SMAA 1x filters each slice's
+// light (HDR, before the host's tonemap) with that sample's subsample indices; the composite averages them.
 class SmaaS2xTechnique : public Technique {
  public:
   static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
@@ -258,8 +259,7 @@ class SmaaS2xTechnique : public Technique {
     t.filtered_ = makeTexture(context, GL_RGBA16F, layout.width, layout.height, 0, "smaa_s2x.filtered", t.bytes_);
     t.filteredTarget_ = makeFramebuffer(context, "smaa_s2x.filtered");
     glNamedFramebufferTexture(t.filteredTarget_.get(), GL_COLOR_ATTACHMENT0, t.filtered_.get(), 0);
-    if (Status status = checkFramebuffer(t.filteredTarget_.get(), "smaa_s2x.filtered"); !status)
-      return status.error();
+    if (Status status = checkFramebuffer(t.filteredTarget_.get(), "smaa_s2x.filtered"); !status) return status.error();
     std::vector<float> positions(size_t(std::max(shared.msaa->samples(), 2)) * 2, 0.5f);
     if (shared.msaa->multisampled()) readSamplePositions(shared.msaa->framebuffer(), positions);
     t.pair_ = smaaS2xSamplePair(positions);
