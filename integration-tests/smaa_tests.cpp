@@ -1,6 +1,7 @@
 // SMAA (Jimenez et al. 2012) on hand-written display images: a straight edge is blended towards its
 // analytic coverage, flat images and a one-pixel checkerboard stay as they are, and FreeSpace Open's
 // -aa_preset 3..6 select its presets. The lookup tables' own properties: plugin/tests/smaa_tables_tests.cpp.
+#include "commands.h"
 #include "test_support.h"
 
 #include <array>
@@ -184,4 +185,40 @@ TEST(Smaa, ReconfiguringTheEdgeDetectionOrQualityRebuildsItsPasses) {
   }
   EXPECT_NE(sequential[1], sequential[2]) << "colour and depth edges differ on the demo frame";
   EXPECT_NE(sequential[0], sequential[2]);
+}
+
+TEST(PostFilters, AnSrgbDisplayTextureIsFilteredByteForByteLikeAnRgba8One) {
+  // post() works on the display's stored, gamma-encoded values. Read through an sRGB format they would
+  // decode to linear (and FXAA rewrote every lit pixel of a third-party renderer's GL_SRGB8_ALPHA8
+  // display, mean byte 14.15 → 7.99): the plugin filters the encoded bytes instead.
+  const auto image = imageOf([](int x, int y) { return y + 0.5 < 20.3 + (x + 0.5) / 8.0; });
+  for (const char* method : {"fxaa", "smaa"}) {
+    std::vector<uint8_t> filtered[2];
+    for (int srgb = 0; srgb < 2; ++srgb) {
+      SyntheticFrame frame(kWidth, kHeight);
+      retroaa::Description description;
+      description.config = app::parseMethodSpec(method, {}).config;
+      description.layout = patch::describeHostGBuffer(frame.renderer->targets());
+      GLuint display = 0, framebuffer = 0;
+      glCreateTextures(GL_TEXTURE_2D, 1, &display);
+      glTextureStorage2D(display, 1, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, kWidth, kHeight);
+      glCreateFramebuffers(1, &framebuffer);
+      glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, display, 0);
+      description.layout.displayTexture = display;
+      description.layout.displayFramebuffer = framebuffer;
+      glTextureSubImage2D(display, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+      {
+        auto plugin = retroaa::Plugin::create(description);
+        ASSERT_TRUE(plugin) << plugin.error().message;
+        ASSERT_TRUE(plugin.value()->post());
+      }
+      filtered[srgb].resize(image.size());
+      glGetTextureImage(display, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(image.size()), filtered[srgb].data());
+      glDeleteFramebuffers(1, &framebuffer);
+      glDeleteTextures(1, &display);
+      EXPECT_NE(filtered[srgb], image) << method << (srgb ? " sRGB" : " RGBA8") << ": the edge was filtered";
+    }
+    EXPECT_EQ(filtered[1], filtered[0]) << method;
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
 }

@@ -316,8 +316,11 @@ Status Plugin::post() {
   if (!impl_->postTarget) return Status::ok();
   GlStateGuard guard;
   SharedTargets shared = impl_->shared();
+  const GBufferLayout& layout = impl_->context.layout;
+  impl_->postTarget->begin(layout);
   for (ActiveTechnique& active : impl_->techniques)
     if (Status status = active.technique->post(impl_->context, shared, impl_->lastFrame); !status) return status;
+  impl_->postTarget->end(layout);
   return Status::ok();
 }
 

@@ -128,18 +128,25 @@ std::array<float, 4> smaaSubsampleIndices(float x, float y);
 // lowest indices after that. 2×: samples 0 and 1; llvmpipe's 4× (0.375, 0.125) … : samples 0 and 3.
 std::array<int, 2> smaaS2xSamplePair(const std::vector<float>& positionsXY);
 
-// Where the post passes (coverage filter, FXAA) render: a plugin-owned RGBA8 copy of the host's
-// display target, copied back after each pass, and the bilinear sampler they read the display with.
+// Where the post passes (coverage filter, SMAA, FXAA) render: a plugin-owned copy of the host's display
+// target in its format, copied back after each pass, and the bilinear sampler they read the display
+// with. The passes work on the display's stored (gamma-encoded) values: an sRGB-format display
+// (GL_SRGB8_ALPHA8), whose reads would decode to linear and whose writes would encode again, is copied
+// byte for byte into an RGBA8 stand-in for the passes (begin) and back when they are done (end).
 class PostTarget {
  public:
   static Result<std::unique_ptr<PostTarget>> create(PluginContext& context);
+  void begin(const GBufferLayout& layout) const;  // before the first post pass of a frame
+  void end(const GBufferLayout& layout) const;    // after the last
+  GLuint input(const GBufferLayout& layout) const { return encodedCopy_ ? encodedCopy_.get() : layout.displayTexture; }
   void bindAsOutput(const PluginContext& context) const;           // framebuffer, viewport, plain state
-  void bindInput(const GBufferLayout& layout, GLuint unit) const;  // the display texture, bilinear
-  void copyBack(const GBufferLayout& layout) const;
+  void bindInput(const GBufferLayout& layout, GLuint unit) const;  // input(), bilinear
+  void copyBack(const GBufferLayout& layout) const;                // the output into input()
   uint64_t bytes() const { return bytes_; }
 
  private:
   GlTexture output_;
+  GlTexture encodedCopy_;  // RGBA8 stand-in for an sRGB display; empty otherwise
   GlFramebuffer framebuffer_;
   GlSampler linear_;
   uint64_t bytes_ = 0;

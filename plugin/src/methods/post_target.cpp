@@ -6,7 +6,16 @@ namespace retroaa {
 Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
   auto target = std::make_unique<PostTarget>();
   const GBufferLayout& layout = context.layout;
-  target->output_ = makeTexture(context, GL_RGBA8, layout.width, layout.height, 0, "post.output", target->bytes_);
+  GLint displayFormat = GL_RGBA8;
+  glGetTextureLevelParameteriv(layout.displayTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &displayFormat);
+  const bool srgb = displayFormat == GL_SRGB8_ALPHA8;
+  // The output has the display's own format (raw copies need matching sizes); an sRGB display's
+  // stand-in is its non-sRGB twin.
+  const GLenum workFormat = srgb ? GL_RGBA8 : GLenum(displayFormat);
+  target->output_ = makeTexture(context, workFormat, layout.width, layout.height, 0, "post.output", target->bytes_);
+  if (srgb)
+    target->encodedCopy_ =
+        makeTexture(context, GL_RGBA8, layout.width, layout.height, 0, "post.encoded_display", target->bytes_);
   target->framebuffer_ = makeFramebuffer(context, "post.output");
   glNamedFramebufferTexture(target->framebuffer_.get(), GL_COLOR_ATTACHMENT0, target->output_.get(), 0);
   if (Status status = checkFramebuffer(target->framebuffer_.get(), "post.output"); !status) return status.error();
@@ -22,14 +31,25 @@ Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
 
 void PostTarget::bindAsOutput(const PluginContext& context) const { context.beginFullscreenPass(framebuffer_.get()); }
 
+namespace {
+void copyImage(GLuint from, GLuint to, const GBufferLayout& layout) {
+  glCopyImageSubData(from, GL_TEXTURE_2D, 0, 0, 0, 0, to, GL_TEXTURE_2D, 0, 0, 0, 0, layout.width, layout.height, 1);
+}
+}  // namespace
+
+void PostTarget::begin(const GBufferLayout& layout) const {
+  if (encodedCopy_) copyImage(layout.displayTexture, encodedCopy_.get(), layout);
+}
+
+void PostTarget::end(const GBufferLayout& layout) const {
+  if (encodedCopy_) copyImage(encodedCopy_.get(), layout.displayTexture, layout);
+}
+
 void PostTarget::bindInput(const GBufferLayout& layout, GLuint unit) const {
-  glBindTextureUnit(unit, layout.displayTexture);
+  glBindTextureUnit(unit, input(layout));
   glBindSampler(unit, linear_.get());
 }
 
-void PostTarget::copyBack(const GBufferLayout& layout) const {
-  glCopyImageSubData(output_.get(), GL_TEXTURE_2D, 0, 0, 0, 0, layout.displayTexture, GL_TEXTURE_2D, 0, 0, 0, 0,
-                     layout.width, layout.height, 1);
-}
+void PostTarget::copyBack(const GBufferLayout& layout) const { copyImage(output_.get(), input(layout), layout); }
 
 }  // namespace retroaa

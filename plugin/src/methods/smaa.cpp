@@ -228,7 +228,7 @@ class SmaaTechnique : public Technique {
   Status post(PluginContext& context, SharedTargets& shared, const FrameInfo&) override {
     static const float kNoSubsample[4] = {0, 0, 0, 0};
     passes_.run(
-        context, context.layout.displayTexture, [&] { shared.post->bindAsOutput(context); }, kNoSubsample);
+        context, shared.post->input(context.layout), [&] { shared.post->bindAsOutput(context); }, kNoSubsample);
     shared.post->copyBack(context.layout);
     return Status::ok();
   }
