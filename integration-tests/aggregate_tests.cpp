@@ -27,8 +27,9 @@ std::vector<std::vector<SyntheticSample>> everywhere(const std::vector<Synthetic
 TEST(AggregateClustering, TwoPlanesAtDifferentDepthsSplitExactly) {
   SyntheticFrame frame(kWidth, kHeight);
   const glm::vec3 red(1, 0, 0), blue(0, 0, 1);
-  auto hooks = frame.run(aggregate(2), everywhere({surfaceSample(10, {0, 0, 1}, red), surfaceSample(10, {0, 0, 1}, red),
-                                                   surfaceSample(20, {0, 0, 1}, blue), surfaceSample(20, {0, 0, 1}, blue)}));
+  auto hooks =
+      frame.run(aggregate(2), everywhere({surfaceSample(10, {0, 0, 1}, red), surfaceSample(10, {0, 0, 1}, red),
+                                          surfaceSample(20, {0, 0, 1}, blue), surfaceSample(20, {0, 0, 1}, blue)}));
   for (uint8_t c : hooks->plugin().readSliceCounts()) ASSERT_EQ(c, 2);
   // Light = albedo, weighted by coverage: half red, half blue.
   for (const glm::vec4& light : frame.read(frame.renderer->targets().lightTexture)) {
@@ -40,9 +41,12 @@ TEST(AggregateClustering, TwoPlanesAtDifferentDepthsSplitExactly) {
 TEST(AggregateClustering, CreaseSplitsByNormal) {
   SyntheticFrame frame(kWidth, kHeight);
   const glm::vec3 side = glm::normalize(glm::vec3(1, 0, 1));
-  auto hooks = frame.run(aggregate(2), everywhere({surfaceSample(10), surfaceSample(10), surfaceSample(10, side), surfaceSample(10, side)}));
+  auto hooks =
+      frame.run(aggregate(2),
+                everywhere({surfaceSample(10), surfaceSample(10), surfaceSample(10, side), surfaceSample(10, side)}));
   for (uint8_t c : hooks->plugin().readSliceCounts()) ASSERT_EQ(c, 2);
-  auto gentle = frame.run(aggregate(2), everywhere({surfaceSample(10), surfaceSample(10), surfaceSample(10, glm::normalize(glm::vec3(0.1f, 0, 1))),
+  auto gentle = frame.run(aggregate(2), everywhere({surfaceSample(10), surfaceSample(10),
+                                                    surfaceSample(10, glm::normalize(glm::vec3(0.1f, 0, 1))),
                                                     surfaceSample(10, glm::normalize(glm::vec3(0.1f, 0, 1)))}));
   for (uint8_t c : gentle->plugin().readSliceCounts()) ASSERT_EQ(c, 1);  // 6° apart: one surface
 }
@@ -53,7 +57,8 @@ TEST(AggregateClustering, FarAndNearShipsBehaveAlikeRelativeToTheirFootprint) {
     std::vector<uint8_t> reference;
     for (float depth : {10.0f, 10000.0f}) {
       const float gap = gapInFootprints * depth * std::tan(1.0f / kWidth);
-      auto hooks = frame.run(aggregate(2), everywhere({surfaceSample(depth), surfaceSample(depth), surfaceSample(depth + gap), surfaceSample(depth + gap)}));
+      auto hooks = frame.run(aggregate(2), everywhere({surfaceSample(depth), surfaceSample(depth),
+                                                       surfaceSample(depth + gap), surfaceSample(depth + gap)}));
       const std::vector<uint8_t> counts = hooks->plugin().readSliceCounts();
       if (reference.empty()) reference = counts;
       EXPECT_EQ(counts, reference) << gapInFootprints << " footprints at " << depth << " m";
@@ -93,7 +98,8 @@ TEST(Aggregate, EverySampleItsOwnAggregateEqualsPerSample) {
   for (int p = 0; p < kWidth * kHeight; ++p) {
     std::vector<SyntheticSample> samples;
     for (int s = 0; s < 4; ++s)
-      samples.push_back(surfaceSample(5.0f + 7.0f * s + 0.1f * p, glm::normalize(glm::vec3(0.3f * s - 0.5f, 0.1f * (p % 3), 1)),
+      samples.push_back(surfaceSample(5.0f + 7.0f * s + 0.1f * p,
+                                      glm::normalize(glm::vec3(0.3f * s - 0.5f, 0.1f * (p % 3), 1)),
                                       glm::vec3(0.1f + 0.2f * s, 0.05f * (p % 7), 0.9f - 0.2f * s)));
     pixels.push_back(samples);
   }
@@ -110,18 +116,19 @@ TEST(Aggregate, EverySampleItsOwnAggregateEqualsPerSample) {
 
 TEST(Aggregate, DemoSceneWithinTheBudgetAndNearPerSampleOnEdges) {
   PatchedHost host("default", 320, 240);
-  const host::GroundTruth gt = host.groundTruth(8);
-  const auto truth = app::DisplayImage::fromRgba8(320, 240, gt.display);
-  const auto edges = app::edgeMaskFromSpread(gt.lumaStdDev);
-  const double perSample = app::compare(host.render("per-sample"), truth, edges).edgePsnrDb;
+  const ScoringTruth truth = host.scoringTruth(8);
+  const double perSample = truth.score(host.render("per-sample")).edgePsnrDb;
   host.render("edge");  // the coverage detector's edge fraction
   const std::vector<uint8_t> edgeCounts = host.hooks->plugin().readSliceCounts();
-  const double edgeFraction = double(std::count_if(edgeCounts.begin(), edgeCounts.end(), [](uint8_t c) { return c > 1; })) / edgeCounts.size();
-  const double aggregateEdgePsnr = app::compare(host.render("aggregate"), truth, edges).edgePsnrDb;
+  const double edgeFraction =
+      double(std::count_if(edgeCounts.begin(), edgeCounts.end(), [](uint8_t c) { return c > 1; })) / edgeCounts.size();
+  const double aggregateEdgePsnr = truth.score(host.render("aggregate")).edgePsnrDb;
   const retroaa::Stats stats = host.hooks->plugin().stats();
   const std::vector<uint8_t> counts = host.hooks->plugin().readSliceCounts();
-  std::printf("aggregate c=2: %.4f evaluations/pixel (bound 1 + edge fraction = %.4f), edge PSNR %.2f dB vs per-sample %.2f dB\n",
-              stats.evaluationsPerPixel(), 1.0 + edgeFraction, aggregateEdgePsnr, perSample);
+  std::printf(
+      "aggregate c=2: %.4f evaluations/pixel (bound 1 + edge fraction = %.4f), edge PSNR %.2f dB vs per-sample %.2f "
+      "dB\n",
+      stats.evaluationsPerPixel(), 1.0 + edgeFraction, aggregateEdgePsnr, perSample);
   EXPECT_EQ(stats.lightingEvaluations, std::accumulate(counts.begin(), counts.end(), uint64_t(0)));
   EXPECT_LE(stats.evaluationsPerPixel(), 1.0 + edgeFraction);
   EXPECT_GE(aggregateEdgePsnr, perSample - 1.0);

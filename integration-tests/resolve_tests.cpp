@@ -44,11 +44,9 @@ TEST(Resolve, MedianDoesNotLightSilhouettesFromBehind) {
 
 TEST(Resolve, ImprovesEdgePsnrOnIntraModelAliasing) {
   PatchedHost host(testDataPath("scenes/intra_model.json"), 240, 180);
-  const host::GroundTruth gt = host.groundTruth(8);
-  const auto truth = app::DisplayImage::fromRgba8(240, 180, gt.display);
-  const auto edges = app::edgeMaskFromSpread(gt.lumaStdDev);
-  const app::ErrorMetrics off = app::compare(host.render("off"), truth, edges);
-  const app::ErrorMetrics resolved = app::compare(host.render("resolve"), truth, edges);
+  const ScoringTruth truth = host.scoringTruth(8);
+  const app::ErrorMetrics off = truth.score(host.render("off"));
+  const app::ErrorMetrics resolved = truth.score(host.render("resolve"));
   std::printf("intra-model edge PSNR: off %.2f dB, resolve %.2f dB (%d edge pixels)\n", off.edgePsnrDb,
               resolved.edgePsnrDb, off.edgePixels);
   EXPECT_GT(resolved.edgePsnrDb, off.edgePsnrDb + 1.0);  // stated margin: 1 dB
@@ -57,13 +55,12 @@ TEST(Resolve, ImprovesEdgePsnrOnIntraModelAliasing) {
 
 TEST(Resolve, StackedWithFxaaIsNoWorseThanFxaaAlone) {
   PatchedHost host("default", 240, 180);
-  const host::GroundTruth gt = host.groundTruth(8);
-  const auto truth = app::DisplayImage::fromRgba8(240, 180, gt.display);
-  const auto edges = app::edgeMaskFromSpread(gt.lumaStdDev);
-  const app::ErrorMetrics fxaa = app::compare(host.render("fxaa"), truth, edges);
-  const app::ErrorMetrics stacked = app::compare(host.render("resolve+fxaa"), truth, edges);
-  const app::ErrorMetrics off = app::compare(host.render("off"), truth, edges);
-  std::printf("edge PSNR: off %.2f, fxaa %.2f, resolve+fxaa %.2f dB\n", off.edgePsnrDb, fxaa.edgePsnrDb, stacked.edgePsnrDb);
+  const ScoringTruth truth = host.scoringTruth(8);
+  const app::ErrorMetrics fxaa = truth.score(host.render("fxaa"));
+  const app::ErrorMetrics stacked = truth.score(host.render("resolve+fxaa"));
+  const app::ErrorMetrics off = truth.score(host.render("off"));
+  std::printf("edge PSNR: off %.2f, fxaa %.2f, resolve+fxaa %.2f dB\n", off.edgePsnrDb, fxaa.edgePsnrDb,
+              stacked.edgePsnrDb);
   EXPECT_GT(fxaa.edgePsnrDb, off.edgePsnrDb + 0.5);
   EXPECT_GE(stacked.edgePsnrDb, fxaa.edgePsnrDb - 0.05);
 }
@@ -90,7 +87,8 @@ TEST(Plugin, ClampsSamplesWithAWarningNamingBothCounts) {
   EXPECT_EQ(granted, context().info().maxSamples);
   const auto warnings = host.hooks->plugin().warnings();
   ASSERT_FALSE(warnings.empty());
-  EXPECT_NE(warnings.back().find("samples=16 requested, the context grants " + std::to_string(granted)), std::string::npos);
+  EXPECT_NE(warnings.back().find("samples=16 requested, the context grants " + std::to_string(granted)),
+            std::string::npos);
 }
 
 TEST(Plugin, Toggling100TimesLeaksNoGlObjectsAndRaisesNoGlError) {

@@ -62,12 +62,10 @@ TEST(Slices, EdgeMatchesPerSampleAndCountsEvaluationsExactly) {
 
 TEST(Slices, PerSampleBeatsResolveAndFxaaOnSilhouettes) {
   PatchedHost host(testDataPath("scenes/light_behind_silhouette.json"), 240, 180);
-  const host::GroundTruth gt = host.groundTruth(8);
-  const auto truth = app::DisplayImage::fromRgba8(240, 180, gt.display);
-  const auto edges = app::edgeMaskFromSpread(gt.lumaStdDev);
+  const ScoringTruth truth = host.scoringTruth(8);
   std::map<std::string, double> edgePsnr;
   for (const char* method : {"per-sample", "resolve", "fxaa", "off"})
-    edgePsnr[method] = app::compare(host.render(method), truth, edges).edgePsnrDb;
+    edgePsnr[method] = truth.score(host.render(method)).edgePsnrDb;
   std::printf("silhouette edge PSNR: per-sample %.2f, resolve %.2f, fxaa %.2f, off %.2f dB\n", edgePsnr["per-sample"],
               edgePsnr["resolve"], edgePsnr["fxaa"], edgePsnr["off"]);
   EXPECT_GT(edgePsnr["per-sample"], edgePsnr["resolve"] + 3.0);
@@ -109,7 +107,9 @@ TEST(Slices, WithoutStencilExportTheResultIsTheSame) {
     retroaa::Plugin* plugin;
     GLuint modelPassFramebuffer(GLuint) override { return plugin->geometryFramebuffer(); }
     void modelPassEnd(const host::FrameView& v) override { plugin->resolve({v.verticalFovRadians}); }
-    void lighting(const host::LightingPass& pass, GLuint) override { plugin->shade([&](GLuint t) { pass(t); }); }
+    void lighting(const host::LightingPass& pass, GLuint) override {
+      plugin->shade([&](GLuint t) { pass(t); });
+    }
   } hooks;
   hooks.plugin = plugin.value().get();
   host.renderer->setHooks(&hooks);
@@ -125,8 +125,8 @@ TEST(Slices, TheHostCompilesItsStockLightingShadersUnchanged) {
   // engine-patch/host/shaders, and neither the patch nor the plugin carries a lighting shader.
   const std::string root = std::string(RETROAA_SOURCE_DIR);
   const auto& embedded = host::embeddedFiles();
-  for (const char* file : {"light_ambient_directional.frag", "light_point.frag", "lighting_common.glsl", "emissive.frag",
-                           "model.frag", "model.vert"}) {
+  for (const char* file : {"light_ambient_directional.frag", "light_point.frag", "lighting_common.glsl",
+                           "emissive.frag", "model.frag", "model.vert"}) {
     const auto found = embedded.find(std::string("shaders/") + file);
     ASSERT_NE(found, embedded.end()) << file;
     EXPECT_EQ(found->second, readFile(root + "/engine-patch/host/shaders/" + file)) << file;

@@ -1,6 +1,7 @@
 // SMAA (Jimenez et al. 2012) on hand-written display images: a straight edge is blended towards its
 // analytic coverage, flat images and a one-pixel checkerboard stay as they are, and FreeSpace Open's
-// -aa_preset 3..6 select its presets. The lookup tables' own properties: plugin/tests/smaa_tables_tests.cpp.
+// -aa_preset 3..6 select its presets; S2x; and post filters on an sRGB display. The lookup tables' own
+// properties: plugin/tests/smaa_tables_tests.cpp.
 #include "commands.h"
 #include "test_support.h"
 
@@ -156,16 +157,14 @@ TEST(SmaaS2x, LightsTheCentredPairOfSamples) {
 
 TEST(SmaaS2x, LightsTwoSamplesPerPixelAndSitsBetweenSmaaAndEdgeInQuality) {
   PatchedHost host("default", 240, 180);
-  const host::GroundTruth gt = host.groundTruth(8);
-  const auto truth = app::DisplayImage::fromRgba8(240, 180, gt.display);
-  const auto edges = app::edgeMaskFromSpread(gt.lumaStdDev);
-  const app::ErrorMetrics smaa = app::compare(host.render("smaa"), truth, edges);
-  const app::ErrorMetrics s2x = app::compare(host.render("smaa-s2x@samples=2"), truth, edges);
+  const ScoringTruth truth = host.scoringTruth(8);
+  const app::ErrorMetrics smaa = truth.score(host.render("smaa"));
+  const app::ErrorMetrics s2x = truth.score(host.render("smaa-s2x@samples=2"));
   const retroaa::Stats stats = host.hooks->plugin().stats();
   EXPECT_EQ(stats.lightingEvaluations, 2u * stats.pixels) << "both slices light every pixel";
   EXPECT_EQ(stats.slices, 2);
   EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();
-  const app::ErrorMetrics edge = app::compare(host.render("edge@samples=2"), truth, edges);
+  const app::ErrorMetrics edge = truth.score(host.render("edge@samples=2"));
   std::printf("edge PSNR: smaa %.2f, smaa-s2x %.2f, edge@2 %.2f dB\n", smaa.edgePsnrDb, s2x.edgePsnrDb,
               edge.edgePsnrDb);
   EXPECT_GT(s2x.edgePsnrDb, smaa.edgePsnrDb + 0.5);

@@ -41,6 +41,11 @@ host::GroundTruth PatchedHost::groundTruth(int samplesPerAxis) {
   return host::renderGroundTruth(*renderer, scene.camera, samplesPerAxis);
 }
 
+ScoringTruth PatchedHost::scoringTruth(int samplesPerAxis) {
+  const host::GroundTruth gt = groundTruth(samplesPerAxis);
+  return {app::DisplayImage::fromRgba8(gt.width, gt.height, gt.display), app::edgeMaskFromSpread(gt.lumaStdDev)};
+}
+
 float throughHalf(float value) { return glm::unpackHalf1x16(glm::packHalf1x16(value)); }
 
 float verticalFovFor(float horizontalFov, int width, int height) {

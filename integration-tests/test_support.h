@@ -26,6 +26,13 @@ float throughHalf(float value);
 // Path of a file in integration-tests/ (scenes, fixtures).
 std::string testDataPath(const std::string& relative);
 
+// A ground truth as the error metrics use it: its display image and its edge mask.
+struct ScoringTruth {
+  app::DisplayImage display;
+  std::vector<uint8_t> edges;
+  app::ErrorMetrics score(const app::DisplayImage& image) const { return app::compare(image, display, edges); }
+};
+
 // A host renderer on a scene with the retroaa patch installed.
 struct PatchedHost {
   host::Scene scene;
@@ -36,6 +43,7 @@ struct PatchedHost {
   // Renders the scene camera with a method spec (see app::parseMethodSpec) and returns the display.
   app::DisplayImage render(const std::string& methodSpec, const retroaa::Config& base = {});
   host::GroundTruth groundTruth(int samplesPerAxis);
+  ScoringTruth scoringTruth(int samplesPerAxis);
 };
 
 // One sample of the FSO layout written by hand: albedo, position, normal+gloss, specular, emissive,
