@@ -138,3 +138,27 @@ TEST(Slices, TheHostCompilesItsStockLightingShadersUnchanged) {
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root + "/engine-patch/patch"))
     EXPECT_NE(entry.path().extension(), ".frag") << entry.path();
 }
+
+TEST(Slices, TheHostsGBufferHoldsTheResolvedSurfaceAfterShade) {
+  // Passes after lighting (SSAO, fog, debug views) read the host's G-buffer: after a slice method's
+  // shade() it holds what `resolve` leaves there, bit for bit, unless the host opts out.
+  PatchedHost host("default", 96, 72);
+  const host::HostTargets& t = host.renderer->targets();
+  auto gbuffer = [&] {
+    std::vector<float> all;
+    for (GLuint texture : {t.color, t.position, t.normal, t.specular, t.emissive}) {
+      std::vector<float> pixels(size_t(t.width) * t.height * 4);
+      glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+      all.insert(all.end(), pixels.begin(), pixels.end());
+    }
+    return all;
+  };
+  host.render("resolve");
+  const std::vector<float> resolved = gbuffer();
+  for (const char* method : {"edge", "adaptive", "aggregate", "per-sample", "smaa-s2x"}) {
+    host.render(method);
+    EXPECT_TRUE(gbuffer() == resolved) << method;  // bit for bit (NaN-free: the scene has none)
+  }
+  host.render("per-sample@restore_gbuffer_after_shade=off");
+  EXPECT_FALSE(gbuffer() == resolved) << "opted out: the last slice's samples stay";
+}

@@ -243,6 +243,13 @@ const std::vector<Setter>& setters() {
          return parseBool("reconstruct_before_tonemap", v, c.reconstructBeforeTonemap);
        },
        [](const Config& c) { return std::string(c.reconstructBeforeTonemap ? "on" : "off"); }},
+      {{"restore_gbuffer_after_shade", "on", "on, off",
+        "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "
+        "surface, not the last slice; off saves one resolve pass"},
+       [](Config& c, const std::string& v) {
+         return parseBool("restore_gbuffer_after_shade", v, c.restoreGBufferAfterShade);
+       },
+       [](const Config& c) { return std::string(c.restoreGBufferAfterShade ? "on" : "off"); }},
       {{"preset", "none", "none, low, medium, high, ultra",
         "a bundle of the keys above, tuned by `make presets` (docs/tune.md#presets); keys after it override"},
        [](Config& c, const std::string& v) -> Status {

@@ -290,7 +290,9 @@ Status Plugin::shade(const LightingFunction& lighting) {
     SharedTargets shared = impl_->shared();
     Technique* technique = impl_->methodTechnique();
     const SliceRenderer::Plan plan = technique ? technique->slicePlan(context, shared) : SliceRenderer::Plan{};
-    const Status status = impl_->slices->shade(context, *impl_->msaa, lighting, plan);
+    Status status = impl_->slices->shade(context, *impl_->msaa, lighting, plan);
+    if (status && context.config.restoreGBufferAfterShade)
+      status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->lastFrame);
     if (impl_->budget) {  // the plugin's time this frame decides the next frame's refinement
       double ms = 0;
       for (const PassTime& pass : context.frameStats.passes) ms += pass.ms;

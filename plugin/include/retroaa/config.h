@@ -117,6 +117,10 @@ struct Config {
   // Reconstruct on the host's HDR light target between lighting and tonemapping (radiance mixes as the
   // ground truth's supersamples do; +8 B/px for a copy) instead of on the display after tonemapping.
   bool reconstructBeforeTonemap = false;
+  // After a slice method's shade(), resolve the MSAA G-buffer into the host's G-buffer again, so passes
+  // after lighting that read it (SSAO, fog, debug views) see the resolved surface, not the last slice's
+  // samples. Off saves one resolve pass per frame where nothing reads the G-buffer after lighting.
+  bool restoreGBufferAfterShade = true;
   // A GPU-time budget for the plugin's passes in ms, [0, 1000]; 0 is off. With `adaptive` (or `edge`
   // with the depth detector) a damped controller scales the refinement frame to frame to stay near it;
   // it times the passes itself (timer queries). Free to change every frame.

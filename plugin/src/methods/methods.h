@@ -58,6 +58,9 @@ class ResolvePass {
  public:
   static Result<std::unique_ptr<ResolvePass>> create(PluginContext& context, const MsaaGBuffer& source);
   Status run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
+  // The same resolve into the host's attachments only (its depth holds the resolved depth already):
+  // after the slices, so that the host's G-buffer holds the resolved surface again.
+  Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
 
  private:
   ShaderProgram program_;

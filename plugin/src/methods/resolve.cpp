@@ -28,19 +28,32 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   return pass;
 }
 
+namespace {
+void drawResolve(PluginContext& context, const ShaderProgram& program, const MsaaGBuffer& source,
+                 const FrameInfo& frame) {
+  source.beginPass(program, context, frame);
+  program.set("uWeighting", int(context.config.resolveWeighting));
+  // FreeSpace Open's footprint: tan(fov / height) with the vertical fov it passes (msaa-f.sdr).
+  program.set("uFsoFootprintTan", std::tan(frame.verticalFovRadians / float(context.layout.height)));
+  program.set("uCloseness", context.config.closeness);
+  context.drawFullscreen();
+}
+}  // namespace
+
 Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {
   ScopedPass timed(context, "resolve");
-  const GBufferLayout& layout = context.layout;
   context.beginFullscreenPass(hostTarget_.get());
   glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
-  source.beginPass(program_, context, frame);
-  program_.set("uWeighting", int(context.config.resolveWeighting));
-  // FreeSpace Open's footprint: tan(fov / height) with the vertical fov it passes (msaa-f.sdr).
-  program_.set("uFsoFootprintTan", std::tan(frame.verticalFovRadians / float(layout.height)));
-  program_.set("uCloseness", context.config.closeness);
-  context.drawFullscreen();
+  drawResolve(context, program_, source, frame);
+  return Status::ok();
+}
+
+Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {
+  ScopedPass timed(context, "resolve.restore");
+  context.beginFullscreenPass(hostTarget_.get());  // depth test off: the depth is left as it is
+  drawResolve(context, program_, source, frame);
   return Status::ok();
 }
 
