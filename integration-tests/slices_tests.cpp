@@ -162,3 +162,25 @@ TEST(Slices, TheHostsGBufferHoldsTheResolvedSurfaceAfterShade) {
   host.render("per-sample@restore_gbuffer_after_shade=off");
   EXPECT_FALSE(gbuffer() == resolved) << "opted out: the last slice's samples stay";
 }
+
+TEST(Slices, BackgroundSamplesReachTheHostsLightingAsTheHostClearedThem) {
+  // A lighting stand-in that outputs the normal it reads: a silhouette pixel's two background samples
+  // (normal cleared to 0) must be lit with the host's own clear values, not with an invented normal,
+  // and background pixels must see exactly what `off` shows them.
+  constexpr int w = 8, h = 4;
+  SyntheticFrame frame(w, h);
+  std::vector<std::vector<SyntheticSample>> pixels(w * h, {backgroundSample()});
+  pixels[0] = {surfaceSample(10), backgroundSample(), surfaceSample(10), backgroundSample()};
+  retroaa::Config config;
+  config.method = retroaa::Method::PerSample;
+  auto hooks = patch::RetroaaHooks::create(frame.renderer->targets(), config);
+  ASSERT_TRUE(hooks) << hooks.error().message;
+  retroaa::Plugin& plugin = hooks.value()->plugin();
+  fillGeometry(plugin, w, h, pixels);
+  ASSERT_TRUE(plugin.resolve({1.0f}));
+  const GLuint normal = frame.renderer->targets().normal;
+  ASSERT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(normal, target, w, h); }));
+  const std::vector<glm::vec4> light = frame.read(frame.renderer->targets().lightTexture);
+  EXPECT_NEAR(light[0].z, 0.5f, 1e-3f) << "two samples facing the camera, two background samples with normal 0";
+  for (size_t i = 1; i < light.size(); ++i) EXPECT_EQ(light[i].z, 0.0f) << "background pixel " << i;
+}

@@ -28,9 +28,12 @@ bool sampleIsFinite(ivec2 pixel, int s) {
 }
 
 #if NORMAL_ATTACHMENT >= 0
-// A sample written for the host's lighting: a zero-length normal (which a host that normalises it
-// would turn into NaN) becomes one facing the camera; everything else is left bit for bit.
-vec4 safeNormal(vec4 normalGloss) {
+// A sample written for the host's lighting: on geometry, a zero-length normal (which a host that
+// normalises it would turn into NaN) becomes one facing the camera. A background sample is no surface:
+// its values stay as the host cleared them, so the host's lighting treats it as it treats its own
+// background pixels. Everything else is left bit for bit.
+vec4 safeNormal(vec4 normalGloss, vec4 position) {
+  if (isBackground(position[DEPTH_CHANNEL])) return normalGloss;
   return dot(normalGloss.xyz, normalGloss.xyz) > 0.0 ? normalGloss : vec4(0.0, 0.0, 1.0, normalGloss.w);
 }
 #endif

@@ -114,7 +114,7 @@ void main() {
   if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, lastContributor);
 #if NORMAL_ATTACHMENT >= 0
-    values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT]);
+    values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], values[POSITION_ATTACHMENT]);
 #endif
     STORE_OUTPUTS(values);
     gl_FragDepth = FETCH(uDepthBuffer, pixel, lastContributor).r;

@@ -2,7 +2,8 @@
 // Slice s: sample s of each pixel, copied verbatim into the host's single-sample G-buffer so the host's
 // unchanged lighting can light it. The stencil test (count > s) keeps other pixels untouched. A sample
 // with NaN or Inf anywhere is skipped: the pixel keeps the previous slice's (finite) values; a
-// zero-length normal is replaced by one facing the camera.
+// zero-length normal on geometry is replaced by one facing the camera (background samples are left as
+// the host cleared them).
 #include "common/gbuffer.glsl"
 uniform int uSample;
 void main() {
@@ -11,7 +12,7 @@ void main() {
   vec4 values[ATTACHMENT_COUNT];
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, uSample);
 #if NORMAL_ATTACHMENT >= 0
-  values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT]);
+  values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], values[POSITION_ATTACHMENT]);
 #endif
   STORE_OUTPUTS(values);
 }
