@@ -173,3 +173,34 @@ TEST(Plugin, BrokenShaderOverrideFallsBackToTheBuiltInAndSaysWhere) {
   EXPECT_NE(warnings.back().find("resolve/resolve.frag does not compile"), std::string::npos) << warnings.back();
   EXPECT_NE(warnings.back().find("0:"), std::string::npos) << "the compiler's line is missing: " << warnings.back();
 }
+
+TEST(Plugin, AHostDrawsIntoAMultisampledAttachmentBeforeResolve) {
+  // Decals: the host writes the MSAA albedo through a framebuffer of its own between the model pass and
+  // resolve(); the resolved G-buffer carries it.
+  constexpr int w = 8, h = 4;
+  SyntheticFrame frame(w, h);
+  retroaa::Config config;
+  config.method = retroaa::Method::Resolve;
+  auto hooks = patch::RetroaaHooks::create(frame.renderer->targets(), config);
+  ASSERT_TRUE(hooks) << hooks.error().message;
+  retroaa::Plugin& plugin = hooks.value()->plugin();
+  fillGeometry(plugin, w, h, std::vector<std::vector<SyntheticSample>>(w * h, {surfaceSample(10)}));
+  const GLuint albedo = plugin.multisampledAttachment(retroaa::AttachmentRole::Albedo);
+  ASSERT_NE(albedo, 0u);
+  GLint samples = 0;
+  glGetTextureLevelParameteriv(albedo, 0, GL_TEXTURE_SAMPLES, &samples);
+  EXPECT_EQ(samples, plugin.stats().samples);
+  GLuint decal = 0;
+  glCreateFramebuffers(1, &decal);
+  glNamedFramebufferTexture(decal, GL_COLOR_ATTACHMENT0, albedo, 0);
+  const float paint[4] = {0.25f, 0.5f, 0.75f, 1.0f};
+  glClearNamedFramebufferfv(decal, GL_COLOR, 0, paint);
+  glDeleteFramebuffers(1, &decal);
+  ASSERT_TRUE(plugin.resolve({1.0f}));
+  for (const glm::vec4& c : frame.read(frame.renderer->targets().color)) ASSERT_EQ(c, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+  // Without an MSAA G-buffer there is none to hand out.
+  config.method = retroaa::Method::Fxaa;
+  ASSERT_TRUE(plugin.reconfigure(config));
+  EXPECT_EQ(plugin.multisampledAttachment(retroaa::AttachmentRole::Albedo), 0u);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}

@@ -255,6 +255,11 @@ GLuintHandle Plugin::prepassFramebuffer() const {
   return 0;
 }
 
+GLuintHandle Plugin::multisampledAttachment(AttachmentRole role) const {
+  const int index = findRole(impl_->context.layout, role);
+  return impl_->msaa && index >= 0 ? impl_->msaa->attachment(size_t(index)) : 0;
+}
+
 GLuintHandle Plugin::geometryFramebuffer() const {
   return impl_->msaa ? impl_->msaa->framebuffer() : impl_->context.layout.gbufferFramebuffer;
 }

@@ -45,6 +45,12 @@ class RETROAA_API Plugin {
   // The framebuffer the host's model pass renders into: the plugin's MSAA G-buffer for
   // multi-sample methods, the host's own otherwise.
   GLuintHandle geometryFramebuffer() const;
+  // The multisampled texture behind the first attachment with `role` (GL_TEXTURE_2D_MULTISAMPLE, the
+  // host's format, stats().samples samples), for a host that draws into the G-buffer between the model
+  // pass and resolve() (decals) through a framebuffer of its own. 0 when the method has no MSAA G-buffer
+  // or the layout no such role. Valid until the next reconfigure() or resize(): a new method or sample
+  // count may replace it.
+  GLuintHandle multisampledAttachment(AttachmentRole role) const;
   // For `coverage` and `reconstruct`: a multisampled framebuffer the host draws its models into once
   // more, after the model pass, with its own model shaders and colour writes on. Clear its depth to 1 and
   // its draw buffers 0..n to 0 first. Its depth is always kept; `reconstruct` also keeps the output at the
