@@ -197,7 +197,8 @@ TEST(Plugin, AHostDrawsIntoAMultisampledAttachmentBeforeResolve) {
   glClearNamedFramebufferfv(decal, GL_COLOR, 0, paint);
   glDeleteFramebuffers(1, &decal);
   ASSERT_TRUE(plugin.resolve({1.0f}));
-  for (const glm::vec4& c : frame.read(frame.renderer->targets().color)) ASSERT_EQ(c, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+  for (const glm::vec4& c : frame.read(frame.renderer->targets().color))
+    ASSERT_EQ(c, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
   // Without an MSAA G-buffer there is none to hand out.
   config.method = retroaa::Method::Fxaa;
   ASSERT_TRUE(plugin.reconfigure(config));
