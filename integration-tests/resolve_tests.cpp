@@ -205,3 +205,59 @@ TEST(Plugin, AHostDrawsIntoAMultisampledAttachmentBeforeResolve) {
   EXPECT_EQ(plugin.multisampledAttachment(retroaa::AttachmentRole::Albedo), 0u);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
+
+TEST(Plugin, AcceptsEveryCommonDepthFormatAndRefusesWhatIsNoDepth) {
+  // The MSAA depth takes the host's format, and the resolve writes the host's depth texture, whatever
+  // its format: sized or unsized, with or without stencil.
+  constexpr int w = 8, h = 4;
+  struct Format {
+    const char* name;
+    GLenum internal, unsizedFormat, unsizedType;  // unsizedFormat != 0: allocate with glTexImage2D
+    double tolerance;
+  };
+  const Format formats[] = {{"GL_DEPTH24_STENCIL8", GL_DEPTH24_STENCIL8, 0, 0, 1e-6},
+                            {"GL_DEPTH_COMPONENT32F", GL_DEPTH_COMPONENT32F, 0, 0, 0},
+                            {"GL_DEPTH32F_STENCIL8", GL_DEPTH32F_STENCIL8, 0, 0, 0},
+                            {"GL_DEPTH_COMPONENT16", GL_DEPTH_COMPONENT16, 0, 0, 2e-5},
+                            {"unsized GL_DEPTH_COMPONENT", GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT, GL_FLOAT, 1e-6}};
+  const SyntheticSample sample = surfaceSample(10);
+  for (const Format& format : formats) {
+    SyntheticFrame frame(w, h);
+    retroaa::Description description;
+    description.config.method = retroaa::Method::Resolve;
+    description.layout = patch::describeHostGBuffer(frame.renderer->targets());
+    GLuint depth = 0;
+    if (format.unsizedFormat) {
+      glGenTextures(1, &depth);
+      glBindTexture(GL_TEXTURE_2D, depth);
+      glTexImage2D(GL_TEXTURE_2D, 0, GLint(format.internal), w, h, 0, format.unsizedFormat, format.unsizedType,
+                   nullptr);
+      glBindTexture(GL_TEXTURE_2D, 0);
+    } else {
+      glCreateTextures(GL_TEXTURE_2D, 1, &depth);
+      glTextureStorage2D(depth, 1, format.internal, w, h);
+    }
+    description.layout.depthStencilTexture = depth;
+    {
+      auto plugin = retroaa::Plugin::create(description);
+      ASSERT_TRUE(plugin) << format.name << ": " << plugin.error().message;
+      fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
+      ASSERT_TRUE(plugin.value()->resolve({1.0f}));
+    }
+    std::vector<float> values(w * h);
+    glGetTextureImage(depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(values.size() * sizeof(float)), values.data());
+    // Float formats keep the sample's depth exactly: the MSAA depth is float too.
+    for (float v : values) ASSERT_NEAR(v, sample.depthBuffer.x, format.tolerance) << format.name;
+    glDeleteTextures(1, &depth);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << format.name;
+  }
+  // A colour texture as depth: InvalidLayout naming the field.
+  SyntheticFrame frame(w, h);
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(frame.renderer->targets());
+  description.layout.depthStencilTexture = frame.renderer->targets().color;
+  auto refused = retroaa::Plugin::create(description);
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.error().code, retroaa::ErrorCode::InvalidLayout);
+  EXPECT_NE(refused.error().message.find("depthStencilTexture"), std::string::npos) << refused.error().message;
+}

@@ -78,10 +78,38 @@ uint64_t bytesPerTexel(GLenum internalFormat) {
     case GL_DEPTH24_STENCIL8:
     case GL_DEPTH_COMPONENT32F: return 4;
     case GL_DEPTH32F_STENCIL8: return 8;
+    case GL_DEPTH_COMPONENT24: return 4;
+    case GL_DEPTH_COMPONENT16: return 2;
     case GL_R8: return 1;
     case GL_RG8: return 2;
     default: return 16;  // unknown formats: count generously rather than hide memory
   }
+}
+
+GLenum sizedDepthFormat(GLuint texture) {
+  if (!texture || !glIsTexture(texture)) return 0;
+  GLint format = 0, depthBits = 0, stencilBits = 0, depthType = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  switch (format) {
+    case GL_DEPTH24_STENCIL8:
+    case GL_DEPTH32F_STENCIL8:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT16: return GLenum(format);
+    default: break;
+  }
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH_SIZE, &depthBits);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_STENCIL_SIZE, &stencilBits);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH_TYPE, &depthType);
+  if (depthBits == 0) return 0;
+  const bool floating = depthType == GL_FLOAT;
+  if (stencilBits > 0) return floating ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
+  if (floating) return GL_DEPTH_COMPONENT32F;
+  return depthBits > 16 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT16;
+}
+
+bool hasStencil(GLenum depthFormat) {
+  return depthFormat == GL_DEPTH24_STENCIL8 || depthFormat == GL_DEPTH32F_STENCIL8;
 }
 
 GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, int height, int samples,

@@ -63,6 +63,13 @@ GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, 
                       const char* label, uint64_t& bytes);
 GlFramebuffer makeFramebuffer(PluginContext& context, const char* label);
 
+// The sized depth format of the host's depth texture: its internal format when sized, else the one its
+// depth and stencil sizes and depth type say (an unsized GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL). 0 when
+// `texture` is no depth texture. The plugin's MSAA depth uses the same format (a reversed-Z D32F
+// host keeps its precision).
+GLenum sizedDepthFormat(GLuint texture);
+bool hasStencil(GLenum depthFormat);
+
 // The driver's sample positions of `framebuffer` into `positionsXY` (x, y pairs in [0, 1)); entries
 // past the framebuffer's own GL_SAMPLES keep their value. Binds the framebuffer.
 void readSamplePositions(GLuint framebuffer, std::vector<float>& positionsXY);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace retroaa {
 
@@ -38,6 +39,18 @@ Status validateLayout(const GBufferLayout& layout) {
   if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer || !layout.lightTexture ||
       !layout.displayFramebuffer || !layout.displayTexture)
     return invalid("layout is missing a host framebuffer or texture (gbuffer, depth-stencil, light, display)");
+  if (!sizedDepthFormat(layout.depthStencilTexture)) {
+    GLint format = 0;
+    if (glIsTexture(layout.depthStencilTexture))
+      glGetTextureLevelParameteriv(layout.depthStencilTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "0x%04x", unsigned(format));
+    return invalid(
+        std::string("depthStencilTexture ") + std::to_string(layout.depthStencilTexture) +
+        (format ? std::string(" has internal format ") + hex + ", no depth format" : std::string(" is not a texture")) +
+        " (accepted: any depth or depth-stencil texture, e.g. GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT32F, "
+        "GL_DEPTH32F_STENCIL8; a renderbuffer must be copied into one)");
+  }
   return Status::ok();
 }
 

@@ -24,9 +24,13 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
     drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
   }
   glNamedFramebufferDrawBuffers(gbuffer->framebuffer(), GLsizei(drawBuffers.size()), drawBuffers.data());
-  gbuffer->depthStencil_ = makeTexture(context, GL_DEPTH24_STENCIL8, layout.width, layout.height, storageSamples,
+  // The host's depth format: its model pass (depth function, reversed-Z, clear value) runs unchanged.
+  const GLenum depthFormat = sizedDepthFormat(layout.depthStencilTexture);
+  gbuffer->depthStencil_ = makeTexture(context, depthFormat, layout.width, layout.height, storageSamples,
                                        "msaa_gbuffer.depth_stencil", gbuffer->bytes_);
-  glNamedFramebufferTexture(gbuffer->framebuffer(), GL_DEPTH_STENCIL_ATTACHMENT, gbuffer->depthStencil(), 0);
+  glNamedFramebufferTexture(gbuffer->framebuffer(),
+                            hasStencil(depthFormat) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                            gbuffer->depthStencil(), 0);
   if (Status status = checkFramebuffer(gbuffer->framebuffer(), "msaa_gbuffer"); !status) return status.error();
   GLint allocated = 1;
   if (storageSamples > 0) glGetTextureLevelParameteriv(gbuffer->depthStencil(), 0, GL_TEXTURE_SAMPLES, &allocated);
