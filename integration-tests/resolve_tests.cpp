@@ -261,3 +261,35 @@ TEST(Plugin, AcceptsEveryCommonDepthFormatAndRefusesWhatIsNoDepth) {
   EXPECT_EQ(refused.error().code, retroaa::ErrorCode::InvalidLayout);
   EXPECT_NE(refused.error().message.find("depthStencilTexture"), std::string::npos) << refused.error().message;
 }
+
+TEST(Plugin, ALayoutWhoseDataLooksWrongIsNamedInAWarning) {
+  // The first frame counts, with occlusion queries read a frame later (never waited on), the pixels
+  // without geometry and those with geometry at view depth <= 0 under the layout's description.
+  constexpr int w = 16, h = 8;
+  SyntheticSample worldSpace = surfaceSample(10);
+  worldSpace.attachments[1].z = -4.0f;  // a world-space z labelled as view depth
+  const std::pair<const char*, SyntheticSample> cases[] = {
+      {"view depth <= 0", worldSpace}, {"no sample with geometry", backgroundSample()}, {nullptr, surfaceSample(10)}};
+  for (const auto& [expected, sample] : cases) {
+    SyntheticFrame frame(w, h);
+    retroaa::Config config;
+    config.method = retroaa::Method::Resolve;
+    auto hooks = patch::RetroaaHooks::create(frame.renderer->targets(), config);
+    ASSERT_TRUE(hooks) << hooks.error().message;
+    retroaa::Plugin& plugin = hooks.value()->plugin();
+    for (int f = 0; f < 2; ++f) {
+      fillGeometry(plugin, w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
+      ASSERT_TRUE(plugin.resolve({1.0f}));
+      glFinish();  // the test's own wait, so that frame 2 finds the counts available
+    }
+    std::string layoutWarnings;
+    for (const std::string& warning : plugin.warnings())
+      if (warning.rfind("layout check:", 0) == 0) layoutWarnings += warning + "\n";
+    if (expected) {
+      EXPECT_NE(layoutWarnings.find(expected), std::string::npos) << layoutWarnings;
+      EXPECT_NE(layoutWarnings.find("depthChannel=2"), std::string::npos) << layoutWarnings;
+    } else {
+      EXPECT_EQ(layoutWarnings, "") << "a plausible frame";
+    }
+  }
+}

@@ -63,8 +63,14 @@ class ResolvePass {
   Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
 
  private:
-  ShaderProgram program_;
+  // The layout check: on the first frame, occlusion queries count the pixels without geometry and those
+  // with geometry at view depth <= 0; a later frame reads them once available (never waiting) and warns,
+  // naming the layout fields, when the data looks unlike the layout's description.
+  void checkLayout(PluginContext& context, const MsaaGBuffer& source);
+  ShaderProgram program_, layoutCheck_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
+  GlQuery noGeometryQuery_, nonPositiveQuery_;
+  enum class LayoutCheck : uint8_t { ToIssue, Pending, Done } layoutCheckState_ = LayoutCheck::ToIssue;
 };
 
 // The slice mechanism (DESIGN.md), shared by every multi-slice method: a per-pixel slice count in a

@@ -1,5 +1,6 @@
 // `resolve`: MSAA G-buffer → host G-buffer through a depth-aware weighting (shaders/resolve/).
 #include <cmath>
+#include <string>
 
 #include "methods.h"
 
@@ -25,6 +26,15 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   glNamedFramebufferDrawBuffers(pass->hostTarget_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
   glNamedFramebufferTexture(pass->hostTarget_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
   if (Status status = checkFramebuffer(pass->hostTarget_.get(), "resolve.host_target"); !status) return status.error();
+  auto check =
+      context.shaders->program("common/fullscreen.vert", "resolve/layout_check.frag",
+                               source.shaderDefines(layout, false), {RETROAA_DEPTH_ENCODING_UNIFORMS, "uMode"});
+  if (!check) return check.error();
+  pass->layoutCheck_ = std::move(check.value());
+  GLuint queries[2] = {0, 0};
+  glGenQueries(2, queries);
+  pass->noGeometryQuery_ = GlQuery(context.objects, queries[0]);
+  pass->nonPositiveQuery_ = GlQuery(context.objects, queries[1]);
   return pass;
 }
 
@@ -47,7 +57,52 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
   drawResolve(context, program_, source, frame);
+  checkLayout(context, source);
   return Status::ok();
+}
+
+void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source) {
+  const GBufferLayout& layout = context.layout;
+  if (layoutCheckState_ == LayoutCheck::ToIssue) {
+    context.beginFullscreenPass(hostTarget_.get());
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    layoutCheck_.use();
+    source.bind(layout);
+    layoutCheck_.setDepthEncoding(layout);
+    for (int mode = 0; mode < 2; ++mode) {
+      layoutCheck_.set("uMode", mode);
+      glBeginQuery(GL_SAMPLES_PASSED, mode == 0 ? noGeometryQuery_.get() : nonPositiveQuery_.get());
+      context.drawFullscreen();
+      glEndQuery(GL_SAMPLES_PASSED);
+    }
+    layoutCheckState_ = LayoutCheck::Pending;
+    return;
+  }
+  if (layoutCheckState_ != LayoutCheck::Pending) return;
+  GLuint available = 0;
+  glGetQueryObjectuiv(nonPositiveQuery_.get(), GL_QUERY_RESULT_AVAILABLE, &available);
+  if (!available) return;  // a later frame reads it: never a wait in the frame path
+  GLuint64 noGeometry = 0, nonPositive = 0;
+  glGetQueryObjectui64v(noGeometryQuery_.get(), GL_QUERY_RESULT, &noGeometry);  // available: ends before it
+  glGetQueryObjectui64v(nonPositiveQuery_.get(), GL_QUERY_RESULT, &nonPositive);
+  layoutCheckState_ = LayoutCheck::Done;
+  const double pixels = double(context.pixelCount());
+  const char* kinds[] = {"Linear", "LogAboveKnee", "FsoCompressedViewZ"};
+  const std::string where =
+      "(GBufferLayout: ViewPosition attachment, depthChannel=" + std::to_string(layout.depthChannel) +
+      ", depthEncoding " + kinds[int(layout.depthEncoding.kind)] + ")";
+  auto percent = [&](GLuint64 count) { return std::to_string(int(std::lround(100.0 * double(count) / pixels))); };
+  if (double(nonPositive) > 0.005 * pixels)
+    context.warn("layout check: " + percent(nonPositive) + "% of pixels hold geometry at view depth <= 0 " + where +
+                 ": is the position world-space, or the depth in another channel? Such samples are treated as "
+                 "background by the resolve and lose their anti-aliasing");
+  if (double(noGeometry) >= 0.99 * pixels)
+    context.warn("layout check: " + percent(noGeometry) + "% of pixels have no sample with geometry " + where +
+                 ": if the frame shows geometry, its depth reads as background under that encoding (" +
+                 (layout.depthEncoding.kind == DepthEncoding::Kind::FsoCompressedViewZ
+                      ? std::string("decoded depth <= 0.001 m")
+                      : "stored >= backgroundAbove = " + std::to_string(int(layout.depthEncoding.backgroundAbove))) +
+                 "), or the depth is in another channel");
 }
 
 Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {

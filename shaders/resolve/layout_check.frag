@@ -1,0 +1,18 @@
+#version 450 core
+// The layout check (ResolvePass, once after the G-buffer is made): counted by occlusion queries, no
+// colour written. Mode 0 keeps the pixels with no geometry sample under the layout's depth encoding;
+// mode 1 the pixels with a geometry sample whose decoded view depth is not positive (a world-space
+// position labelled ViewPosition does that: geometry behind the camera's plane).
+#include "common/gbuffer.glsl"
+uniform int uMode;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  bool anyGeometry = false, nonPositive = false;
+  for (int s = 0; s < SAMPLES; ++s) {
+    float stored = FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL];
+    if (isBackground(stored)) continue;
+    anyGeometry = true;
+    if (!(decodeDepth(stored) > 0.0)) nonPositive = true;
+  }
+  if (uMode == 0 ? anyGeometry : !nonPositive) discard;
+}
