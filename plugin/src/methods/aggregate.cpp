@@ -48,8 +48,7 @@ class AggregateTechnique : public Technique {
     glNamedFramebufferDrawBuffers(fbo, 2, drawBuffers);
     if (Status status = checkFramebuffer(fbo, "aggregate.cluster"); !status) return status.error();
 
-    t.samplePositions_.assign(size_t(t.samples_) * 2, 0.5f);
-    if (source.multisampled()) readSamplePositions(source.framebuffer(), t.samplePositions_);
+    t.samplePositions_ = source.samplePositions();
     return std::unique_ptr<Technique>(std::move(technique));
   }
 

@@ -32,6 +32,9 @@ class MsaaGBuffer {
   int samples() const { return samples_; }  // as allocated by the driver (may exceed the request)
   int requestedSamples() const { return requested_; }
   bool multisampled() const { return samples_ > 1 || multisampledStorage_; }
+  // The driver's sample positions, x and y per allocated sample in [0, 1)²; the centre for single-sample
+  // storage. Binds the G-buffer's framebuffer.
+  std::vector<float> samplePositions() const;
   // The #defines shaders reading this G-buffer need (shaders/common/gbuffer.glsl): sample count,
   // attachment roles, depth encoding, and one output per host attachment with STORE_OUTPUTS(values).
   std::string shaderDefines(const GBufferLayout& layout, bool withOutputs = true) const;

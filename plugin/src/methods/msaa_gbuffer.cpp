@@ -42,6 +42,12 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   return gbuffer;
 }
 
+std::vector<float> MsaaGBuffer::samplePositions() const {
+  std::vector<float> positions(size_t(samples_) * 2, 0.5f);
+  if (multisampled()) readSamplePositions(framebuffer(), positions);
+  return positions;
+}
+
 int findRole(const GBufferLayout& layout, AttachmentRole role) {
   for (size_t i = 0; i < layout.attachments.size(); ++i)
     if (layout.attachments[i].role == role) return static_cast<int>(i);

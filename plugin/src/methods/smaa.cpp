@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <string>
 
-#include "../gl_state.h"
 #include "../shared_constants.h"
 #include "../technique.h"
 
@@ -88,22 +87,16 @@ class SmaaPasses {
     const GBufferLayout& layout = context.layout;
     p.quality_ = context.config.smaaQuality;
     p.detection_ = context.config.smaaEdgeDetection;
-    p.positionAttachment_ = findRole(layout, AttachmentRole::ViewPosition);
-    if (p.detection_ == SmaaEdgeDetection::Depth && p.positionAttachment_ < 0) {
-      context.warn("smaa_edge_detection=depth needs a ViewPosition attachment and the layout has none; using luma");
-      p.detection_ = SmaaEdgeDetection::Luma;
-    }
+    p.positionAttachment_ = findRole(layout, AttachmentRole::ViewPosition);  // the layout has exactly one
     const std::string name = label;
     p.edges_ = makeTexture(context, GL_RG8, layout.width, layout.height, 0, (name + ".edges").c_str(), p.bytes_);
     p.weights_ = makeTexture(context, GL_RGBA8, layout.width, layout.height, 0, (name + ".weights").c_str(), p.bytes_);
+    p.area_ = makeTexture(context, GL_RG8, kSmaaAreaWidth, kSmaaAreaHeight, 0, (name + ".area").c_str(), p.bytes_);
     // The weights pass reads two edges per bilinear fetch, and interpolates the area texture's distances.
-    for (GLuint texture : {p.edges_.get()}) {
+    for (GLuint texture : {p.edges_.get(), p.area_.get()}) {
       glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
       glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
-    p.area_ = makeTexture(context, GL_RG8, kSmaaAreaWidth, kSmaaAreaHeight, 0, (name + ".area").c_str(), p.bytes_);
-    glTextureParameteri(p.area_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(p.area_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     p.search_ =
         makeTexture(context, GL_R8UI, kSmaaSearchWidth, kSmaaSearchHeight, 0, (name + ".search").c_str(), p.bytes_);
     GLint alignment = 4;
@@ -145,6 +138,10 @@ class SmaaPasses {
     auto blend = context.shaders->program("common/fullscreen.vert", "smaa/blend.frag", common, {"uMetrics"});
     if (!blend) return blend.error();
     p.blendProgram_ = std::move(blend.value());
+    // The size is fixed for the programs' lifetime (a new layout rebuilds every technique).
+    const float metrics[4] = {1.0f / layout.width, 1.0f / layout.height, float(layout.width), float(layout.height)};
+    for (const ShaderProgram* program : {&p.edgesProgram_, &p.weightsProgram_, &p.blendProgram_})
+      program->setVec4("uMetrics", metrics);
     return p;
   }
 
@@ -153,7 +150,6 @@ class SmaaPasses {
   template <typename BindOutput>
   void run(PluginContext& context, GLuint input, const BindOutput& bindOutput, const float subsample[4]) const {
     const GBufferLayout& layout = context.layout;
-    const float metrics[4] = {1.0f / layout.width, 1.0f / layout.height, float(layout.width), float(layout.height)};
     for (GLuint unit : {0u, 1u, 2u}) glBindSampler(unit, 0);  // the textures' own filters
     {
       ScopedPass timed(context, "smaa.edges");
@@ -167,7 +163,6 @@ class SmaaPasses {
       } else {
         glBindTextureUnit(0, input);
       }
-      edgesProgram_.setVec4("uMetrics", metrics);
       context.drawFullscreen();
     }
     {
@@ -177,7 +172,6 @@ class SmaaPasses {
       glBindTextureUnit(0, edges_.get());
       glBindTextureUnit(1, area_.get());
       glBindTextureUnit(2, search_.get());
-      weightsProgram_.setVec4("uMetrics", metrics);
       weightsProgram_.setVec4("uSubsampleIndices", subsample);
       context.drawFullscreen();
     }
@@ -185,26 +179,18 @@ class SmaaPasses {
       ScopedPass timed(context, "smaa.blend");
       bindOutput();
       blendProgram_.use();
-      glBindSampler(0, 0);
       glBindTextureUnit(0, input);
       glBindTextureUnit(1, weights_.get());
-      blendProgram_.setVec4("uMetrics", metrics);
       context.drawFullscreen();
     }
   }
 
   bool servesConfig(const Config& config) const {
-    return config.smaaQuality == quality_ && grantedDetection(config) == detection_;
+    return config.smaaQuality == quality_ && config.smaaEdgeDetection == detection_;
   }
   uint64_t bytes() const { return bytes_; }
 
  private:
-  SmaaEdgeDetection grantedDetection(const Config& config) const {
-    // A depth request the layout cannot serve is granted as luma.
-    return config.smaaEdgeDetection == SmaaEdgeDetection::Depth && positionAttachment_ < 0 ? SmaaEdgeDetection::Luma
-                                                                                           : config.smaaEdgeDetection;
-  }
-
   GlTexture edges_, weights_, area_, search_;
   GlFramebuffer edgesTarget_, weightsTarget_;
   ShaderProgram edgesProgram_, weightsProgram_, blendProgram_;
@@ -260,8 +246,7 @@ class SmaaS2xTechnique : public Technique {
     t.filteredTarget_ = makeFramebuffer(context, "smaa_s2x.filtered");
     glNamedFramebufferTexture(t.filteredTarget_.get(), GL_COLOR_ATTACHMENT0, t.filtered_.get(), 0);
     if (Status status = checkFramebuffer(t.filteredTarget_.get(), "smaa_s2x.filtered"); !status) return status.error();
-    std::vector<float> positions(size_t(std::max(shared.msaa->samples(), 2)) * 2, 0.5f);
-    if (shared.msaa->multisampled()) readSamplePositions(shared.msaa->framebuffer(), positions);
+    const std::vector<float> positions = shared.msaa->samplePositions();
     t.pair_ = smaaS2xSamplePair(positions);
     for (size_t s = 0; s < 2; ++s) {
       const int sample = t.pair_[s];
@@ -281,7 +266,6 @@ class SmaaS2xTechnique : public Technique {
     plan.firstSliceEverywhere = true;
     plan.sliceCount = 2;
     plan.filterSliceLight = [this, &context](int slice, GLuint light) -> Result<GLuint> {
-      GlStateGuard guard;
       passes_.run(
           context, light, [&] { context.beginFullscreenPass(filteredTarget_.get()); }, indices_[size_t(slice)].data());
       return filtered_.get();
