@@ -20,9 +20,8 @@ struct CoverageFixture {
     retroaa::Config config;
     config.method = retroaa::Method::Coverage;
     config.coverageTolerance = tolerance;
-    auto created = patch::RetroaaHooks::create(frame.renderer->targets(), config);
-    if (!created) throw std::runtime_error(created.error().message);
-    hooks = std::move(created.value());
+    hooks = frame.attach(config);
+    if (!hooks) throw std::runtime_error("the patch did not attach");
     const host::HostTargets& t = frame.renderer->targets();
     glTextureSubImage2D(t.displayTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, display.data());
     std::vector<uint32_t> depth(kWidth * kHeight, uint32_t(pixelDepth * 0xFFFFFF) << 8);

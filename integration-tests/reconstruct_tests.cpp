@@ -25,9 +25,8 @@ struct ReconstructFixture {
     config.method = retroaa::Method::Reconstruct;
     config.samples = 4;
     config.reconstructTolerance = tolerance;
-    auto created = patch::RetroaaHooks::create(frame.renderer->targets(), config);
-    EXPECT_TRUE(created) << created.error().message;
-    hooks = std::move(created.value());
+    hooks = frame.attach(config);
+    if (!hooks) throw std::runtime_error("the patch did not attach");
     const host::HostTargets& t = frame.renderer->targets();
     glTextureSubImage2D(t.displayTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, display.data());
     std::vector<uint32_t> depth(kWidth * kHeight);

@@ -181,9 +181,9 @@ TEST(Plugin, AHostDrawsIntoAMultisampledAttachmentBeforeResolve) {
   SyntheticFrame frame(w, h);
   retroaa::Config config;
   config.method = retroaa::Method::Resolve;
-  auto hooks = patch::RetroaaHooks::create(frame.renderer->targets(), config);
-  ASSERT_TRUE(hooks) << hooks.error().message;
-  retroaa::Plugin& plugin = hooks.value()->plugin();
+  auto hooks = frame.attach(config);
+  ASSERT_TRUE(hooks);
+  retroaa::Plugin& plugin = hooks->plugin();
   fillGeometry(plugin, w, h, std::vector<std::vector<SyntheticSample>>(w * h, {surfaceSample(10)}));
   const GLuint albedo = plugin.multisampledAttachment(retroaa::AttachmentRole::Albedo);
   ASSERT_NE(albedo, 0u);
@@ -274,9 +274,9 @@ TEST(Plugin, ALayoutWhoseDataLooksWrongIsNamedInAWarning) {
     SyntheticFrame frame(w, h);
     retroaa::Config config;
     config.method = retroaa::Method::Resolve;
-    auto hooks = patch::RetroaaHooks::create(frame.renderer->targets(), config);
-    ASSERT_TRUE(hooks) << hooks.error().message;
-    retroaa::Plugin& plugin = hooks.value()->plugin();
+    auto hooks = frame.attach(config);
+    ASSERT_TRUE(hooks);
+    retroaa::Plugin& plugin = hooks->plugin();
     for (int f = 0; f < 2; ++f) {
       fillGeometry(plugin, w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
       ASSERT_TRUE(plugin.resolve({1.0f}));

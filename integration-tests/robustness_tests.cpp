@@ -92,9 +92,9 @@ TEST(Robustness, EveryMethodOnEveryHardCaseIsFiniteAndNoWorseThanOff) {
       auto light = [&](const std::string& method) {
         retroaa::Config config = app::parseMethodSpec(method, {}).config;
         config.samples = sampleCounts[n];
-        auto hooks = patch::RetroaaHooks::create(frame.renderer->targets(), config);
-        EXPECT_TRUE(hooks) << hooks.error().message;
-        retroaa::Plugin& plugin = hooks.value()->plugin();
+        auto hooks = frame.attach(config);
+        if (!hooks) throw std::runtime_error("the patch did not attach");
+        retroaa::Plugin& plugin = hooks->plugin();
         fillGeometry(plugin, kWidth, kHeight, pixels);
         EXPECT_TRUE(plugin.resolve({verticalFovFor(1.0f, kWidth, kHeight), 0.1f, 1000.0f}));
         EXPECT_TRUE(plugin.shade([&](GLuint target) { frame.renderer->lightGBuffer(camera, target); }));

@@ -173,9 +173,9 @@ TEST(Slices, BackgroundSamplesReachTheHostsLightingAsTheHostClearedThem) {
   pixels[0] = {surfaceSample(10), backgroundSample(), surfaceSample(10), backgroundSample()};
   retroaa::Config config;
   config.method = retroaa::Method::PerSample;
-  auto hooks = patch::RetroaaHooks::create(frame.renderer->targets(), config);
-  ASSERT_TRUE(hooks) << hooks.error().message;
-  retroaa::Plugin& plugin = hooks.value()->plugin();
+  auto hooks = frame.attach(config);
+  ASSERT_TRUE(hooks);
+  retroaa::Plugin& plugin = hooks->plugin();
   fillGeometry(plugin, w, h, pixels);
   ASSERT_TRUE(plugin.resolve({1.0f}));
   const GLuint normal = frame.renderer->targets().normal;

@@ -24,12 +24,11 @@ std::vector<uint8_t> smaaOf(const std::vector<uint8_t>& display, retroaa::SmaaQu
   retroaa::Config config;
   config.method = retroaa::Method::Smaa;
   config.smaaQuality = quality;
-  auto hooks = patch::RetroaaHooks::create(frame.renderer->targets(), config);
-  EXPECT_TRUE(hooks) << (hooks ? "" : hooks.error().message);
+  auto hooks = frame.attach(config);
   if (!hooks) return {};
   const GLuint displayTexture = frame.renderer->targets().displayTexture;
   glTextureSubImage2D(displayTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, display.data());
-  EXPECT_TRUE(hooks.value()->plugin().post());
+  EXPECT_TRUE(hooks->plugin().post());
   std::vector<uint8_t> out(display.size());
   glGetTextureImage(displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));

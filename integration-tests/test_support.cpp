@@ -200,19 +200,25 @@ SyntheticFrame::SyntheticFrame(int w, int h) : width(w), height(h) {
   renderer = std::make_unique<host::Renderer>(scene, width, height);
 }
 
-std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::run(const retroaa::Config& config,
-                                                         const std::vector<std::vector<SyntheticSample>>& pixels) {
+std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::attach(const retroaa::Config& config) {
   auto hooks = patch::RetroaaHooks::create(renderer->targets(), config);
   if (!hooks) {
     ADD_FAILURE() << hooks.error().message;
     return nullptr;
   }
-  retroaa::Plugin& plugin = hooks.value()->plugin();
+  return std::move(hooks.value());
+}
+
+std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::run(const retroaa::Config& config,
+                                                         const std::vector<std::vector<SyntheticSample>>& pixels) {
+  auto hooks = attach(config);
+  if (!hooks) return nullptr;
+  retroaa::Plugin& plugin = hooks->plugin();
   samples = fillGeometry(plugin, width, height, pixels);
   EXPECT_TRUE(plugin.resolve({1.0f}));
   const GLuint color = renderer->targets().color;
   EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, width, height); }));
-  return std::move(hooks.value());
+  return hooks;
 }
 
 std::vector<glm::vec4> SyntheticFrame::read(GLuint texture) const {

@@ -87,6 +87,8 @@ struct SyntheticFrame {
   int width, height;
   int samples = 0;  // allocated by the last run
   SyntheticFrame(int width, int height);
+  // The patch installed on this host with `config`, no frame run yet (a failure is a test failure).
+  std::unique_ptr<patch::RetroaaHooks> attach(const retroaa::Config& config);
   // Resolves and shades `pixels` (see fillGeometry) with `config`; the returned hooks own the plugin.
   std::unique_ptr<patch::RetroaaHooks> run(const retroaa::Config& config,
                                            const std::vector<std::vector<SyntheticSample>>& pixels);
