@@ -60,6 +60,9 @@ internal=$(grep -Ev '^ retroaa::(Plugin::|applyConfigFile|applyConfigText|applyF
 [ -z "$internal" ] || { echo "shared: internal symbols exported:" $internal; exit 1; }
 cmake -S "$consumer" -B "$work/shared-consumer" -DCONSUME=package -DCMAKE_PREFIX_PATH="$work/shared-prefix" >/dev/null
 cmake --build "$work/shared-consumer" >/dev/null
-ldd "$work/shared-consumer/consumer" | grep -q "$work/shared-prefix/lib/libretroaa.so" || { echo "shared: the consumer does not load the installed libretroaa.so"; exit 1; }
+# ldd's output is read whole first: `ldd | grep -q` under pipefail fails when grep, having matched, exits
+# before ldd finishes writing (SIGPIPE) — the flake this test showed under load.
+libraries=$(ldd "$work/shared-consumer/consumer")
+grep -q "$work/shared-prefix/lib/libretroaa.so" <<<"$libraries" || { echo "shared: the consumer does not load the installed libretroaa.so"; exit 1; }
 "$work/shared-consumer/consumer"
 echo "consumers: passed"
