@@ -19,7 +19,7 @@ class AdaptiveMetrics : public ::testing::Test {
     config.method = retroaa::Method::Adaptive;
     auto hooks = frame_.run(config, pixels);
     samples_ = frame_.samples;
-    evaluations_ = hooks->plugin().stats().lightingEvaluations;
+    evaluations_ = hooks->plugin().waitForStats().lightingEvaluations;
     return hooks->plugin().readSliceCounts();
   }
   std::vector<std::vector<SyntheticSample>> uniform(const std::vector<SyntheticSample>& pixel) {
@@ -107,15 +107,15 @@ TEST(Adaptive, ForcedToEverySampleEqualsPerSample) {
   double worst = 0;
   for (size_t i = 0; i < forced.rgb.size(); ++i) worst = std::max<double>(worst, std::fabs(forced.rgb[i] - perSample.rgb[i]));
   EXPECT_LE(worst, 1.0 / 255.0 + 1e-6);
-  EXPECT_EQ(host.hooks->plugin().stats().evaluationsPerPixel(), double(host.hooks->plugin().stats().samples));
+  EXPECT_EQ(host.hooks->plugin().waitForStats().evaluationsPerPixel(), double(host.hooks->plugin().stats().samples));
 }
 
 TEST(Adaptive, DemoSceneWithinTheBudgetNearPerSampleQuality) {
   PatchedHost host("default", 320, 240);
   const app::DisplayImage perSample = host.render("per-sample");
-  const double perSampleEvaluations = host.hooks->plugin().stats().evaluationsPerPixel();
+  const double perSampleEvaluations = host.hooks->plugin().waitForStats().evaluationsPerPixel();
   const app::DisplayImage adaptive = host.render("adaptive");
-  const retroaa::Stats stats = host.hooks->plugin().stats();
+  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
   const std::vector<uint8_t> counts = host.hooks->plugin().readSliceCounts();
   const double psnr = app::compare(adaptive, perSample, {}).psnrDb;
   std::printf("adaptive: %.3f evaluations/pixel (%.1f %% of per-sample), PSNR vs per-sample %.2f dB\n",

@@ -125,7 +125,7 @@ TEST(Aggregate, DemoSceneWithinTheBudgetAndNearPerSampleOnEdges) {
   const double edgeFraction =
       double(std::count_if(edgeCounts.begin(), edgeCounts.end(), [](uint8_t c) { return c > 1; })) / edgeCounts.size();
   const double aggregateEdgePsnr = truth.score(host.render("aggregate")).edgePsnrDb;
-  const retroaa::Stats stats = host.hooks->plugin().stats();
+  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
   const std::vector<uint8_t> counts = host.hooks->plugin().readSliceCounts();
   std::printf(
       "aggregate c=2: %.4f evaluations/pixel (bound 1 + edge fraction = %.4f), edge PSNR %.2f dB vs per-sample %.2f "

@@ -41,7 +41,7 @@ TEST(Capabilities, FewerSamplesAreClampedWithAWarning) {
   EXPECT_EQ(hooks->plugin().config().samples, 2);
   EXPECT_NE(hooks->plugin().warnings().front().find("samples=4 requested, the context grants 2"), std::string::npos);
   host.renderer->renderFrame(host.scene.camera);  // still renders (llvmpipe may back 2 with 4)
-  EXPECT_GE(hooks->plugin().stats().evaluationsPerPixel(), 1.0);
+  EXPECT_GE(hooks->plugin().waitForStats().evaluationsPerPixel(), 1.0);
   host.renderer->setHooks(host.hooks.get());
 }
 
@@ -52,14 +52,14 @@ TEST(Capabilities, WithoutTimerQueriesNoPassTimesAndSaysSo) {
   config.measureGpuTime = true;
   auto hooks = install(host, config, retroaa::kFeatureTimerQuery, 0);
   host.renderer->renderFrame(host.scene.camera);
-  EXPECT_TRUE(hooks->plugin().stats().passes.empty());
+  EXPECT_TRUE(hooks->plugin().waitForStats().passes.empty());
   bool said = false;
   for (const std::string& w : hooks->plugin().warnings()) said = said || w.find("no timer queries") != std::string::npos;
   EXPECT_TRUE(said);
   // And with them, the same config measures its passes.
   auto measured = install(host, config, 0, 0);
   host.renderer->renderFrame(host.scene.camera);
-  EXPECT_FALSE(measured->plugin().stats().passes.empty());
+  EXPECT_FALSE(measured->plugin().waitForStats().passes.empty());
   host.renderer->setHooks(host.hooks.get());
 }
 

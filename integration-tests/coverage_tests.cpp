@@ -108,7 +108,7 @@ TEST(CoverageFilter, GrazingPlaneRaisesFalseEdgesOnlyWithATightTolerance) {
 TEST(Coverage, HoldsOnlyADepthTargetAndLightsOncePerPixel) {
   PatchedHost host("default", 64, 48);
   host.render("coverage");
-  const retroaa::Stats stats = host.hooks->plugin().stats();
+  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
   EXPECT_EQ(stats.evaluationsPerPixel(), 1.0);
   ASSERT_EQ(stats.samples, 4);
   EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * (4u * 4u + 4u));  // D24S8 × 4 samples + the post copy

@@ -99,7 +99,7 @@ TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
   PatchedHost host("default", 64, 48);
   const app::DisplayImage off = host.render("off");
   const app::DisplayImage rebuilt = host.render("reconstruct");
-  const retroaa::Stats stats = host.hooks->plugin().stats();
+  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
   EXPECT_EQ(stats.evaluationsPerPixel(), 1.0);
   ASSERT_EQ(stats.samples, 4);
   // D24S8 and RG16F normals × 4 samples, plus the post copy: 36 B/px against resolve's 160.
@@ -113,7 +113,7 @@ TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
   // Before tonemapping: the same pass on the light target, with a copy of it (8 B/px more).
   const app::DisplayImage radiance = host.render("reconstruct@reconstruct_before_tonemap=on");
   EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, stats.bytesHeld + uint64_t(64 * 48) * 8u);
-  EXPECT_EQ(host.hooks->plugin().stats().evaluationsPerPixel(), 1.0);
+  EXPECT_EQ(host.hooks->plugin().waitForStats().evaluationsPerPixel(), 1.0);
   int changedBefore = 0;
   for (size_t i = 0; i < off.rgb.size(); i += 3) changedBefore += off.rgb[i] != radiance.rgb[i];
   EXPECT_GT(changedBefore, 0);

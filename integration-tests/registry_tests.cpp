@@ -83,9 +83,9 @@ TEST(Registry, ATechniqueInOneFileAndOneRowRunsThroughEveryLayer) {
   PatchedHost host("default", 64, 48);
   const int objectsBefore = host.hooks->plugin().stats().glObjectsHeld;
   const app::DisplayImage perSample = host.render("per-sample");
-  const uint64_t perSampleEvaluations = host.hooks->plugin().stats().lightingEvaluations;
+  const uint64_t perSampleEvaluations = host.hooks->plugin().waitForStats().lightingEvaluations;
   const app::DisplayImage mine = host.render("test-every-pixel");
-  const retroaa::Stats stats = host.hooks->plugin().stats();
+  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
   EXPECT_EQ(stats.method, kTestMethod);
   EXPECT_EQ(mine.rgb, perSample.rgb);
   EXPECT_EQ(stats.lightingEvaluations, perSampleEvaluations);
@@ -197,9 +197,9 @@ TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {
   retroaa::ObjectCounter counter;
   std::vector<std::string> warnings;
   retroaa::ShaderLibrary library(counter, "", [&warnings](const std::string& m) { warnings.push_back(m); });
-  auto built = library.program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uAtLeast"});
+  auto built = library.program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit"});
   ASSERT_TRUE(built) << built.error().message;
-  auto lacking = library.program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uAtLeast", "uNotDeclared"});
+  auto lacking = library.program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit", "uNotDeclared"});
   ASSERT_FALSE(lacking);
   expectError(lacking.error(), retroaa::ErrorCode::ShaderError, "'uNotDeclared'");
   EXPECT_NE(lacking.error().message.find("slices/mark_pixels.frag"), std::string::npos) << lacking.error().message;

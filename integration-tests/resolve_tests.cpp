@@ -77,7 +77,7 @@ TEST(Plugin, AllocatesOnlyWhatTheMethodNeeds) {
   // Five attachments (8+8+8+4+8 bytes) and D24S8 (4 bytes), per sample.
   EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, uint64_t(64 * 48) * samples * 40u);
   EXPECT_NE(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
-  EXPECT_EQ(host.hooks->plugin().stats().evaluationsPerPixel(), 1.0);
+  EXPECT_EQ(host.hooks->plugin().waitForStats().evaluationsPerPixel(), 1.0);
 }
 
 TEST(Plugin, ClampsSamplesWithAWarningNamingBothCounts) {

@@ -33,17 +33,17 @@ TEST(Slices, EdgeMarkingEveryPixelEqualsPerSample) {
   const app::DisplayImage perSample = host.render("per-sample");
   const app::DisplayImage everyPixel = host.render("edge", edgeWith(retroaa::EdgeDetector::EveryPixel));
   EXPECT_LE(maxChannelDifference(perSample, everyPixel), 1.0 / 255.0 + 1e-6);
-  EXPECT_EQ(host.hooks->plugin().stats().evaluationsPerPixel(), double(host.hooks->plugin().stats().samples));
+  EXPECT_EQ(host.hooks->plugin().waitForStats().evaluationsPerPixel(), double(host.hooks->plugin().stats().samples));
 }
 
 TEST(Slices, EdgeMatchesPerSampleAndCountsEvaluationsExactly) {
   PatchedHost host("default", 320, 240);
   const app::DisplayImage reference = host.render("per-sample");
   const int n = host.hooks->plugin().stats().samples;
-  EXPECT_EQ(host.hooks->plugin().stats().lightingEvaluations, uint64_t(320 * 240) * n);
+  EXPECT_EQ(host.hooks->plugin().waitForStats().lightingEvaluations, uint64_t(320 * 240) * n);
   for (auto detector : {retroaa::EdgeDetector::Coverage, retroaa::EdgeDetector::Plane, retroaa::EdgeDetector::Depth}) {
     const app::DisplayImage edge = host.render("edge", edgeWith(detector));
-    const retroaa::Stats stats = host.hooks->plugin().stats();
+    const retroaa::Stats stats = host.hooks->plugin().waitForStats();
     const std::vector<uint8_t> counts = host.hooks->plugin().readSliceCounts();
     const uint64_t edgePixels = std::count_if(counts.begin(), counts.end(), [](uint8_t c) { return c > 1; });
     const double edgeFraction = double(edgePixels) / counts.size();
@@ -91,7 +91,7 @@ TEST(Slices, HostStencilBitsAreLeftAlone) {
 TEST(Slices, WithoutStencilExportTheResultIsTheSame) {
   PatchedHost host("default", 128, 96);
   const app::DisplayImage withExport = host.render("edge");
-  const uint64_t evaluations = host.hooks->plugin().stats().lightingEvaluations;
+  const uint64_t evaluations = host.hooks->plugin().waitForStats().lightingEvaluations;
   retroaa::Config config;
   config.method = retroaa::Method::Edge;
   retroaa::Description description;
@@ -116,7 +116,7 @@ TEST(Slices, WithoutStencilExportTheResultIsTheSame) {
   host.renderer->renderFrame(host.scene.camera);
   const auto withoutExport = app::DisplayImage::fromRgba8(128, 96, host.renderer->readDisplay());
   EXPECT_EQ(withExport.rgb, withoutExport.rgb);
-  EXPECT_EQ(plugin.value()->stats().lightingEvaluations, evaluations);
+  EXPECT_EQ(plugin.value()->waitForStats().lightingEvaluations, evaluations);
   host.renderer->setHooks(host.hooks.get());
 }
 

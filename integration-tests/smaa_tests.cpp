@@ -159,7 +159,7 @@ TEST(SmaaS2x, LightsTwoSamplesPerPixelAndSitsBetweenSmaaAndEdgeInQuality) {
   const ScoringTruth truth = host.scoringTruth(8);
   const app::ErrorMetrics smaa = truth.score(host.render("smaa"));
   const app::ErrorMetrics s2x = truth.score(host.render("smaa-s2x@samples=2"));
-  const retroaa::Stats stats = host.hooks->plugin().stats();
+  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
   EXPECT_EQ(stats.lightingEvaluations, 2u * stats.pixels) << "both slices light every pixel";
   EXPECT_EQ(stats.slices, 2);
   EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();

@@ -189,27 +189,32 @@ std::string imageFileStem(std::string methodName) {
   return methodName;
 }
 
-// Times as ratios of a baseline measured in the same run (null where that method was not run).
+// Times as ratios of a baseline measured in the same run (null where that method was not run, or the
+// time not measured).
 void addTimeRatios(json& rows) {
-  double offMs = 0, perSampleMs = 0;
-  for (const json& row : rows) {
-    if (row["method"] == "off") offMs = row["gpu_ms"].get<double>();
-    if (row["method"] == "per-sample") perSampleMs = row["gpu_ms"].get<double>();
-  }
+  auto baseline = [&rows](const char* method, const char* figure) {
+    for (const json& row : rows)
+      if (row["method"] == method && row[figure].is_number()) return row[figure].get<double>();
+    return 0.0;
+  };
+  auto ratio = [](const json& value, double base) {
+    return value.is_number() && base > 0 ? json(value.get<double>() / base) : json(nullptr);
+  };
+  const double offMs = baseline("off", "gpu_ms"), perSampleMs = baseline("per-sample", "gpu_ms");
+  const double offWallMs = baseline("off", "wall_ms");
   for (json& row : rows) {
-    const double ms = row["gpu_ms"].get<double>();
-    row["time_vs_off"] = offMs > 0 ? json(ms / offMs) : json(nullptr);
-    row["time_vs_per_sample"] = perSampleMs > 0 ? json(ms / perSampleMs) : json(nullptr);
+    row["time_vs_off"] = ratio(row["gpu_ms"], offMs);
+    row["time_vs_per_sample"] = ratio(row["gpu_ms"], perSampleMs);
+    row["wall_vs_off"] = ratio(row["wall_ms"], offWallMs);
   }
 }
 
 // The bench table, for the terminal and the Markdown report.
 std::string benchTable(const json& rows) {
   std::ostringstream table;
-  table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | plugin B/px | PSNR dB | edge "
-           "PSNR dB | "
-           "SSIM | max err | PSNR vs per-sample |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | wall ms | wall vs off | plugin "
+           "B/px | PSNR dB | edge PSNR dB | SSIM | max err | PSNR vs per-sample |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   // Null is "-" for a ratio whose baseline was not run, "n/a" for a figure with nothing to measure.
   auto twoDecimals = [](const json& value, const char* whenNull) {
     if (value.is_null()) return std::string(whenNull);
@@ -223,7 +228,8 @@ std::string benchTable(const json& rows) {
     table << std::fixed << "| " << row["method"].get<std::string>() << " | " << row["samples"].get<int>() << " | "
           << std::setprecision(3) << row["evals_per_pixel"].get<double>() << " | " << std::setprecision(2)
           << row["gpu_ms"].get<double>() << " | " << ratio(row["time_vs_off"]) << " | "
-          << ratio(row["time_vs_per_sample"]) << " | " << std::setprecision(1)
+          << ratio(row["time_vs_per_sample"]) << " | " << ratio(row["wall_ms"]) << " | " << ratio(row["wall_vs_off"])
+          << " | " << std::setprecision(1)
           << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
           << row["psnr_db"].get<double>() << " | " << decibels(row["edge_psnr_db"]) << " | " << std::setprecision(4)
           << row["ssim"].get<double>() << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " | "
@@ -241,6 +247,8 @@ void writeBenchCsv(const std::string& path, const json& rows) {
                                             "gpu_ms",
                                             "time_vs_off",
                                             "time_vs_per_sample",
+                                            "wall_ms",
+                                            "wall_vs_off",
                                             "plugin_bytes_per_pixel",
                                             "psnr_db",
                                             "edge_psnr_db",
@@ -263,8 +271,9 @@ void writeBenchReport(const BenchOptions& options, const json& document, const s
      << "Size " << options.width << "x" << options.height << ", ground truth " << options.groundTruthSamples << "x"
      << options.groundTruthSamples << " supersamples per pixel lit per sample (box filter on linear radiance), "
      << document["edge_pixels"]
-     << " edge pixels. Errors on tonemapped display values in [0,1]; times are the median of " << options.repeats
-     << " frames (GPU timer queries).\n\n"
+     << " edge pixels. Errors on tonemapped display values in [0,1]; GPU times are the median of " << options.repeats
+     << " frames (GPU timer queries); wall ms is the wall clock per frame over " << options.wallFrames
+     << " back-to-back frames with every statistic off.\n\n"
      << table << "\n";
   if (options.imagesDirectory.empty()) return;
   const auto relative =
@@ -305,10 +314,8 @@ int runBench(const BenchOptions& options) {
   json rows = json::array();
   for (const MethodSpec& spec : specs) {
     std::fprintf(stderr, "bench: %s\n", spec.name.c_str());
-    retroaa::Config config = spec.config;
-    config.measureGpuTime = true;
-    session.configure(config, spec.name);
-    const Measurement m = measure(session, camera, reference, options.repeats, 1);
+    session.configure(spec.config, spec.name);
+    const Measurement m = measure(session, camera, reference, options.repeats, 1, options.wallFrames);
     json row = figures(m);
     row["method"] = spec.name;
     rows.push_back(row);

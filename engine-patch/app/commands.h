@@ -56,6 +56,7 @@ struct BenchOptions {
   int frame = -1;
   int groundTruthSamples = 8;
   int repeats = 3;                // timed frames per method; the median is reported
+  int wallFrames = 60;            // back-to-back frames per method for wall_ms (0: not measured)
   std::string json, csv, report;  // outputs (any may be empty)
   std::string imagesDirectory;    // per-method PNGs and heat maps (optional)
 };

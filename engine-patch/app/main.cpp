@@ -104,6 +104,9 @@ void addBench(CommandLine& line) {
   sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")
       ->check(CLI::Range(1, 32));
   sub->add_option("--repeats", options->repeats, "timed frames per method (median)")->check(CLI::Range(1, 100));
+  sub->add_option("--wall-frames", options->wallFrames,
+                  "back-to-back frames per method, statistics off, for wall_ms (0: skip)")
+      ->check(CLI::Range(0, 10000));
   sub->add_option("--json", options->json, "write the rows as JSON");
   sub->add_option("--csv", options->csv, "write the rows as CSV");
   sub->add_option("--report", options->report, "write a Markdown report");
@@ -144,6 +147,9 @@ void addRegress(CommandLine& line) {
   sub->add_option("--stride", options->frameStride, "every n-th frame of each path")->check(CLI::Range(1, 1000));
   sub->add_option("--frames", options->maxFrames, "at most this many frames per scene (0: all)")
       ->check(CLI::Range(0, 100000));
+  sub->add_option("--wall-frames", options->wallFrames,
+                  "back-to-back frames of each scene's first frame per method, statistics off, for wall_ms (0: skip)")
+      ->check(CLI::Range(0, 10000));
   sub->add_option("--out", options->out, "report folder");
   sub->add_option("--golden-dir", options->goldenDirectory,
                   "where the goldens live (default: the source tree's integration-tests/golden)");

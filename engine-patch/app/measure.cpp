@@ -2,7 +2,10 @@
 
 #include "ground_truth.h"
 
+#include <epoxy/gl.h>
+
 #include <algorithm>
+#include <chrono>
 
 namespace app {
 
@@ -33,9 +36,30 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
   return reference;
 }
 
-Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
-                    int warmUpFrames) {
+double measureWallMs(Session& session, const host::Camera& camera, int frames) {
   host::Renderer& renderer = *session.renderer;
+  retroaa::Config quiet = session.config;
+  quiet.measureGpuTime = false;
+  const std::string method = session.method;
+  session.configure(quiet, method);
+  renderer.measureTime = false;
+  renderer.renderFrame(camera);  // warm-up: the reconfigure's first-frame work
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < frames; ++i) renderer.renderFrame(camera);
+  glFinish();  // the one wait, after the last frame: what an engine's swap would eventually wait for
+  const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+  return elapsed.count() / frames;
+}
+
+Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
+                    int warmUpFrames, int wallFrames) {
+  host::Renderer& renderer = *session.renderer;
+  Measurement m;
+  if (wallFrames > 0) m.wallMs = measureWallMs(session, camera, wallFrames);
+  retroaa::Config measured = session.config;
+  measured.measureGpuTime = true;
+  session.configure(measured, session.method);
   renderer.measureTime = true;
   for (int i = 0; i < warmUpFrames; ++i) renderer.renderFrame(camera);
   std::vector<double> frameMs;
@@ -47,13 +71,16 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
     passMs["model_pass"].push_back(t.modelPassMs);
     passMs["lighting"].push_back(t.lightingMs);
     passMs["tonemap_post"].push_back(t.tonemapMs);
+    m.stats = session.plugin().waitForStats();
     std::map<std::string, double> frameTotals;  // a pass runs once per slice: sum them per frame
-    for (const retroaa::PassTime& pass : session.plugin().stats().passes) frameTotals["plugin." + pass.name] += pass.ms;
+    m.passInvocations.clear();
+    for (const retroaa::PassStats& pass : m.stats.passes) {
+      frameTotals["plugin." + pass.name] += pass.ms;
+      m.passInvocations["plugin." + pass.name] += pass.fragmentInvocations;
+    }
     for (const auto& [name, ms] : frameTotals) passMs[name].push_back(ms);
   }
   renderer.measureTime = false;
-  Measurement m;
-  m.stats = session.plugin().stats();
   m.display = renderer.readDisplay();
   m.image = DisplayImage::fromRgba8(renderer.width(), renderer.height(), m.display);
   m.gpuMs = median(frameMs);
@@ -71,7 +98,10 @@ nlohmann::json figures(const Measurement& m) {
       {"lighting_evaluations", m.stats.lightingEvaluations},
       {"slices", m.stats.slices},
       {"gpu_ms", m.gpuMs},
+      // Not measured (wall frames 0): null, never a made-up number.
+      {"wall_ms", m.wallMs > 0 ? json(m.wallMs) : json(nullptr)},
       {"passes_ms", m.passMs},
+      {"passes_fragment_invocations", m.passInvocations},
       {"plugin_bytes", m.stats.bytesHeld},
       {"plugin_bytes_per_pixel", m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0},
       {"budget_scale", m.stats.budgetScale},

@@ -31,17 +31,25 @@ struct Measurement {
   DisplayImage image;
   retroaa::Stats stats;                  // of the last frame
   double gpuMs = 0;                      // the host's frame on the GPU: median of the timed frames
+  double wallMs = 0;                     // wall clock per frame, statistics off (0: not measured)
   std::map<std::string, double> passMs;  // medians: model_pass, lighting, tonemap_post, plugin.<pass>
+  std::map<std::string, uint64_t> passInvocations;  // plugin.<pass>: fragment-shader invocations, last frame
   ErrorMetrics error;                    // against the ground truth, edge figures on its edges
   std::optional<double> psnrVsPerSampleDb;
 };
-// Renders `camera` with the session's config: `warmUpFrames` frames first (shader compilation,
-// first-touch allocation), then `timedFrames` with GPU timers; compares the last.
+// Renders `camera` with the session's config: `wallFrames` back-to-back frames with every statistic
+// off and no wait until the last (wall_ms: the time an engine sees), then `warmUpFrames` frames
+// (shader compilation, first-touch allocation), then `timedFrames` with GPU timers and the plugin's
+// pass statistics; compares the last.
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
-                    int warmUpFrames);
+                    int warmUpFrames, int wallFrames = 0);
+// Wall-clock ms per frame over `frames` back-to-back frames of the session's config with its
+// statistics off, after one warm-up frame; waits for the GPU only before and after.
+double measureWallMs(Session& session, const host::Camera& camera, int frames);
 
 // The figures of a measurement by the names every report uses: samples, evals_per_pixel,
-// lighting_evaluations, slices, gpu_ms, passes_ms, plugin_bytes, plugin_bytes_per_pixel, budget_scale,
+// lighting_evaluations, slices, gpu_ms, wall_ms (null when not measured), passes_ms,
+// passes_fragment_invocations, plugin_bytes, plugin_bytes_per_pixel, budget_scale,
 // psnr_db, edge_psnr_db (null when the ground truth has no edge pixel), edge_pixels, ssim,
 // max_abs_error, psnr_vs_per_sample_db (when measured).
 nlohmann::json figures(const Measurement& measurement);

@@ -42,6 +42,7 @@ std::string fileSafe(std::string name) {
 struct MethodTotals {
   double psnr = 0, edgePsnr = 0, minEdgePsnr = 1e9, psnrVsPerSample = 0, ssim = 0, maxError = 0;
   double evaluations = 0, gpuMs = 0, flicker = 0;
+  double wallMs = 0;  // of the first frame (0: not measured)
   std::map<std::string, double> passMs;
   int frames = 0, flickerFrames = 0, edgeFrames = 0;  // edge figures: frames whose ground truth has edges
   double bytesPerPixel = 0;
@@ -54,6 +55,7 @@ struct MethodTotals {
     psnrVsPerSample += m.psnrVsPerSampleDb.value_or(0);
     ssim += m.error.ssim, maxError = std::max(maxError, m.error.maxAbsError);
     evaluations += m.stats.evaluationsPerPixel(), gpuMs += m.gpuMs;
+    if (frames == 0) wallMs = m.wallMs;
     for (const auto& [name, ms] : m.passMs) passMs[name] += ms;
     bytesPerPixel = m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0;
     ++frames;
@@ -78,6 +80,7 @@ struct MethodTotals {
             {"frames", frames},
             {"evals_per_pixel", evaluations / n},
             {"gpu_ms", gpuMs / n},
+            {"wall_ms", wallMs > 0 ? json(wallMs) : json(nullptr)},
             {"passes_ms", passes},
             {"plugin_bytes_per_pixel", bytesPerPixel},
             {"psnr_db", psnr / n},
@@ -230,12 +233,11 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
   json images = {{"crop_window", {window.first, window.second, cropW, cropH}}};
   json rows = json::array();
   for (const MethodSpec& spec : specs) {
-    retroaa::Config config = spec.config;
-    config.measureGpuTime = true;
-    session.configure(config, spec.name);
+    session.configure(spec.config, spec.name);
     MethodTotals totals;
     for (size_t fi = 0; fi < frames.size(); ++fi) {
-      const Measurement m = measure(session, session.camera(frames[fi]), references[fi], 1, fi == 0 ? 1 : 0);
+      const Measurement m = measure(session, session.camera(frames[fi]), references[fi], 1, fi == 0 ? 1 : 0,
+                                    fi == 0 ? options.wallFrames : 0);
       totals.add(m, references[fi]);
       if (fi == 0)
         images[spec.name] = writeMethodImages(session, sceneDir, spec.name, m, references[fi], window, cropW, cropH);
@@ -255,7 +257,7 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
 void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
   const std::string dir = scene["directory"];
   html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
-       << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>plugin B/px</th><th>PSNR dB</th>"
+       << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>wall ms (frame 1)</th><th>plugin B/px</th><th>PSNR dB</th>"
        << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max "
           "err</th><th>flicker</th></tr>\n";
   for (const auto& r : scene["rows"]) {
@@ -263,6 +265,7 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
     for (const auto& [figure, decimals] :
          std::initializer_list<std::pair<const char*, int>>{{"evals_per_pixel", 3},
                                                             {"gpu_ms", 2},
+                                                            {"wall_ms", 2},
                                                             {"plugin_bytes_per_pixel", 0},
                                                             {"psnr_db", 2},
                                                             {"edge_psnr_db", 2},

@@ -18,6 +18,7 @@ struct RegressOptions {
   int groundTruthSamples = 6;  // per axis
   int frameStride = 1;         // every n-th frame of each path
   int maxFrames = 0;           // at most this many frames per scene (0: all)
+  int wallFrames = 60;         // back-to-back frames of each scene's first frame for wall_ms (0: none)
   std::string out = "out/regress";
   std::string goldenDirectory;  // empty: the source tree's integration-tests/golden, from any working folder
   bool check = false;         // compare with the goldens; exit 1 naming what got worse

@@ -126,9 +126,7 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
         } else {
           if (!reference)
             reference = renderReference(session, session.camera(frame), options.groundTruthSamples, nullptr);
-          retroaa::Config config = parseMethodSpec(specs[i], {}).config;
-          config.measureGpuTime = true;
-          session.configure(config, specs[i]);
+          session.configure(parseMethodSpec(specs[i], {}).config, specs[i]);
           entry[specs[i]] = figures(measure(session, session.camera(frame), *reference, 1, 1));
           ++measured;
         }

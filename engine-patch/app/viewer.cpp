@@ -428,7 +428,7 @@ class Viewer {
     const retroaa::Stats stats = a_->plugin().stats();
     ImGui::Separator();
     double pluginMs = 0;
-    for (const retroaa::PassTime& pass : stats.passes) pluginMs += pass.ms;
+    for (const retroaa::PassStats& pass : stats.passes) pluginMs += pass.ms;
     ImGui::TextWrapped("frame %.1f ms CPU wall (median of %zu); plugin passes %.2f ms GPU", medianFrameMs(),
                        frameMs_.size(), pluginMs);
     ImGui::Text("%d×%d, %d samples, %.3f lighting evaluations/pixel", width_, height_, stats.samples,
@@ -436,7 +436,7 @@ class Viewer {
     ImGui::Text("plugin memory %.1f MiB (%.0f B/px), %d GL objects", stats.bytesHeld / 1048576.0,
                 double(stats.bytesHeld) / (double(width_) * height_), stats.glObjectsHeld);
     std::map<std::string, double> passTotals;  // a pass runs once per slice: one line each
-    for (const retroaa::PassTime& pass : stats.passes) passTotals[pass.name] += pass.ms;
+    for (const retroaa::PassStats& pass : stats.passes) passTotals[pass.name] += pass.ms;
     for (const auto& [name, ms] : passTotals) ImGui::Text("  %s: %.2f ms", name.c_str(), ms);
     ImGui::TextWrapped("%s", groundTruthText_.c_str());
     ImGui::TextWrapped(

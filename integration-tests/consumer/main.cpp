@@ -91,7 +91,7 @@ int main() {
   });
   if (!shaded || lightingCalls != 1) return fail("shade");
   if (!plugin.post()) return fail("post");
-  const retroaa::Stats stats = plugin.stats();
+  const retroaa::Stats stats = plugin.waitForStats();
   if (stats.lightingEvaluations != uint64_t(width) * height) return fail("not one lighting evaluation per pixel");
   if (glGetError() != GL_NO_ERROR) return fail("a GL error");
   std::printf(

@@ -304,7 +304,7 @@ const std::vector<Setter>& setters() {
         "files there replace built-in shaders of the same path; compile errors fall back"},
        [](Config& c, const std::string& v) { return c.shaderOverrideDirectory = v, Status::ok(); },
        [](const Config& c) { return c.shaderOverrideDirectory; }},
-      {{"measure_gpu_time", "off", "on, off", "timer query per plugin pass, read back at once (waits for the GPU)"},
+      {{"measure_gpu_time", "off", "on, off", "timer and fragment-invocation queries per plugin pass, read back frames later (never waits)"},
        [](Config& c, const std::string& v) { return parseBool("measure_gpu_time", v, c.measureGpuTime); },
        [](const Config& c) { return std::string(c.measureGpuTime ? "on" : "off"); }},
   };

@@ -34,23 +34,14 @@ void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-ScopedPass::ScopedPass(PluginContext& context, const char* name) : context_(context), name_(name) {
+ScopedPass::ScopedPass(PluginContext& context, const char* name) : context_(context) {
   const std::string label = std::string("retroaa.") + name;
   glPushDebugGroup(GL_DEBUG_SOURCE_THIRD_PARTY, 0, -1, label.c_str());
-  if (context_.timePasses && context_.capabilities.timerQuery) {
-    glGenQueries(1, &query_);
-    glBeginQuery(GL_TIME_ELAPSED, query_);
-  }
+  context_.statistics->beginPass(name, context_.timePasses);
 }
 
 ScopedPass::~ScopedPass() {
-  if (query_) {
-    glEndQuery(GL_TIME_ELAPSED);
-    GLuint64 nanoseconds = 0;
-    glGetQueryObjectui64v(query_, GL_QUERY_RESULT, &nanoseconds);
-    glDeleteQueries(1, &query_);
-    context_.frameStats.passes.push_back({name_, nanoseconds * 1e-6});
-  }
+  context_.statistics->endPass();
   glPopDebugGroup();
 }
 

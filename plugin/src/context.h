@@ -2,6 +2,7 @@
 // counter, the shader library, the log and the statistics of the frame in flight.
 #pragma once
 
+#include "frame_statistics.h"
 #include "gl_resources.h"
 #include "retroaa/types.h"
 #include "shader_library.h"
@@ -16,6 +17,7 @@ struct ContextCapabilities {
   int maxSamples = 1;          // min of GL_MAX_SAMPLES and the texture sample limits
   bool timerQuery = false;     // GL_TIME_ELAPSED
   bool stencilExport = false;  // ARB_shader_stencil_export
+  bool pipelineStatistics = false;  // ARB_pipeline_statistics_query (core in 4.6)
 };
 
 struct PluginContext {
@@ -27,7 +29,8 @@ struct PluginContext {
   std::vector<std::string> warnings;
   std::unique_ptr<ShaderLibrary> shaders;
   GlVertexArray emptyVertexArray;  // full-screen passes draw without vertex buffers
-  Stats frameStats;                // of the frame in flight
+  Stats frameStats;                // of the frame in flight: what the CPU knows of it (slice count)
+  std::unique_ptr<FrameStatistics> statistics;  // what the GPU counts of it, read back frames later
   bool timePasses = false;         // measure_gpu_time, or a budget that needs the times
   double budgetScale = 1.0;        // multiplies the refinement of adaptive and edge/depth (budget mode)
 
@@ -41,7 +44,8 @@ struct PluginContext {
   void beginFullscreenPass(GLuint framebuffer) const;
 };
 
-// Times one pass into the frame's stats when the config asks for it; labels it for debuggers.
+// Measures one pass into the frame's statistics when the config asks for it (GPU time, fragment
+// invocations); labels it for debuggers.
 class ScopedPass {
  public:
   ScopedPass(PluginContext& context, const char* name);
@@ -51,8 +55,6 @@ class ScopedPass {
 
  private:
   PluginContext& context_;
-  const char* name_;
-  GLuint query_ = 0;
 };
 
 Status checkFramebuffer(GLuint framebuffer, const char* label);

@@ -66,6 +66,8 @@ ContextCapabilities queryCapabilities(uint32_t disabledFeatures, int maxSamplesL
                     !(disabledFeatures & kFeatureTimerQuery);
   caps.stencilExport =
       epoxy_has_gl_extension("GL_ARB_shader_stencil_export") && !(disabledFeatures & kFeatureStencilExport);
+  caps.pipelineStatistics = (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) &&
+                            !(disabledFeatures & kFeaturePipelineStatistics);
   return caps;
 }
 
@@ -89,6 +91,7 @@ struct Plugin::Impl {
   FrameInfo lastFrame;  // from resolve(), for post()
   std::unique_ptr<BudgetController> budget;
   bool resolvedThisFrame = false;
+  uint64_t budgetFrame = 0;  // the measured frame the budget last saw
 
   SharedTargets shared() { return {msaa.get(), slices.get(), postTarget.get()}; }
   Technique* methodTechnique() {
@@ -113,6 +116,18 @@ struct Plugin::Impl {
       storage |= row->info.method == config.method ? row->storage : row->stackedStorage;
     if (storage & kStorageSlices) storage |= kStorageMsaaGBuffer;
     return storage;
+  }
+
+  // Opens a frame's statistics; a frame whose figures came back steers the budget (a frame or two late,
+  // which the controller's damping absorbs).
+  void beginFrame() {
+    context.statistics->beginFrame();  // reads what came back
+    const FrameFigures& measured = context.statistics->latest();
+    if (!budget || measured.frame == 0 || measured.frame == budgetFrame) return;
+    budgetFrame = measured.frame;
+    double ms = 0;
+    for (const PassStats& pass : measured.passes) ms += pass.ms;
+    context.budgetScale = budget->update(ms);
   }
 
   // Budget mode applies where the method's technique trades time for quality continuously.
@@ -250,10 +265,12 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   context.log = description.log;
   context.capabilities = queryCapabilities(description.disabledFeatures, description.maxSamplesLimit);
   if (!context.capabilities.stencilExport)
-    context.warn("no ARB_shader_stencil_export: slice counts reach the stencil mask in N passes instead of one");
+    context.warn("no ARB_shader_stencil_export: slice counts reach the stencil mask in one pass per bit of the count instead of one pass");
   context.config = impl->grant(description.config);
   context.shaders = std::make_unique<ShaderLibrary>(context.objects, context.config.shaderOverrideDirectory,
                                                     [&context](const std::string& m) { context.warn(m); });
+  context.statistics =
+      std::make_unique<FrameStatistics>(context.capabilities.timerQuery, context.capabilities.pipelineStatistics);
   GLuint vao = 0;
   glCreateVertexArrays(1, &vao);
   context.emptyVertexArray = GlVertexArray(context.objects, vao);
@@ -279,8 +296,7 @@ GLuintHandle Plugin::geometryFramebuffer() const {
 
 Status Plugin::resolve(const FrameInfo& frame) {
   PluginContext& context = impl_->context;
-  context.frameStats.passes.clear();
-  context.frameStats.lightingEvaluations = 0;
+  impl_->beginFrame();
   impl_->resolvedThisFrame = true;
   impl_->lastFrame = frame;
   if (!impl_->resolvePass) return Status::ok();
@@ -299,8 +315,7 @@ Status Plugin::shade(const LightingFunction& lighting) {
       return Error{ErrorCode::WrongCallOrder, std::string("shade() without resolve() since the last shade(): ") +
                                                   toString(context.config.method) +
                                                   " needs the model pass resolved first (see docs/integration.md)"};
-    context.frameStats.passes.clear();
-    context.frameStats.lightingEvaluations = 0;
+    impl_->beginFrame();
   }
   impl_->resolvedThisFrame = false;
   if (impl_->slices) {
@@ -310,21 +325,17 @@ Status Plugin::shade(const LightingFunction& lighting) {
     const SliceRenderer::Plan plan = technique ? technique->slicePlan(context, shared) : SliceRenderer::Plan{};
     Status status = impl_->slices->shade(context, *impl_->msaa, lighting, plan);
     if (status && context.config.restoreGBufferAfterShade)
-      status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->lastFrame);
-    if (impl_->budget) {  // the plugin's time this frame decides the next frame's refinement
-      double ms = 0;
-      for (const PassTime& pass : context.frameStats.passes) ms += pass.ms;
-      context.budgetScale = impl_->budget->update(ms);
-    }
+      status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->lastFrame, *impl_->slices);
     return status;
   }
   // Single-slice methods light once, every pixel, in the host's own target.
   context.frameStats.slices = 1;
   {
     GlStateGuard guard;
+    ScopedPass timed(context, "lighting");
     lighting(context.layout.lightFramebuffer);
   }
-  context.frameStats.lightingEvaluations += context.pixelCount();
+  context.statistics->addEvaluations(context.pixelCount());
   GlStateGuard guard;
   SharedTargets shared = impl_->shared();
   for (ActiveTechnique& active : impl_->techniques)
@@ -365,6 +376,8 @@ Status Plugin::reconfigure(const Config& config) {
     }
   }
   impl_->configureBudget(previous);
+  // Figures measured under another config would be reported as this one's.
+  if (toConfigText(context.config) != toConfigText(previous)) context.statistics->release();
   return status;
 }
 
@@ -372,6 +385,7 @@ Status Plugin::resize(const GBufferLayout& layout) {
   if (Status status = validateLayout(layout); !status) return status.error();
   GlStateGuard guard;
   impl_->context.layout = layout;
+  impl_->context.statistics->release();
   return impl_->allocate(true);
 }
 
@@ -379,7 +393,13 @@ const Config& Plugin::config() const { return impl_->context.config; }
 
 Stats Plugin::stats() const {
   const PluginContext& context = impl_->context;
+  context.statistics->collect();
   Stats stats = context.frameStats;
+  const FrameFigures& measured = context.statistics->latest();
+  stats.framesStarted = context.statistics->framesStarted();
+  stats.measuredFrame = measured.frame;
+  stats.lightingEvaluations = measured.lightingEvaluations;
+  stats.passes = measured.passes;
   stats.method = context.config.method;
   stats.samples = 1;
   if (impl_->msaa)
@@ -390,8 +410,14 @@ Stats Plugin::stats() const {
   stats.pixels = context.pixelCount();
   stats.bytesHeld = impl_->bytesHeld();
   stats.glObjectsHeld = context.objects.live;
+  stats.statisticsQueriesHeld = context.statistics->queriesHeld();
   stats.budgetScale = context.budgetScale;
   return stats;
+}
+
+Stats Plugin::waitForStats() {
+  impl_->context.statistics->waitForLastFrame();
+  return stats();
 }
 
 std::vector<uint8_t> Plugin::readSliceCounts() const {

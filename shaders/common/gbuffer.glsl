@@ -14,11 +14,13 @@ layout(binding = 0) uniform GBUFFER_SAMPLER uAttachments[ATTACHMENT_COUNT];
 layout(binding = UNIT_DEPTH_STENCIL) uniform GBUFFER_SAMPLER uDepthBuffer;  // the MSAA depth buffer (encoding-agnostic)
 
 // View depth of sample s in metres; +inf for background (and for NaN, which reads as background).
-float sampleDistance(ivec2 pixel, int s) {
-  float stored = FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL];
+float distanceOfStored(float stored) {
   if (isBackground(stored)) return 1.0 / 0.0;
   float d = decodeDepth(stored);
   return d > 0.0 ? d : 1.0 / 0.0;
+}
+float sampleDistance(ivec2 pixel, int s) {
+  return distanceOfStored(FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL]);
 }
 
 bool sampleIsFinite(ivec2 pixel, int s) {

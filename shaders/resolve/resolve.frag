@@ -37,8 +37,29 @@ float fsoWeight(float dist, float z) {
          smoothRamp(dist - footprint * 2.5, dist + footprint * 5.0, z);
 }
 
+// The restore after the slices (RESOLVE_RESTORE) leaves the depth as it is: without a depth output the
+// stencil test that limits it to the slices' pixels runs before the shader.
+#ifdef RESOLVE_RESTORE
+#define STORE_DEPTH(value)
+#else
+#define STORE_DEPTH(value) gl_FragDepth = (value)
+#endif
+
+// Every sample of every attachment is fetched once, up to 8 samples (80 vec4s at 16 would spill
+// registers, so 16 fetches again where it reads).
+#if SAMPLES <= 8
+vec4 fetched[SAMPLES][ATTACHMENT_COUNT];
+#define SAMPLE_VALUE(a, s) fetched[s][a]
+#else
+#define SAMPLE_VALUE(a, s) FETCH(uAttachments[a], pixel, s)
+#endif
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+#if SAMPLES <= 8
+  for (int s = 0; s < SAMPLES; ++s)
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) fetched[s][a] = FETCH(uAttachments[a], pixel, s);
+#endif
   bool fso = uWeighting == WEIGHTING_FSO;
   float distance[SAMPLES];  // metres in front of the camera; +inf for background
   bool usable[SAMPLES];     // false for samples holding NaN or Inf in any attachment
@@ -48,8 +69,9 @@ void main() {
                            // under Mesa 22.3's llvmpipe
   int usableCount = 0;
   for (int s = 0; s < SAMPLES; ++s) {
-    usable[s] = sampleIsFinite(pixel, s);
-    distance[s] = sampleDistance(pixel, s);
+    usable[s] = true;
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) usable[s] = usable[s] && isFiniteValue(SAMPLE_VALUE(a, s));
+    distance[s] = distanceOfStored(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL]);
     sortKey[s] = fso && isinf(distance[s]) ? 0.0 : distance[s];
     if (!usable[s]) continue;
     int i = usableCount++;
@@ -65,7 +87,7 @@ void main() {
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
     values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = backgroundStoredDepth();
     STORE_OUTPUTS(values);
-    gl_FragDepth = 1.0;
+    STORE_DEPTH(1.0);
     return;
   }
 
@@ -112,12 +134,12 @@ void main() {
   }
 
   if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, lastContributor);
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = SAMPLE_VALUE(a, lastContributor);
 #if NORMAL_ATTACHMENT >= 0
     values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], values[POSITION_ATTACHMENT]);
 #endif
     STORE_OUTPUTS(values);
-    gl_FragDepth = FETCH(uDepthBuffer, pixel, lastContributor).r;
+    STORE_DEPTH(FETCH(uDepthBuffer, pixel, lastContributor).r);
     return;
   }
 
@@ -127,7 +149,7 @@ void main() {
   for (int s = 0; s < SAMPLES; ++s) {
     float w = weight[s] / weightSum;
     if (w <= 0.0) continue;
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += w * FETCH(uAttachments[a], pixel, s);
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += w * SAMPLE_VALUE(a, s);
     if (!referenceIsBackground) depthSum += w * distance[s];
     float depthBuffer = FETCH(uDepthBuffer, pixel, s).r;
     depthBufferMean += w * depthBuffer;
@@ -140,7 +162,7 @@ void main() {
   vec3 normal = values[NORMAL_ATTACHMENT].xyz;
   float len = length(normal);
   if (!(len > 1e-4)) {  // opposing or zero-length normals: fall back to the reference's, then the view
-    normal = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, reference).xyz;
+    normal = SAMPLE_VALUE(NORMAL_ATTACHMENT, reference).xyz;
     len = length(normal);
     if (!(len > 1e-4)) normal = vec3(0.0, 0.0, 1.0), len = 1.0;
   }
@@ -151,7 +173,7 @@ void main() {
   // (encoding-agnostic; the farthest for background), so that forward passes after lighting
   // depth-test against the very surface that was lit.
   if (fso)
-    gl_FragDepth = depthBufferMean;
+    STORE_DEPTH(depthBufferMean);
   else
-    gl_FragDepth = referenceIsBackground ? depthBufferMax : FETCH(uDepthBuffer, pixel, reference).r;
+    STORE_DEPTH(referenceIsBackground ? depthBufferMax : FETCH(uDepthBuffer, pixel, reference).r);
 }

@@ -1,8 +1,8 @@
 #version 450 core
-// Colour writes are off: this pass only exists for the stencil test and the occlusion query
-// (pixels lit in a slice), and, with discard, to raise stencil counts where stencil export is missing.
+// Where stencil export is missing: colour writes are off, the stencil write mask holds one bit, and
+// this pass keeps the pixels whose count has that bit, so that ⌈log2(N+1)⌉ passes spell the count.
 layout(binding = 1) uniform usampler2D uSliceCounts;
-uniform int uAtLeast;  // discard pixels whose count is below this (0: keep every pixel)
+uniform int uBit;
 void main() {
-  if (int(texelFetch(uSliceCounts, ivec2(gl_FragCoord.xy), 0).r) < uAtLeast) discard;
+  if ((int(texelFetch(uSliceCounts, ivec2(gl_FragCoord.xy), 0).r) & uBit) == 0) discard;
 }

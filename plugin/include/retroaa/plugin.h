@@ -36,7 +36,8 @@ class RETROAA_API Plugin {
   // the layout's formats) or ShaderError (a built-in shader does not build, or lacks a uniform).
   // Features the context lacks make the plugin fall back, with a warning that says which and why:
   // no multisampling (GL_MAX_SAMPLES < 2) → every multi-sample method becomes `fxaa`; no stencil export →
-  // slice counts in N passes; no timer queries → no pass times. Compute shaders are not used.
+  // slice counts in ⌈log2(N+1)⌉ bit passes; no timer queries → no pass times; no pipeline statistics →
+  // no invocation counts. Compute shaders are not used.
   static Result<std::unique_ptr<Plugin>> create(const Description& description);
   ~Plugin();
   Plugin(const Plugin&) = delete;
@@ -77,7 +78,13 @@ class RETROAA_API Plugin {
   Status resize(const GBufferLayout& layout);
 
   const Config& config() const;  // as granted (samples clamped, fallbacks applied)
+  // Never waits for the GPU: the counted figures (lighting evaluations, pass times and invocations) are
+  // those of the newest frame whose queries are back, Stats::measuredFrame, usually a frame or two
+  // behind. Safe to call every frame.
   Stats stats() const;
+  // Waits until the GPU has finished the last frame begun and returns its figures (measuredFrame ==
+  // framesStarted). For tools and tests between frames, not for a frame loop: it stalls the pipeline.
+  Stats waitForStats();
   std::vector<std::string> warnings() const;  // every warning since creation, oldest first
 
  private:

@@ -84,6 +84,7 @@ using LogCallback = std::function<void(LogLevel, const std::string&)>;
 enum Feature : uint32_t {
   kFeatureStencilExport = 1u << 0,  // ARB_shader_stencil_export: slice counts in one pass (else N passes)
   kFeatureTimerQuery = 1u << 1,     // GL_TIME_ELAPSED: per-pass GPU times (else none reported)
+  kFeaturePipelineStatistics = 1u << 2,  // ARB_pipeline_statistics_query: per-pass fragment invocations (else 0)
 };
 
 struct Description {
@@ -102,21 +103,29 @@ struct FrameInfo {
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres, for DepthBufferEncoding
 };
 
-struct PassTime {
-  std::string name;  // e.g. "resolve", "fxaa"
-  double ms = 0;
+// One plugin pass of a measured frame (Config::measureGpuTime).
+struct PassStats {
+  std::string name;                  // e.g. "resolve", "fxaa"
+  double ms = 0;                     // GPU time (GL_TIME_ELAPSED); 0 without timer queries
+  uint64_t fragmentInvocations = 0;  // fragment-shader invocations (pipeline statistics; 0 without them)
 };
 
 struct Stats {
   Method method = Method::Off;
   int samples = 1;                   // samples granted (after clamping)
   uint64_t pixels = 0;               // width × height
-  uint64_t lightingEvaluations = 0;  // pixels lit, summed over lighting calls of the last frame
+  // The GPU's figures, read without waiting: they describe frame `measuredFrame`, usually a frame or
+  // two behind `framesStarted` (Plugin::waitForStats() waits for the last one). 0: no frame is back
+  // since the last reconfigure() or resize().
+  uint64_t framesStarted = 0;  // frames begun (resolve() or shade()) since creation
+  uint64_t measuredFrame = 0;
+  uint64_t lightingEvaluations = 0;  // pixels lit, summed over the lighting calls of the measured frame
   double evaluationsPerPixel() const { return pixels ? double(lightingEvaluations) / pixels : 0; }
-  std::vector<PassTime> passes;  // plugin passes of the last frame (measureGpuTime)
+  std::vector<PassStats> passes;  // plugin passes of the measured frame (measureGpuTime)
   uint64_t bytesHeld = 0;        // GPU memory of the plugin's own targets
-  int glObjectsHeld = 0;         // live GL objects owned by the plugin
-  int slices = 1;                // lighting passes of the last frame
+  int glObjectsHeld = 0;         // live GL objects owned by the plugin, but for the statistics' queries:
+  int statisticsQueriesHeld = 0;  // the query ring (bounded; freed by reconfigure() and resize())
+  int slices = 1;                // lighting passes of the last frame begun
   double budgetScale = 1.0;      // the budget controller's quality scale (1 without a budget)
 };
 

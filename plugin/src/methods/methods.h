@@ -57,20 +57,23 @@ class MsaaGBuffer {
 
 // `resolve`: the depth-aware resolve of Magnussen (and FreeSpace Open's variant) from the MSAA
 // G-buffer into the host's single-sample G-buffer and depth.
+class SliceRenderer;
 class ResolvePass {
  public:
   static Result<std::unique_ptr<ResolvePass>> create(PluginContext& context, const MsaaGBuffer& source);
   Status run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
-  // The same resolve into the host's attachments only (its depth holds the resolved depth already):
-  // after the slices, so that the host's G-buffer holds the resolved surface again.
-  Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
+  // The same resolve into the host's attachments only (its depth holds the resolved depth already),
+  // where `slices` overwrote them: after the slices, so that the host's G-buffer holds the resolved
+  // surface again.
+  Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
+                 const SliceRenderer& slices);
 
  private:
   // The layout check: on the first frame, occlusion queries count the pixels without geometry and those
   // with geometry at view depth <= 0; a later frame reads them once available (never waiting) and warns,
   // naming the layout fields, when the data looks unlike the layout's description.
   void checkLayout(PluginContext& context, const MsaaGBuffer& source);
-  ShaderProgram program_, layoutCheck_;
+  ShaderProgram program_, restoreProgram_, layoutCheck_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
   GlQuery noGeometryQuery_, nonPositiveQuery_;
   enum class LayoutCheck : uint8_t { ToIssue, Pending, Done } layoutCheckState_ = LayoutCheck::ToIssue;
@@ -111,19 +114,24 @@ class SliceRenderer {
     // light texture, returns the texture to composite instead. Empty: the light as lit.
     std::function<Result<GLuint>(int slice, GLuint light)> filterSliceLight;
   };
-  // Lights every slice through `lighting` and composites (weight 1 / count). Counts evaluations with
-  // occlusion queries.
+  // Lights every slice through `lighting` and composites (weight 1 / count). Counts evaluations with an
+  // occlusion query on each slice's write (a sample whose write discards, being non-finite, counts as
+  // not lit).
   Status shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting, const Plan& plan);
   std::vector<uint8_t> readCounts() const;
   GLuint firstSliceLight() const { return light_.get(); }  // slice 0's light, inside maskAfterFirstSlice
+  // What the last shade() overwrote in the host's G-buffer: every pixel, or those with count > 1; and the
+  // framebuffer of the host's attachments over the count stencil.
+  bool lastWriteEverywhere() const { return lastWriteEverywhere_; }
+  GLuint writer() const { return sliceWriter_.get(); }
   uint64_t bytes() const { return bytes_; }
 
  private:
   GlTexture light_, mask_, counts_;
   GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
   ShaderProgram writeSlice_, composite_, markPixels_;
-  GlQuery pixelsQuery_;
   int maxCount_ = 1;
+  bool lastWriteEverywhere_ = true;
   uint64_t bytes_ = 0;
 };
 

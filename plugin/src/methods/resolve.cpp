@@ -9,11 +9,14 @@ namespace retroaa {
 Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context, const MsaaGBuffer& source) {
   auto pass = std::make_unique<ResolvePass>();
   const GBufferLayout& layout = context.layout;
-  Result<ShaderProgram> program =
-      context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag", source.shaderDefines(layout),
-                               {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness"});
-  if (!program) return program.error();
-  pass->program_ = std::move(program.value());
+  for (const bool restore : {false, true}) {
+    Result<ShaderProgram> program = context.shaders->program(
+        "common/fullscreen.vert", "resolve/resolve.frag",
+        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + source.shaderDefines(layout),
+        {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness"});
+    if (!program) return program.error();
+    (restore ? pass->restoreProgram_ : pass->program_) = std::move(program.value());
+  }
 
   // The host's attachments and its depth (not its stencil: those bits belong to the host).
   pass->hostTarget_ = makeFramebuffer(context, "resolve.host_target");
@@ -51,12 +54,14 @@ void drawResolve(PluginContext& context, const ShaderProgram& program, const Msa
 }  // namespace
 
 Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {
-  ScopedPass timed(context, "resolve");
-  context.beginFullscreenPass(hostTarget_.get());
-  glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
-  glDepthFunc(GL_ALWAYS);
-  glDepthMask(GL_TRUE);
-  drawResolve(context, program_, source, frame);
+  {
+    ScopedPass timed(context, "resolve");
+    context.beginFullscreenPass(hostTarget_.get());
+    glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    drawResolve(context, program_, source, frame);
+  }
   checkLayout(context, source);
   return Status::ok();
 }
@@ -64,6 +69,7 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
 void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source) {
   const GBufferLayout& layout = context.layout;
   if (layoutCheckState_ == LayoutCheck::ToIssue) {
+    ScopedPass timed(context, "resolve.layout_check");
     context.beginFullscreenPass(hostTarget_.get());
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     layoutCheck_.use();
@@ -79,12 +85,13 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
     return;
   }
   if (layoutCheckState_ != LayoutCheck::Pending) return;
-  GLuint available = 0;
-  glGetQueryObjectuiv(nonPositiveQuery_.get(), GL_QUERY_RESULT_AVAILABLE, &available);
-  if (!available) return;  // a later frame reads it: never a wait in the frame path
+  GLuint available = 0, bothAvailable = 0;
+  glGetQueryObjectuiv(noGeometryQuery_.get(), GL_QUERY_RESULT_AVAILABLE, &available);
+  glGetQueryObjectuiv(nonPositiveQuery_.get(), GL_QUERY_RESULT_AVAILABLE, &bothAvailable);
+  if (!available || !bothAvailable) return;  // a later frame reads them: never a wait in the frame path
   GLuint64 noGeometry = 0, nonPositive = 0;
-  glGetQueryObjectui64v(noGeometryQuery_.get(), GL_QUERY_RESULT, &noGeometry);  // available: ends before it
-  glGetQueryObjectui64v(nonPositiveQuery_.get(), GL_QUERY_RESULT, &nonPositive);
+  glGetQueryObjectui64v(noGeometryQuery_.get(), GL_QUERY_RESULT_NO_WAIT, &noGeometry);
+  glGetQueryObjectui64v(nonPositiveQuery_.get(), GL_QUERY_RESULT_NO_WAIT, &nonPositive);
   layoutCheckState_ = LayoutCheck::Done;
   const double pixels = double(context.pixelCount());
   const char* kinds[] = {"Linear", "LogAboveKnee", "FsoCompressedViewZ"};
@@ -105,10 +112,19 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
                  "), or the depth is in another channel");
 }
 
-Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {
+Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
+                            const SliceRenderer& slices) {
   ScopedPass timed(context, "resolve.restore");
-  context.beginFullscreenPass(hostTarget_.get());  // depth test off: the depth is left as it is
-  drawResolve(context, program_, source, frame);
+  // Depth test off: the depth is left as it is. Only where a slice wrote: through the slices' writer
+  // (the host's attachments over the count stencil) where count > 1, unless slice 0 wrote everywhere.
+  context.beginFullscreenPass(slices.lastWriteEverywhere() ? hostTarget_.get() : slices.writer());
+  if (!slices.lastWriteEverywhere()) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_LESS, 1, 0xFF);  // 1 < count
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilMask(0x00);
+  }
+  drawResolve(context, restoreProgram_, source, frame);
   return Status::ok();
 }
 

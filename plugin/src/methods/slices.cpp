@@ -58,12 +58,9 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
   auto composite = context.shaders->program("common/fullscreen.vert", "slices/composite.frag");
   if (!composite) return composite.error();
   slices->composite_ = std::move(composite.value());
-  auto mark = context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uAtLeast"});
+  auto mark = context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit"});
   if (!mark) return mark.error();
   slices->markPixels_ = std::move(mark.value());
-  GLuint query = 0;
-  glGenQueries(1, &query);
-  slices->pixelsQuery_ = GlQuery(context.objects, query);
   return slices;
 }
 
@@ -80,14 +77,15 @@ Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool
   glUseProgram(maskProgram);
   context.drawFullscreen();
   if (!stencilExport) {
-    // Without stencil export, raise the stencil to the count one step at a time: pass j increments
-    // every pixel whose count is at least j. Each pass reads one byte per pixel.
+    // Without stencil export, the count reaches the stencil one bit at a time: pass b sets bit b
+    // wherever the count has it. ⌈log2(N+1)⌉ passes, each reading one byte per pixel.
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glStencilFunc(GL_ALWAYS, 0xFF, 0xFF);
     markPixels_.use();
     glBindTextureUnit(1, counts_.get());
-    for (int j = 1; j <= maxCount_; ++j) {
-      markPixels_.set("uAtLeast", j);
+    for (int bit = 0; (1 << bit) <= maxCount_; ++bit) {
+      glStencilMask(GLuint(1) << bit);
+      markPixels_.set("uBit", 1 << bit);
       context.drawFullscreen();
     }
   }
@@ -99,6 +97,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
   const GBufferLayout& layout = context.layout;
   const int sliceCount = plan.sliceCount > 0 ? plan.sliceCount : maxCount_;
   context.frameStats.slices = sliceCount;
+  lastWriteEverywhere_ = plan.firstSliceEverywhere;
   auto sampleOf = [&](int slice) { return plan.sampleOrder.empty() ? slice : plan.sampleOrder[slice]; };
   // Stencil for slice s: count > s; slice 0 covers every pixel (or, when it keeps the resolved
   // G-buffer of single-count pixels, writes only where count > 1).
@@ -127,21 +126,15 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
         writeSlice_.setDepthEncoding(layout);
         writeSlice_.set("uSample", sampleOf(slice));
       }
+      // The write passes exactly where this slice's lighting will run (slice 0 lights every pixel):
+      // its occlusion query counts the slice's evaluations, without a pass of its own.
+      const bool countOnGpu = slice > 0;
+      if (countOnGpu) context.statistics->beginEvaluationCount();
       context.drawFullscreen();
-
-      // Count this slice's lighting evaluations exactly: the pixels its stencil test passes.
-      glBindFramebuffer(GL_FRAMEBUFFER, lightTarget_.get());
-      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      sliceStencil(slice);
-      markPixels_.use();
-      glBindTextureUnit(1, counts_.get());
-      markPixels_.set("uAtLeast", 0);
-      glBeginQuery(GL_SAMPLES_PASSED, pixelsQuery_.get());
-      context.drawFullscreen();
-      glEndQuery(GL_SAMPLES_PASSED);
-      GLuint64 pixels = 0;
-      glGetQueryObjectui64v(pixelsQuery_.get(), GL_QUERY_RESULT, &pixels);
-      context.frameStats.lightingEvaluations += pixels;
+      if (countOnGpu)
+        context.statistics->endEvaluationCount();
+      else
+        context.statistics->addEvaluations(context.pixelCount());
     }
     {
       ScopedPass timed(context, "slices.lighting");

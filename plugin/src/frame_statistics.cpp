@@ -1,0 +1,132 @@
+#include "frame_statistics.h"
+
+namespace retroaa {
+
+GLuint FrameStatistics::QueryPool::next(ObjectCounter& objects) {
+  if (used == queries.size()) {
+    GLuint name = 0;
+    glGenQueries(1, &name);
+    queries.emplace_back(objects, name);
+  }
+  return queries[used++].get();
+}
+
+FrameStatistics::Slot* FrameStatistics::openSlot() {
+  Slot& slot = ring_[(frames_ + kFramesInFlight - 1) % kFramesInFlight];
+  return frames_ > 0 && slot.state == Slot::State::Open ? &slot : nullptr;
+}
+
+void FrameStatistics::beginFrame() {
+  if (Slot* open = openSlot()) {
+    if (passDepth_ > 0) endPass();  // a pass left open by an error return
+    open->state = Slot::State::Pending;
+  }
+  collect();
+  Slot& slot = ring_[frames_ % kFramesInFlight];
+  if (slot.state == Slot::State::Pending) ++dropped_;  // the GPU is this far behind: drop, never wait
+  slot.frame = ++frames_;
+  slot.state = Slot::State::Open;
+  slot.passes.clear();
+  slot.evaluationQueries.clear();
+  slot.knownEvaluations = 0;
+  slot.timePool.used = slot.fragmentPool.used = slot.samplesPool.used = 0;
+  passDepth_ = 0;
+}
+
+void FrameStatistics::beginPass(const char* name, bool measured) {
+  Slot* slot = openSlot();
+  if (!slot || !measured || passDepth_++ > 0) return;
+  PassQueries pass{name, 0, 0};
+  if (timerQueries_) {
+    pass.time = slot->timePool.next(queries_);
+    glBeginQuery(GL_TIME_ELAPSED, pass.time);
+  }
+  if (pipelineStatistics_) {
+    pass.fragments = slot->fragmentPool.next(queries_);
+    glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, pass.fragments);
+  }
+  slot->passes.push_back(std::move(pass));
+}
+
+void FrameStatistics::endPass() {
+  if (passDepth_ == 0 || --passDepth_ > 0) return;
+  const PassQueries& pass = openSlot()->passes.back();
+  if (pass.time) glEndQuery(GL_TIME_ELAPSED);
+  if (pass.fragments) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
+}
+
+void FrameStatistics::beginEvaluationCount() {
+  Slot* slot = openSlot();
+  if (!slot) return;
+  slot->evaluationQueries.push_back(slot->samplesPool.next(queries_));
+  glBeginQuery(GL_SAMPLES_PASSED, slot->evaluationQueries.back());
+}
+
+void FrameStatistics::endEvaluationCount() {
+  if (openSlot()) glEndQuery(GL_SAMPLES_PASSED);
+}
+
+void FrameStatistics::addEvaluations(uint64_t pixels) {
+  if (Slot* slot = openSlot()) slot->knownEvaluations += pixels;
+}
+
+bool FrameStatistics::available(const Slot& slot) const {
+  auto isAvailable = [](GLuint query) {
+    GLuint ready = GL_FALSE;
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT_AVAILABLE, &ready);
+    return ready == GL_TRUE;
+  };
+  for (const PassQueries& pass : slot.passes)
+    if ((pass.time && !isAvailable(pass.time)) || (pass.fragments && !isAvailable(pass.fragments))) return false;
+  for (GLuint query : slot.evaluationQueries)
+    if (!isAvailable(query)) return false;
+  return true;
+}
+
+void FrameStatistics::read(Slot& slot, GLenum resultMode) {
+  auto result = [resultMode](GLuint query) {
+    GLuint64 value = 0;
+    if (query) glGetQueryObjectui64v(query, resultMode, &value);
+    return uint64_t(value);
+  };
+  FrameFigures figures;
+  figures.frame = slot.frame;
+  figures.lightingEvaluations = slot.knownEvaluations;
+  for (GLuint query : slot.evaluationQueries) figures.lightingEvaluations += result(query);
+  for (const PassQueries& pass : slot.passes)
+    figures.passes.push_back({pass.name, double(result(pass.time)) * 1e-6, result(pass.fragments)});
+  slot.state = Slot::State::Empty;
+  if (figures.frame > latest_.frame) latest_ = std::move(figures);
+}
+
+bool FrameStatistics::collect() {
+  const uint64_t before = latest_.frame;
+  // Oldest first, so that `latest_` ends at the newest frame that is back.
+  for (uint64_t frame = frames_ > kFramesInFlight ? frames_ - kFramesInFlight + 1 : 1; frame <= frames_; ++frame) {
+    Slot& slot = ring_[(frame - 1) % kFramesInFlight];
+    if (slot.frame != frame || slot.state != Slot::State::Pending) continue;
+    if (!available(slot)) break;  // later frames finish later
+    // Available: GL_QUERY_RESULT_NO_WAIT returns the value at once (and can never wait).
+    read(slot, GL_QUERY_RESULT_NO_WAIT);
+  }
+  return latest_.frame > before;
+}
+
+void FrameStatistics::waitForLastFrame() {
+  if (Slot* open = openSlot()) {
+    if (passDepth_ > 0) endPass();
+    open->state = Slot::State::Pending;
+  }
+  for (uint64_t frame = frames_ > kFramesInFlight ? frames_ - kFramesInFlight + 1 : 1; frame <= frames_; ++frame) {
+    Slot& slot = ring_[(frame - 1) % kFramesInFlight];
+    if (slot.frame == frame && slot.state == Slot::State::Pending) read(slot, GL_QUERY_RESULT);
+  }
+}
+
+void FrameStatistics::release() {
+  if (passDepth_ > 0) endPass();
+  for (Slot& slot : ring_) slot = Slot{};
+  latest_ = FrameFigures{};
+}
+
+}  // namespace retroaa
