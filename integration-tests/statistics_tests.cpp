@@ -264,8 +264,9 @@ TEST(Statistics, EdgeLightsAtMostOnePassPerSliceAndOnlyWhereItsPixelsAre) {
   std::printf("counter sees the stencil test: %s; edge lighting %llu invocations, off %llu, %.3f evals/px\n",
               counterSeesStencil ? "yes" : "no (llvmpipe)", (unsigned long long)edgeLighting,
               (unsigned long long)offLighting, edge.evaluationsPerPixel());
-  if (counterSeesStencil)
+  if (counterSeesStencil) {
     EXPECT_LE(double(edgeLighting), 1.5 * edge.evaluationsPerPixel() * double(offLighting));
+  }
   // The resolve runs once per pixel, as the edge mask does (llvmpipe counts whole quads along the
   // full-screen triangle's edge, so the two are compared, not either with width × height).
   EXPECT_EQ(fragmentInvocations(edge, "resolve"), fragmentInvocations(edge, "edge_mask"));

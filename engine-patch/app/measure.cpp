@@ -69,6 +69,7 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
     const host::HostTimings& t = renderer.timings();
     frameMs.push_back(t.frameMs);
     passMs["model_pass"].push_back(t.modelPassMs);
+    passMs["after_model_pass"].push_back(t.afterModelPassMs);
     passMs["lighting"].push_back(t.lightingMs);
     passMs["tonemap_post"].push_back(t.tonemapMs);
     m.stats = session.plugin().waitForStats();
@@ -114,6 +115,37 @@ nlohmann::json figures(const Measurement& m) {
   };
   if (m.psnrVsPerSampleDb) out["psnr_vs_per_sample_db"] = *m.psnrVsPerSampleDb;
   return out;
+}
+
+void addTimeRatios(nlohmann::json& rows) {
+  using nlohmann::json;
+  auto baseline = [&rows](const char* method, const char* figure) {
+    for (const json& row : rows)
+      if (row["method"] == method && row[figure].is_number()) return row[figure].get<double>();
+    return 0.0;
+  };
+  auto ratio = [](const json& value, double base) {
+    return value.is_number() && base > 0 ? json(value.get<double>() / base) : json(nullptr);
+  };
+  const double offMs = baseline("off", "gpu_ms"), perSampleMs = baseline("per-sample", "gpu_ms");
+  const double offWallMs = baseline("off", "wall_ms");
+  const json* off = nullptr;
+  for (const json& row : rows)
+    if (row["method"] == "off") off = &row;
+  for (json& row : rows) {
+    row["time_vs_off"] = ratio(row["gpu_ms"], offMs);
+    row["time_vs_per_sample"] = ratio(row["gpu_ms"], perSampleMs);
+    row["wall_vs_off"] = ratio(row["wall_ms"], offWallMs);
+    // What the method adds beyond the host's own model pass, the lighting its evaluations cost at off's
+    // price, and off's tonemap and post.
+    const json& passes = row["passes_ms"];
+    row["plugin_overhead_ms"] =
+        off && passes.contains("model_pass")
+            ? json(row["gpu_ms"].get<double>() - passes["model_pass"].get<double>() -
+                   row["evals_per_pixel"].get<double>() * (*off)["passes_ms"]["lighting"].get<double>() -
+                   (*off)["passes_ms"]["tonemap_post"].get<double>())
+            : json(nullptr);
+  }
 }
 
 const std::vector<std::string>& qualityFigures() {

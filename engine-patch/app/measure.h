@@ -32,7 +32,9 @@ struct Measurement {
   retroaa::Stats stats;                  // of the last frame
   double gpuMs = 0;                      // the host's frame on the GPU: median of the timed frames
   double wallMs = 0;                     // wall clock per frame, statistics off (0: not measured)
-  std::map<std::string, double> passMs;  // medians: model_pass, lighting, tonemap_post, plugin.<pass>
+  // Medians: model_pass (the host's geometry alone), after_model_pass (its hooks: resolve, a prepass),
+  // lighting, tonemap_post, plugin.<pass>.
+  std::map<std::string, double> passMs;
   std::map<std::string, uint64_t> passInvocations;  // plugin.<pass>: fragment-shader invocations, last frame
   ErrorMetrics error;                    // against the ground truth, edge figures on its edges
   std::optional<double> psnrVsPerSampleDb;
@@ -53,6 +55,12 @@ double measureWallMs(Session& session, const host::Camera& camera, int frames);
 // psnr_db, edge_psnr_db (null when the ground truth has no edge pixel), edge_pixels, ssim,
 // max_abs_error, psnr_vs_per_sample_db (when measured).
 nlohmann::json figures(const Measurement& measurement);
+
+// Adds to rows (each with "method" and figures()'s names) the ratios to baselines measured in the same
+// run: time_vs_off, time_vs_per_sample, wall_vs_off, and plugin_overhead_ms = gpu_ms − model_pass −
+// evals_per_pixel × off's lighting − off's tonemap_post. Null where the baseline was not run or the
+// time not measured.
+void addTimeRatios(nlohmann::json& rows);
 
 // The quality figures a target can name, and the cost figures tune can minimise.
 const std::vector<std::string>& qualityFigures();  // psnr_db, edge_psnr_db, ssim

@@ -245,6 +245,7 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
     }
     rows.push_back(totals.row(spec.name));
   }
+  addTimeRatios(rows);
   return {{"scene", key},
           {"name", session.scene.name},
           {"file", file},
@@ -257,7 +258,7 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
 void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
   const std::string dir = scene["directory"];
   html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
-       << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>wall ms (frame 1)</th><th>plugin B/px</th><th>PSNR dB</th>"
+       << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>wall ms (frame 1)</th><th>plugin overhead ms</th><th>plugin B/px</th><th>PSNR dB</th>"
        << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max "
           "err</th><th>flicker</th></tr>\n";
   for (const auto& r : scene["rows"]) {
@@ -266,6 +267,7 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
          std::initializer_list<std::pair<const char*, int>>{{"evals_per_pixel", 3},
                                                             {"gpu_ms", 2},
                                                             {"wall_ms", 2},
+                                                            {"plugin_overhead_ms", 2},
                                                             {"plugin_bytes_per_pixel", 0},
                                                             {"psnr_db", 2},
                                                             {"edge_psnr_db", 2},

@@ -139,8 +139,8 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   const int width = targets_.width, height = targets_.height;
   const glm::mat4 view = camera.view();
   const glm::mat4 projection = camera.projection(width, height, jitterPixels);
-  GLuint timestamps[4] = {};
-  if (measureTime) glGenQueries(4, timestamps);
+  GLuint timestamps[5] = {};
+  if (measureTime) glGenQueries(5, timestamps);
   if (measureTime) glQueryCounter(timestamps[0], GL_TIMESTAMP);
 
   // gr_opengl_scene_texture_begin() + gr_opengl_deferred_lighting_begin()
@@ -170,6 +170,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
 
   drawModels(camera, projection);
   glPopDebugGroup();
+  if (measureTime) glQueryCounter(timestamps[4], GL_TIMESTAMP);
 
   // gr_opengl_deferred_lighting_msaa() + gr_opengl_deferred_lighting_end()
   FrameView frameView;
@@ -201,10 +202,11 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   hooks_->postProcess();
   if (measureTime) {
     glQueryCounter(timestamps[3], GL_TIMESTAMP);
-    GLuint64 t[4];
-    for (int i = 0; i < 4; ++i) glGetQueryObjectui64v(timestamps[i], GL_QUERY_RESULT, &t[i]);
-    glDeleteQueries(4, timestamps);
-    timings_.modelPassMs = (t[1] - t[0]) * 1e-6;
+    GLuint64 t[5];
+    for (int i = 0; i < 5; ++i) glGetQueryObjectui64v(timestamps[i], GL_QUERY_RESULT, &t[i]);
+    glDeleteQueries(5, timestamps);
+    timings_.modelPassMs = (t[4] - t[0]) * 1e-6;
+    timings_.afterModelPassMs = (t[1] - t[4]) * 1e-6;
     timings_.lightingMs = (t[2] - t[1]) * 1e-6;
     timings_.tonemapMs = (t[3] - t[2]) * 1e-6;
     timings_.frameMs = (t[3] - t[0]) * 1e-6;

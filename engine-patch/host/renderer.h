@@ -14,7 +14,9 @@ namespace host {
 
 // GPU time of the host's passes for the last frame (timer queries), in milliseconds.
 struct HostTimings {
-  double modelPassMs = 0, lightingMs = 0, tonemapMs = 0, frameMs = 0;
+  double modelPassMs = 0;       // the host's own geometry: sky and models into the model-pass target
+  double afterModelPassMs = 0;  // the hooks after it: the plugin's resolve, a prepass of the models
+  double lightingMs = 0, tonemapMs = 0, frameMs = 0;
 };
 
 class Renderer {

@@ -24,9 +24,9 @@ float sampleDistance(ivec2 pixel, int s) {
 }
 
 bool sampleIsFinite(ivec2 pixel, int s) {
-  bool finite = true;
-  for (int a = 0; a < ATTACHMENT_COUNT; ++a) finite = finite && isFiniteValue(FETCH(uAttachments[a], pixel, s));
-  return finite;
+  uvec4 nonFinite = uvec4(0u);
+  for (int a = 0; a < ATTACHMENT_COUNT; ++a) nonFinite |= nonFiniteLanes(FETCH(uAttachments[a], pixel, s));
+  return all(equal(nonFinite, uvec4(0u)));
 }
 
 #if NORMAL_ATTACHMENT >= 0

@@ -46,7 +46,9 @@ float fsoWeight(float dist, float z) {
 #endif
 
 // Every sample of every attachment is fetched once, up to 8 samples (80 vec4s at 16 would spill
-// registers, so 16 fetches again where it reads).
+// registers, so 16 fetches again where it reads). Every array below is indexed only by loop counters
+// over constant bounds, which unroll (ranks instead of a sort): an index computed from data may put
+// the arrays in scratch memory.
 #if SAMPLES <= 8
 vec4 fetched[SAMPLES][ATTACHMENT_COUNT];
 #define SAMPLE_VALUE(a, s) fetched[s][a]
@@ -63,23 +65,17 @@ void main() {
   bool fso = uWeighting == WEIGHTING_FSO;
   float distance[SAMPLES];  // metres in front of the camera; +inf for background
   bool usable[SAMPLES];     // false for samples holding NaN or Inf in any attachment
-  int order[SAMPLES];       // usable samples sorted near to far; background farthest, but nearest for
-                            // FSO, whose background has view z 0
-  float sortKey[SAMPLES];  // precomputed: the same ternary inside the loop's condition sorted wrongly
-                           // under Mesa 22.3's llvmpipe
+  // Sorted near to far (background farthest, but nearest for FSO, whose background has view z 0):
+  // a sample's rank is its place in that order among the usable samples, ties kept in index order.
+  float sortKey[SAMPLES];
   int usableCount = 0;
   for (int s = 0; s < SAMPLES; ++s) {
-    usable[s] = true;
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) usable[s] = usable[s] && isFiniteValue(SAMPLE_VALUE(a, s));
+    uvec4 nonFinite = uvec4(0u);
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) nonFinite |= nonFiniteLanes(SAMPLE_VALUE(a, s));
+    usable[s] = all(equal(nonFinite, uvec4(0u)));
     distance[s] = distanceOfStored(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL]);
     sortKey[s] = fso && isinf(distance[s]) ? 0.0 : distance[s];
-    if (!usable[s]) continue;
-    int i = usableCount++;
-    while (i > 0 && sortKey[order[i - 1]] > sortKey[s]) {  // insertion sort, N <= 16
-      order[i] = order[i - 1];
-      --i;
-    }
-    order[i] = s;
+    if (usable[s]) ++usableCount;
   }
 
   vec4 values[ATTACHMENT_COUNT];
@@ -91,18 +87,27 @@ void main() {
     return;
   }
 
-  int reference;
+  int referenceRank;
   if (uWeighting == WEIGHTING_FRONT || uWeighting == WEIGHTING_MEAN)
-    reference = order[0];
+    referenceRank = 0;
   else if (uWeighting == WEIGHTING_BACK)
-    reference = order[usableCount - 1];
+    referenceRank = usableCount - 1;
   else if (fso)  // dists[1] of 4, [3] of 8, [7] of 16 in ascending view z; other counts: front first
-    reference = (SAMPLES == 4 || SAMPLES == 8 || SAMPLES == 16) ? order[usableCount / 2] : order[0];
+    referenceRank = (SAMPLES == 4 || SAMPLES == 8 || SAMPLES == 16) ? usableCount / 2 : 0;
   else if (uWeighting == WEIGHTING_WINDOW)
-    reference = order[usableCount - 1 - (usableCount - 1) / 2];  // the farther middle sample
+    referenceRank = usableCount - 1 - (usableCount - 1) / 2;  // the farther middle sample
   else
-    reference = order[(usableCount - 1) / 2];  // a real middle sample: the nearer of two for even N
-  float dRef = distance[reference];
+    referenceRank = (usableCount - 1) / 2;  // a real middle sample: the nearer of two for even N
+  int reference = 0;
+  for (int s = 0; s < SAMPLES; ++s) {
+    int rank = 0;
+    for (int t = 0; t < SAMPLES; ++t)
+      if (usable[t] && (sortKey[t] < sortKey[s] || (sortKey[t] == sortKey[s] && t < s))) ++rank;
+    if (usable[s] && rank == referenceRank) reference = s;
+  }
+  float dRef = 0.0;
+  for (int s = 0; s < SAMPLES; ++s)
+    if (s == reference) dRef = distance[s];
   float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
   bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
 
@@ -134,7 +139,9 @@ void main() {
   }
 
   if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = SAMPLE_VALUE(a, lastContributor);
+    for (int s = 0; s < SAMPLES; ++s)
+      if (s == lastContributor)
+        for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = SAMPLE_VALUE(a, s);
 #if NORMAL_ATTACHMENT >= 0
     values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], values[POSITION_ATTACHMENT]);
 #endif
@@ -162,7 +169,8 @@ void main() {
   vec3 normal = values[NORMAL_ATTACHMENT].xyz;
   float len = length(normal);
   if (!(len > 1e-4)) {  // opposing or zero-length normals: fall back to the reference's, then the view
-    normal = SAMPLE_VALUE(NORMAL_ATTACHMENT, reference).xyz;
+    for (int s = 0; s < SAMPLES; ++s)
+      if (s == reference) normal = SAMPLE_VALUE(NORMAL_ATTACHMENT, s).xyz;
     len = length(normal);
     if (!(len > 1e-4)) normal = vec3(0.0, 0.0, 1.0), len = 1.0;
   }
