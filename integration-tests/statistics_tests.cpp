@@ -5,6 +5,8 @@
 
 #include <epoxy/egl.h>
 
+#include <filesystem>
+#include <fstream>
 #include <map>
 
 using namespace testing_support;
@@ -295,4 +297,26 @@ TEST(Statistics, WithoutStencilExportTheCountTakesOneBitPassPerBitAndTheSameImag
   EXPECT_GE(fullScreen, pixels);
   EXPECT_EQ(fragmentInvocations(bitPasses, "edge_mask"), fullScreen * (1 + bits)) << samples << " samples";
   host.renderer->setHooks(host.hooks.get());
+}
+
+// A slice without pixels costs no lighting: on a frame with no edge every pixel's count is 1, and the
+// GPU skips slices 1..N-1 on their own occlusion queries (conditional rendering, no CPU wait).
+TEST(Statistics, SlicesWithoutPixelsLightNothing) {
+  const auto scene = std::filesystem::temp_directory_path() / "retroaa_sky_only.json";
+  std::ofstream(scene) << R"({"camera": {"position": [0,0,5], "target": [0,0,0]}, "materials": [{"name": "m"}],
+                              "objects": [], "star_density": 0})";
+  PatchedHost host(scene.string(), 64, 48);
+  retroaa::Config base;
+  base.measureGpuTime = true;
+  const app::DisplayImage off = host.render("off", base);
+  const uint64_t offLighting = fragmentInvocations(host.hooks->plugin().waitForStats(), "lighting");
+  ASSERT_GT(offLighting, 0u);
+  const app::DisplayImage edge = host.render("edge", base);
+  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
+  EXPECT_EQ(stats.slices, stats.samples);
+  EXPECT_EQ(stats.lightingEvaluations, uint64_t(64 * 48));
+  EXPECT_EQ(fragmentInvocations(stats, "slices.lighting"), offLighting) << "only slice 0 lit";
+  EXPECT_EQ(fragmentInvocations(stats, "slices.composite"), fragmentInvocations(stats, "edge_mask"))
+      << "only slice 0 composited";
+  EXPECT_EQ(edge.rgb, off.rgb);
 }

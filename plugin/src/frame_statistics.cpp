@@ -55,11 +55,12 @@ void FrameStatistics::endPass() {
   if (pass.fragments) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
 }
 
-void FrameStatistics::beginEvaluationCount() {
+GLuint FrameStatistics::beginEvaluationCount() {
   Slot* slot = openSlot();
-  if (!slot) return;
+  if (!slot) return 0;
   slot->evaluationQueries.push_back(slot->samplesPool.next(queries_));
   glBeginQuery(GL_SAMPLES_PASSED, slot->evaluationQueries.back());
+  return slot->evaluationQueries.back();
 }
 
 void FrameStatistics::endEvaluationCount() {

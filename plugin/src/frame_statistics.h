@@ -36,8 +36,9 @@ class FrameStatistics {
   void beginPass(const char* name, bool measured);
   void endPass();
   // Pixels lit: counted on the GPU by an occlusion query around a draw that passes exactly where the
-  // lighting will run, or added directly where the CPU knows the number.
-  void beginEvaluationCount();
+  // lighting will run, or added directly where the CPU knows the number. beginEvaluationCount returns
+  // the query (0 outside a frame), which may serve as a conditional-rendering predicate.
+  GLuint beginEvaluationCount();
   void endEvaluationCount();
   void addEvaluations(uint64_t pixels);
 

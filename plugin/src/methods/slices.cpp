@@ -108,6 +108,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       stencilPassWhereCountAbove(slice);
   };
   for (int slice = 0; slice < sliceCount; ++slice) {
+    GLuint slicePixels = 0;  // the write's occlusion query: how many pixels this slice lights
     {
       ScopedPass timed(context, "slices.write");
       context.beginFullscreenPass(sliceWriter_.get());
@@ -129,13 +130,18 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       // The write passes exactly where this slice's lighting will run (slice 0 lights every pixel):
       // its occlusion query counts the slice's evaluations, without a pass of its own.
       const bool countOnGpu = slice > 0;
-      if (countOnGpu) context.statistics->beginEvaluationCount();
+      if (countOnGpu) slicePixels = context.statistics->beginEvaluationCount();
       context.drawFullscreen();
       if (countOnGpu)
         context.statistics->endEvaluationCount();
       else
         context.statistics->addEvaluations(context.pixelCount());
     }
+    // A slice without pixels (every count of the frame at most `slice`) draws nothing: the GPU skips its
+    // lighting and composite on its own query's result, without the CPU waiting for it. A slice whose
+    // light is filtered (smaa-s2x) always has pixels: its first slice writes everywhere.
+    const bool skippable = slicePixels != 0 && !plan.filterSliceLight;
+    if (skippable) glBeginConditionalRender(slicePixels, GL_QUERY_WAIT);
     {
       ScopedPass timed(context, "slices.lighting");
       GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
@@ -171,6 +177,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       }
       context.drawFullscreen();
     }
+    if (skippable) glEndConditionalRender();
   }
   return Status::ok();
 }
