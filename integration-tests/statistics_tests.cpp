@@ -320,3 +320,19 @@ TEST(Statistics, SlicesWithoutPixelsLightNothing) {
       << "only slice 0 composited";
   EXPECT_EQ(edge.rgb, off.rgb);
 }
+
+// The resolve states the least traffic its job needs: every sample of the MSAA G-buffer read once
+// (what the resolve method holds), one value per attachment and depth written.
+TEST(Statistics, TheResolveStatesItsMinimumTraffic) {
+  PatchedHost host("default", 64, 48);
+  retroaa::Config base;
+  base.measureGpuTime = true;
+  host.render("resolve", base);
+  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
+  uint64_t resolveBytes = 0;
+  for (const retroaa::PassStats& pass : stats.passes)
+    if (pass.name == "resolve") resolveBytes = pass.minimumBytes;
+  ASSERT_EQ(stats.samples, 4);
+  EXPECT_EQ(resolveBytes, stats.bytesHeld + stats.bytesHeld / 4) << "40 B per sample read, 40 B per pixel written";
+  EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * 4 * 40);
+}

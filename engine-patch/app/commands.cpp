@@ -307,6 +307,8 @@ int runBench(const BenchOptions& options) {
     }
   }
   addTimeRatios(rows);
+  const double copyGigabytesPerSecond = measureCopyGigabytesPerSecond();
+  addTrafficBounds(rows, copyGigabytesPerSecond);
   const host::ContextInfo& info = context.info();
   const json document = {{"scene", session.scene.name},
                          {"width", w},
@@ -319,6 +321,7 @@ int runBench(const BenchOptions& options) {
                          {"gl_version", info.version},
                          {"egl_platform", info.platform},
                          {"gl_max_samples", info.maxSamples},
+                         {"copy_gb_per_s", copyGigabytesPerSecond},
                          {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
                          {"rows", rows}};
   const std::string table = benchTable(rows);

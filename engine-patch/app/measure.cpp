@@ -52,6 +52,36 @@ double measureWallMs(Session& session, const host::Camera& camera, int frames) {
   return elapsed.count() / frames;
 }
 
+double measureCopyGigabytesPerSecond() {
+  // 64 MiB each way: larger than the caches, so the copy runs at memory bandwidth.
+  const int side = 2048, copies = 5;
+  GLuint textures[2] = {0, 0}, query = 0;
+  glCreateTextures(GL_TEXTURE_2D, 2, textures);
+  for (GLuint texture : textures) glTextureStorage2D(texture, 1, GL_RGBA32F, side, side);
+  const float zero[4] = {0, 0, 0, 0};
+  glClearTexImage(textures[0], 0, GL_RGBA, GL_FLOAT, zero);
+  glCopyImageSubData(textures[0], GL_TEXTURE_2D, 0, 0, 0, 0, textures[1], GL_TEXTURE_2D, 0, 0, 0, 0, side, side, 1);
+  glGenQueries(1, &query);
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
+  glBeginQuery(GL_TIME_ELAPSED, query);
+  for (int i = 0; i < copies; ++i)
+    glCopyImageSubData(textures[i % 2], GL_TEXTURE_2D, 0, 0, 0, 0, textures[1 - i % 2], GL_TEXTURE_2D, 0, 0, 0, 0,
+                       side, side, 1);
+  glEndQuery(GL_TIME_ELAPSED);
+  glFinish();
+  const std::chrono::duration<double, std::nano> wall = std::chrono::steady_clock::now() - start;
+  GLuint64 timer = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &timer);
+  glDeleteQueries(1, &query);
+  glDeleteTextures(2, textures);
+  // The GPU's timer where it saw the copies; llvmpipe copies on the CPU outside its timeline (its timer
+  // reads near 0), so there the wall clock between two glFinish calls.
+  const double nanoseconds = double(timer) >= 0.1 * wall.count() ? double(timer) : wall.count();
+  const double bytesMoved = 2.0 * double(side) * side * 16.0 * copies;  // read and write
+  return nanoseconds > 0 ? bytesMoved / nanoseconds : 0.0;             // bytes per ns = GB/s
+}
+
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
                     int warmUpFrames, int wallFrames) {
   host::Renderer& renderer = *session.renderer;
@@ -75,9 +105,11 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
     m.stats = session.plugin().waitForStats();
     std::map<std::string, double> frameTotals;  // a pass runs once per slice: sum them per frame
     m.passInvocations.clear();
+    m.passMinimumBytes.clear();
     for (const retroaa::PassStats& pass : m.stats.passes) {
       frameTotals["plugin." + pass.name] += pass.ms;
       m.passInvocations["plugin." + pass.name] += pass.fragmentInvocations;
+      if (pass.minimumBytes) m.passMinimumBytes["plugin." + pass.name] += pass.minimumBytes;
     }
     for (const auto& [name, ms] : frameTotals) passMs[name].push_back(ms);
   }
@@ -103,6 +135,7 @@ nlohmann::json figures(const Measurement& m) {
       {"wall_ms", m.wallMs > 0 ? json(m.wallMs) : json(nullptr)},
       {"passes_ms", m.passMs},
       {"passes_fragment_invocations", m.passInvocations},
+      {"passes_minimum_bytes", m.passMinimumBytes},
       {"plugin_bytes", m.stats.bytesHeld},
       {"plugin_bytes_per_pixel", m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0},
       {"budget_scale", m.stats.budgetScale},
@@ -145,6 +178,16 @@ void addTimeRatios(nlohmann::json& rows) {
                    row["evals_per_pixel"].get<double>() * (*off)["passes_ms"]["lighting"].get<double>() -
                    (*off)["passes_ms"]["tonemap_post"].get<double>())
             : json(nullptr);
+  }
+}
+
+void addTrafficBounds(nlohmann::json& rows, double copyGigabytesPerSecond) {
+  for (nlohmann::json& row : rows) {
+    nlohmann::json bounds = nlohmann::json::object();
+    if (copyGigabytesPerSecond > 0)
+      for (const auto& [pass, bytes] : row["passes_minimum_bytes"].items())
+        bounds[pass] = bytes.get<double>() / (copyGigabytesPerSecond * 1e6);
+    row["passes_traffic_bound_ms"] = bounds;
   }
 }
 

@@ -36,6 +36,7 @@ struct Measurement {
   // lighting, tonemap_post, plugin.<pass>.
   std::map<std::string, double> passMs;
   std::map<std::string, uint64_t> passInvocations;  // plugin.<pass>: fragment-shader invocations, last frame
+  std::map<std::string, uint64_t> passMinimumBytes;  // plugin.<pass>: its least traffic, where stated
   ErrorMetrics error;                    // against the ground truth, edge figures on its edges
   std::optional<double> psnrVsPerSampleDb;
 };
@@ -45,13 +46,16 @@ struct Measurement {
 // pass statistics; compares the last.
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
                     int warmUpFrames, int wallFrames = 0);
+// The GPU's copy bandwidth (GB/s, read + write): a 64 MiB RGBA32F texture copied back and forth, timed
+// with a timer query. What a pass's minimum bytes are divided by for its traffic bound.
+double measureCopyGigabytesPerSecond();
 // Wall-clock ms per frame over `frames` back-to-back frames of the session's config with its
 // statistics off, after one warm-up frame; waits for the GPU only before and after.
 double measureWallMs(Session& session, const host::Camera& camera, int frames);
 
 // The figures of a measurement by the names every report uses: samples, evals_per_pixel,
 // lighting_evaluations, slices, gpu_ms, wall_ms (null when not measured), passes_ms,
-// passes_fragment_invocations, plugin_bytes, plugin_bytes_per_pixel, budget_scale,
+// passes_fragment_invocations, passes_minimum_bytes, plugin_bytes, plugin_bytes_per_pixel, budget_scale,
 // psnr_db, edge_psnr_db (null when the ground truth has no edge pixel), edge_pixels, ssim,
 // max_abs_error, psnr_vs_per_sample_db (when measured).
 nlohmann::json figures(const Measurement& measurement);
@@ -61,6 +65,9 @@ nlohmann::json figures(const Measurement& measurement);
 // evals_per_pixel × off's lighting − off's tonemap_post. Null where the baseline was not run or the
 // time not measured.
 void addTimeRatios(nlohmann::json& rows);
+
+// Adds passes_traffic_bound_ms: each pass's minimum bytes at the copy bandwidth (ms).
+void addTrafficBounds(nlohmann::json& rows, double copyGigabytesPerSecond);
 
 // The quality figures a target can name, and the cost figures tune can minimise.
 const std::vector<std::string>& qualityFigures();  // psnr_db, edge_psnr_db, ssim

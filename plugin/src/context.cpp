@@ -34,10 +34,10 @@ void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-ScopedPass::ScopedPass(PluginContext& context, const char* name) : context_(context) {
+ScopedPass::ScopedPass(PluginContext& context, const char* name, uint64_t minimumBytes) : context_(context) {
   const std::string label = std::string("retroaa.") + name;
   glPushDebugGroup(GL_DEBUG_SOURCE_THIRD_PARTY, 0, -1, label.c_str());
-  context_.statistics->beginPass(name, context_.timePasses);
+  context_.statistics->beginPass(name, context_.timePasses, minimumBytes);
 }
 
 ScopedPass::~ScopedPass() {

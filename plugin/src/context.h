@@ -48,7 +48,8 @@ struct PluginContext {
 // invocations); labels it for debuggers.
 class ScopedPass {
  public:
-  ScopedPass(PluginContext& context, const char* name);
+  // `minimumBytes`: PassStats::minimumBytes, where the pass's traffic is fixed.
+  ScopedPass(PluginContext& context, const char* name, uint64_t minimumBytes = 0);
   ~ScopedPass();
   ScopedPass(const ScopedPass&) = delete;
   ScopedPass& operator=(const ScopedPass&) = delete;

@@ -33,10 +33,10 @@ void FrameStatistics::beginFrame() {
   passDepth_ = 0;
 }
 
-void FrameStatistics::beginPass(const char* name, bool measured) {
+void FrameStatistics::beginPass(const char* name, bool measured, uint64_t minimumBytes) {
   Slot* slot = openSlot();
   if (!slot || !measured || passDepth_++ > 0) return;
-  PassQueries pass{name, 0, 0};
+  PassQueries pass{name, 0, 0, minimumBytes};
   if (timerQueries_) {
     pass.time = slot->timePool.next(queries_);
     glBeginQuery(GL_TIME_ELAPSED, pass.time);
@@ -95,7 +95,7 @@ void FrameStatistics::read(Slot& slot, GLenum resultMode) {
   figures.lightingEvaluations = slot.knownEvaluations;
   for (GLuint query : slot.evaluationQueries) figures.lightingEvaluations += result(query);
   for (const PassQueries& pass : slot.passes)
-    figures.passes.push_back({pass.name, double(result(pass.time)) * 1e-6, result(pass.fragments)});
+    figures.passes.push_back({pass.name, double(result(pass.time)) * 1e-6, result(pass.fragments), pass.minimumBytes});
   slot.state = Slot::State::Empty;
   if (figures.frame > latest_.frame) latest_ = std::move(figures);
 }

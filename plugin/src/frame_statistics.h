@@ -33,7 +33,7 @@ class FrameStatistics {
   void beginFrame();
   // Pass queries, when `measured`: a timer and, where the context has pipeline statistics, a
   // fragment-invocation count. A pass inside another pass is not measured on its own.
-  void beginPass(const char* name, bool measured);
+  void beginPass(const char* name, bool measured, uint64_t minimumBytes = 0);
   void endPass();
   // Pixels lit: counted on the GPU by an occlusion query around a draw that passes exactly where the
   // lighting will run, or added directly where the CPU knows the number. beginEvaluationCount returns
@@ -66,6 +66,7 @@ class FrameStatistics {
   struct PassQueries {
     std::string name;
     GLuint time = 0, fragments = 0;
+    uint64_t minimumBytes = 0;
   };
   struct Slot {
     uint64_t frame = 0;

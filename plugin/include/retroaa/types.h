@@ -108,6 +108,10 @@ struct PassStats {
   std::string name;                  // e.g. "resolve", "fxaa"
   double ms = 0;                     // GPU time (GL_TIME_ELAPSED); 0 without timer queries
   uint64_t fragmentInvocations = 0;  // fragment-shader invocations (pipeline statistics; 0 without them)
+  // The least memory traffic the pass's job needs (formats × samples × pixels read and written), where
+  // it is fixed: divided by the machine's copy bandwidth, the time no implementation can beat. 0: not
+  // stated (the traffic depends on the frame).
+  uint64_t minimumBytes = 0;
 };
 
 struct Stats {

@@ -55,7 +55,10 @@ void drawResolve(PluginContext& context, const ShaderProgram& program, const Msa
 
 Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {
   {
-    ScopedPass timed(context, "resolve");
+    // Every sample of every attachment and of the depth read once, one value of each written.
+    uint64_t written = bytesPerTexel(sizedDepthFormat(context.layout.depthStencilTexture));
+    for (const Attachment& attachment : context.layout.attachments) written += bytesPerTexel(attachment.internalFormat);
+    ScopedPass timed(context, "resolve", source.bytes() + written * context.pixelCount());
     context.beginFullscreenPass(hostTarget_.get());
     glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
     glDepthFunc(GL_ALWAYS);
