@@ -72,16 +72,32 @@ TEST(Cli, RenderWritesPngWithMetadataAndExr) {
 TEST(Cli, BenchWritesEveryRowWithTheFieldsReportsNeed) {
   const std::string json = temp("bench.json");
   const CliRun r =
-      runCli("bench --methods off,fxaa,resolve --width 64 --height 48 --gt-samples 4 --repeats 1 --json " + json);
+      runCli("bench --methods off,fxaa,resolve,per-sample --width 64 --height 48 --gt-samples 4 --repeats 1 "
+             "--wall-frames 3 --json " +
+             json);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::ifstream in(json);
   const nlohmann::json document = nlohmann::json::parse(in);
-  ASSERT_EQ(document["rows"].size(), 3u);
+  ASSERT_EQ(document["rows"].size(), 4u);
   EXPECT_GE(document["gl_max_samples"].get<int>(), 1);
-  for (const auto& row : document["rows"])
-    for (const char* field : {"method", "samples", "evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel",
-                              "psnr_db", "edge_psnr_db", "psnr_vs_per_sample_db", "max_abs_error", "time_vs_off"})
+  EXPECT_GT(document["copy_gb_per_s"].get<double>(), 0.0);
+  // The shading floor: at least one surface per pixel, more on a frame with silhouettes, at most N.
+  const double floor = document["shading_floor_evals_per_pixel"].get<double>();
+  EXPECT_GT(floor, 1.0);
+  EXPECT_LT(floor, 4.0);
+  for (const auto& row : document["rows"]) {
+    for (const char* field :
+         {"method", "samples", "evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel", "psnr_db",
+          "edge_psnr_db", "psnr_vs_per_sample_db", "max_abs_error", "time_vs_off", "passes_fragment_invocations",
+          "passes_minimum_bytes", "passes_traffic_bound_ms"})
       EXPECT_TRUE(row.contains(field)) << field;
+    for (const char* figure : {"wall_ms", "wall_vs_off", "plugin_overhead_ms", "evals_vs_shading_floor"})
+      EXPECT_TRUE(row[figure].is_number()) << figure << " of " << row.dump();
+    EXPECT_GT(row["wall_ms"].get<double>(), 0.0);
+  }
+  EXPECT_EQ(document["rows"][0]["wall_vs_off"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(document["rows"][3]["evals_vs_shading_floor"].get<double>(), 4.0 / floor);
+  EXPECT_GT(document["rows"][2]["passes_minimum_bytes"]["plugin.resolve"].get<uint64_t>(), 0u);
   EXPECT_EQ(document["rows"][0]["plugin_bytes_per_pixel"].get<double>(), 0.0);
   EXPECT_GT(document["rows"][2]["plugin_bytes_per_pixel"].get<double>(), 100.0);
   EXPECT_GT(document["rows"][2]["passes_ms"].count("plugin.resolve"), 0u);
@@ -182,6 +198,7 @@ TEST(Cli, EdgeFiguresOfAFrameWithoutEdgesAreNotApplicable) {
   std::ifstream in(json);
   const nlohmann::json document = nlohmann::json::parse(in);
   EXPECT_EQ(document["edge_pixels"], 0);
+  EXPECT_EQ(document["shading_floor_evals_per_pixel"].get<double>(), 1.0) << "one surface (the sky) per pixel";
   for (const auto& row : document["rows"]) {
     EXPECT_TRUE(row["edge_psnr_db"].is_null()) << row.dump();
     EXPECT_EQ(row["edge_pixels"], 0);

@@ -290,6 +290,8 @@ int runBench(const BenchOptions& options) {
                session.scene.name.c_str(), w, h, session.scene.triangleCount(), session.scene.lights.size(),
                options.groundTruthSamples, options.groundTruthSamples);
   const FrameReference reference = renderReference(session, camera, options.groundTruthSamples, &options.base);
+  session.configure(options.base);
+  const double shadingFloor = measureShadingFloor(session, camera);
   if (!options.imagesDirectory.empty()) writeReferenceImages(options.imagesDirectory, session, reference);
 
   json rows = json::array();
@@ -308,6 +310,8 @@ int runBench(const BenchOptions& options) {
   }
   addTimeRatios(rows);
   const double copyGigabytesPerSecond = measureCopyGigabytesPerSecond();
+  for (json& row : rows)  // the floor is the base sample count's; a row at another count is compared all the same
+    row["evals_vs_shading_floor"] = row["evals_per_pixel"].get<double>() / shadingFloor;
   addTrafficBounds(rows, copyGigabytesPerSecond);
   const host::ContextInfo& info = context.info();
   const json document = {{"scene", session.scene.name},
@@ -322,6 +326,8 @@ int runBench(const BenchOptions& options) {
                          {"egl_platform", info.platform},
                          {"gl_max_samples", info.maxSamples},
                          {"copy_gb_per_s", copyGigabytesPerSecond},
+                         {"shading_floor_evals_per_pixel", shadingFloor},
+                         {"shading_floor_samples", options.base.samples},
                          {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
                          {"rows", rows}};
   const std::string table = benchTable(rows);

@@ -82,6 +82,56 @@ double measureCopyGigabytesPerSecond() {
   return nanoseconds > 0 ? bytesMoved / nanoseconds : 0.0;             // bytes per ns = GB/s
 }
 
+double measureShadingFloor(Session& session, const host::Camera& camera) {
+  retroaa::Config previous = session.config;
+  const std::string previousMethod = session.method;
+  retroaa::Config msaa = previous;
+  msaa.method = retroaa::Method::Resolve;
+  session.configure(msaa, "resolve");
+  session.renderer->renderFrame(camera);
+  std::vector<GLuint> attachments;
+  for (const retroaa::AttachmentRole role :
+       {retroaa::AttachmentRole::Albedo, retroaa::AttachmentRole::ViewPosition, retroaa::AttachmentRole::NormalGloss,
+        retroaa::AttachmentRole::Specular, retroaa::AttachmentRole::Emissive})
+    if (const GLuint texture = session.plugin().multisampledAttachment(role)) attachments.push_back(texture);
+  const int samples = session.plugin().stats().samples;
+  const int w = session.renderer->width(), h = session.renderer->height();
+  double mean = 1.0;
+  if (!attachments.empty() && samples > 1) {
+    const host::Program program("shaders/fullscreen.vert", "shaders/distinct_surfaces.frag",
+                                "#define SAMPLES " + std::to_string(samples) + "\n#define ATTACHMENTS " +
+                                    std::to_string(attachments.size()) + "\n");
+    const host::Texture target = host::makeTexture2D(GL_R32F, w, h, "bench.distinct_surfaces");
+    GLuint name = 0;
+    glCreateFramebuffers(1, &name);
+    const host::Framebuffer framebuffer(name);
+    glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, target.get(), 0);
+    host::checkFramebuffer(framebuffer.get(), "bench.distinct_surfaces");
+    GLuint vertexArray = 0;
+    glCreateVertexArrays(1, &vertexArray);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+    glViewport(0, 0, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    glUseProgram(program.get());
+    for (size_t a = 0; a < attachments.size(); ++a) glBindTextureUnit(GLuint(a), attachments[a]);
+    glBindVertexArray(vertexArray);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDeleteVertexArrays(1, &vertexArray);
+    std::vector<float> surfaces(size_t(w) * h);
+    glGetTextureImage(target.get(), 0, GL_RED, GL_FLOAT, GLsizei(surfaces.size() * sizeof(float)), surfaces.data());
+    double sum = 0;
+    for (float count : surfaces) sum += count;
+    mean = sum / double(surfaces.size());
+    for (size_t a = 0; a < attachments.size(); ++a) glBindTextureUnit(GLuint(a), 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glUseProgram(0);
+  }
+  session.configure(previous, previousMethod);
+  return mean;
+}
+
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
                     int warmUpFrames, int wallFrames) {
   host::Renderer& renderer = *session.renderer;

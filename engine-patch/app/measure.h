@@ -46,6 +46,11 @@ struct Measurement {
 // pass statistics; compares the last.
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
                     int warmUpFrames, int wallFrames = 0);
+// The shading floor of the frame: per pixel, the distinct surfaces among its samples (bit-identical
+// attributes: one primitive), averaged — the fewest lighting evaluations per pixel a method can do and
+// still light every surface a pixel shows. Renders `camera` once with `resolve` at the session's
+// sample count (for its MSAA G-buffer), then restores the session's config. 1 at one sample.
+double measureShadingFloor(Session& session, const host::Camera& camera);
 // The GPU's copy bandwidth (GB/s, read + write): a 64 MiB RGBA32F texture copied back and forth, timed
 // with a timer query. What a pass's minimum bytes are divided by for its traffic bound.
 double measureCopyGigabytesPerSecond();
