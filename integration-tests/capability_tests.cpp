@@ -5,21 +5,12 @@
 
 using namespace testing_support;
 
-namespace {
-std::unique_ptr<patch::RetroaaHooks> install(PatchedHost& host, const retroaa::Config& config, uint32_t disabled, int maxSamples) {
-  auto created = patch::RetroaaHooks::create(host.renderer->targets(), config, disabled, maxSamples);
-  if (!created) throw std::runtime_error(created.error().message);
-  host.renderer->setHooks(created.value().get());
-  return std::move(created.value());
-}
-}  // namespace
-
 TEST(Capabilities, WithoutMultisamplingEveryMsaaMethodFallsBackToFxaa) {
   PatchedHost host("default", 96, 72);
   const app::DisplayImage fxaa = host.render("fxaa");
   for (const char* method : {"resolve", "edge", "per-sample", "adaptive", "aggregate", "coverage"}) {
     retroaa::Config config = app::parseMethodSpec(method, {}).config;
-    auto hooks = install(host, config, 0, 1);
+    auto hooks = installHooks(host, config, 0, 1);
     EXPECT_EQ(hooks->plugin().config().method, retroaa::Method::Fxaa) << method;
     const auto warnings = hooks->plugin().warnings();
     ASSERT_FALSE(warnings.empty()) << method;
@@ -37,7 +28,7 @@ TEST(Capabilities, FewerSamplesAreClampedWithAWarning) {
   retroaa::Config config;
   config.method = retroaa::Method::Edge;
   config.samples = 4;
-  auto hooks = install(host, config, 0, 2);
+  auto hooks = installHooks(host, config, 0, 2);
   EXPECT_EQ(hooks->plugin().config().samples, 2);
   EXPECT_NE(hooks->plugin().warnings().front().find("samples=4 requested, the context grants 2"), std::string::npos);
   host.renderer->renderFrame(host.scene.camera);  // still renders (llvmpipe may back 2 with 4)
@@ -50,14 +41,14 @@ TEST(Capabilities, WithoutTimerQueriesNoPassTimesAndSaysSo) {
   retroaa::Config config;
   config.method = retroaa::Method::Resolve;
   config.measureGpuTime = true;
-  auto hooks = install(host, config, retroaa::kFeatureTimerQuery, 0);
+  auto hooks = installHooks(host, config, retroaa::kFeatureTimerQuery, 0);
   host.renderer->renderFrame(host.scene.camera);
   EXPECT_TRUE(hooks->plugin().waitForStats().passes.empty());
   bool said = false;
   for (const std::string& w : hooks->plugin().warnings()) said = said || w.find("no timer queries") != std::string::npos;
   EXPECT_TRUE(said);
   // And with them, the same config measures its passes.
-  auto measured = install(host, config, 0, 0);
+  auto measured = installHooks(host, config, 0, 0);
   host.renderer->renderFrame(host.scene.camera);
   EXPECT_FALSE(measured->plugin().waitForStats().passes.empty());
   host.renderer->setHooks(host.hooks.get());

@@ -167,13 +167,6 @@ uint64_t fragmentInvocations(const retroaa::Stats& stats, const std::string& pas
   return sum;
 }
 
-std::unique_ptr<patch::RetroaaHooks> install(PatchedHost& host, const retroaa::Config& config, uint32_t disabled) {
-  auto created = patch::RetroaaHooks::create(host.renderer->targets(), config, disabled, 0);
-  if (!created) throw std::runtime_error(created.error().message);
-  host.renderer->setHooks(created.value().get());
-  return std::move(created.value());
-}
-
 }  // namespace
 
 TEST(FramePath, NoMethodWaitsForTheGpuWithStatisticsOffOrOn) {
@@ -282,7 +275,7 @@ TEST(Statistics, WithoutStencilExportTheCountTakesOneBitPassPerBitAndTheSameImag
   host.renderer->renderFrame(host.scene.camera);
   const std::vector<uint8_t> withExport = host.renderer->readDisplay();
   const retroaa::Stats exported = host.hooks->plugin().waitForStats();
-  auto hooks = install(host, config, retroaa::kFeatureStencilExport);
+  auto hooks = installHooks(host, config, retroaa::kFeatureStencilExport);
   host.renderer->renderFrame(host.scene.camera);
   EXPECT_EQ(host.renderer->readDisplay(), withExport);
   const retroaa::Stats bitPasses = hooks->plugin().waitForStats();

@@ -37,6 +37,14 @@ app::DisplayImage PatchedHost::render(const std::string& methodSpec, const retro
   return app::DisplayImage::fromRgba8(renderer->width(), renderer->height(), renderer->readDisplay());
 }
 
+std::unique_ptr<patch::RetroaaHooks> installHooks(PatchedHost& host, const retroaa::Config& config,
+                                                  uint32_t disabledFeatures, int maxSamplesLimit) {
+  auto created = patch::RetroaaHooks::create(host.renderer->targets(), config, disabledFeatures, maxSamplesLimit);
+  if (!created) throw std::runtime_error(created.error().message);
+  host.renderer->setHooks(created.value().get());
+  return std::move(created.value());
+}
+
 host::GroundTruth PatchedHost::groundTruth(int samplesPerAxis) {
   return host::renderGroundTruth(*renderer, scene.camera, samplesPerAxis);
 }

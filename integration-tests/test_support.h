@@ -46,6 +46,12 @@ struct PatchedHost {
   ScoringTruth scoringTruth(int samplesPerAxis);
 };
 
+// A fresh plugin for `host` under `config`, on a context with `disabledFeatures` masked and
+// GL_MAX_SAMPLES limited to `maxSamplesLimit` (0: the context's), set as the host's hooks. Set
+// `host.hooks` back (host.renderer->setHooks(host.hooks.get())) before the returned hooks go.
+std::unique_ptr<patch::RetroaaHooks> installHooks(PatchedHost& host, const retroaa::Config& config,
+                                                  uint32_t disabledFeatures = 0, int maxSamplesLimit = 0);
+
 // One sample of the FSO layout written by hand: albedo, position, normal+gloss, specular, emissive,
 // and the depth-buffer value (x).
 struct SyntheticSample {
