@@ -1,6 +1,6 @@
 // Frame-time budget for `adaptive` (and `edge` with the depth detector): a damped integral controller
 // on the log of a quality scale that multiplies the refinement metrics, fed the plugin's measured GPU
-// time each frame.
+// time each frame it has (the frame statistics come back a frame or two late, without a wait).
 //
 // Damping: the measurement is smoothed exponentially (α = 0.5) so one noisy frame moves little; the
 // scale changes by at most ±gain·20 % of itself per frame; inside a ±5 % band around the budget it holds
@@ -14,7 +14,7 @@ class BudgetController {
  public:
   static constexpr double kMinScale = 0.02, kMaxScale = 50.0;
   explicit BudgetController(double budgetMs) : budgetMs_(budgetMs) {}
-  // The plugin's GPU time of the last frame; returns the scale for the next one.
+  // The plugin's GPU time of the newest measured frame; returns the scale for the next one.
   double update(double measuredMs);
   double scale() const { return scale_; }
 

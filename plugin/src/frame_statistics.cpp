@@ -23,7 +23,8 @@ void FrameStatistics::beginFrame() {
   }
   collect();
   Slot& slot = ring_[frames_ % kFramesInFlight];
-  if (slot.state == Slot::State::Pending) ++dropped_;  // the GPU is this far behind: drop, never wait
+  // A slot still pending here (the GPU this far behind) is dropped, never waited for: its queries are
+  // begun anew, which discards their results.
   slot.frame = ++frames_;
   slot.state = Slot::State::Open;
   slot.passes.clear();

@@ -54,7 +54,6 @@ class FrameStatistics {
   // The ring's query objects: counted apart from the plugin's other objects, since they follow the
   // passes measured (at most kFramesInFlight × (2 per pass + 1 per slice)), not the method's targets.
   int queriesHeld() const { return queries_.live; }
-  uint64_t framesDropped() const { return dropped_; }
 
  private:
   // Query objects keep the target of their first use, so each target has its own pool per slot.
@@ -85,7 +84,6 @@ class FrameStatistics {
   std::array<Slot, kFramesInFlight> ring_;
   uint64_t frames_ = 0;
   int passDepth_ = 0;
-  uint64_t dropped_ = 0;
   FrameFigures latest_;
 };
 
