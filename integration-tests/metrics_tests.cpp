@@ -55,7 +55,7 @@ TEST(Metrics, UniformOffsetGivesKnownMsePsnrAndMaxError) {
   EXPECT_NEAR(m.maxAbsError, 0.1, 1e-6);
 }
 
-TEST(Metrics, EdgePsnrCountsOnlyMaskedPixels) {
+TEST(Metrics, EdgePsnrCountsOnlyMaskedPixelsAndInteriorPsnrTheRest) {
   DisplayImage a = constant(16, 16, 0.5f), b = constant(16, 16, 0.5f);
   std::vector<uint8_t> mask(256, 0);
   for (int i = 0; i < 16; ++i) {  // error only on masked pixels: 0.2 off
@@ -66,6 +66,13 @@ TEST(Metrics, EdgePsnrCountsOnlyMaskedPixels) {
   EXPECT_EQ(m.edgePixels, 16);
   EXPECT_NEAR(m.edgePsnrDb, 10.0 * std::log10(1.0 / 0.04), 1e-3);
   EXPECT_NEAR(m.psnrDb, 10.0 * std::log10(1.0 / (0.04 / 16.0)), 1e-3);
+  // Off the mask nothing differs: the interior is exact (capped), and it alone sees an interior blur.
+  EXPECT_EQ(m.interiorPixels, 240);
+  EXPECT_EQ(m.interiorPsnrDb, app::kPsnrCapDb);
+  for (int c = 0; c < 3; ++c) a.rgb[(5 * 16 + 9) * 3 + c] = 0.6f;  // one interior pixel 0.1 off
+  const app::ErrorMetrics blurred = app::compare(a, b, mask);
+  EXPECT_NEAR(blurred.interiorPsnrDb, 10.0 * std::log10(1.0 / (0.01 / 240.0)), 1e-3);
+  EXPECT_EQ(blurred.edgePsnrDb, m.edgePsnrDb);
 }
 
 TEST(Metrics, SsimIsSymmetricAndFallsWithNoise) {

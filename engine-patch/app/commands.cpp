@@ -193,8 +193,8 @@ std::string imageFileStem(std::string methodName) {
 std::string benchTable(const json& rows) {
   std::ostringstream table;
   table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | wall ms | wall vs off | plugin "
-           "overhead ms | plugin B/px | PSNR dB | edge PSNR dB | SSIM | max err | PSNR vs per-sample |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+           "overhead ms | plugin B/px | PSNR dB | edge PSNR dB | interior PSNR dB | SSIM | max err | PSNR vs per-sample |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   // Null is "-" for a ratio whose baseline was not run, "n/a" for a figure with nothing to measure.
   auto twoDecimals = [](const json& value, const char* whenNull) {
     if (value.is_null()) return std::string(whenNull);
@@ -211,7 +211,8 @@ std::string benchTable(const json& rows) {
           << ratio(row["time_vs_per_sample"]) << " | " << ratio(row["wall_ms"]) << " | " << ratio(row["wall_vs_off"])
           << " | " << ratio(row["plugin_overhead_ms"]) << " | " << std::setprecision(1)
           << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
-          << row["psnr_db"].get<double>() << " | " << decibels(row["edge_psnr_db"]) << " | " << std::setprecision(4)
+          << row["psnr_db"].get<double>() << " | " << decibels(row["edge_psnr_db"]) << " | "
+          << decibels(row["interior_psnr_db"]) << " | " << std::setprecision(4)
           << row["ssim"].get<double>() << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " | "
           << std::setprecision(2) << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
   }
@@ -233,6 +234,7 @@ void writeBenchCsv(const std::string& path, const json& rows) {
                                             "plugin_bytes_per_pixel",
                                             "psnr_db",
                                             "edge_psnr_db",
+                                            "interior_psnr_db",
                                             "ssim",
                                             "max_abs_error",
                                             "psnr_vs_per_sample_db"};

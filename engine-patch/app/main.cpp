@@ -198,7 +198,7 @@ void addTune(CommandLine& line) {
   CLI::App* sub =
       line.cli.add_subcommand("tune", "the cheapest settings that meet quality targets on every frame of your scenes");
   sub->add_option("--scenes", *scenes, "comma-separated scene files (default: default)");
-  sub->add_option("--target", *targets, "psnr_db=X, edge_psnr_db=X or ssim=X (repeatable)")->required();
+  sub->add_option("--target", *targets, "psnr_db=X, edge_psnr_db=X, interior_psnr_db=X or ssim=X (repeatable)")->required();
   sub->add_option("--cost", options->cost, "evals_per_pixel | gpu_ms | plugin_bytes_per_pixel");
   sub->add_option("--candidates", options->candidates,
                   "comma-separated method specs (default: 'grid', the registry's)");

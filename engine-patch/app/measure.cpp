@@ -193,6 +193,8 @@ nlohmann::json figures(const Measurement& m) {
       // No edge pixel in the ground truth: there is no edge error to report (null, not a number).
       {"edge_psnr_db", m.error.edgePixels > 0 ? json(m.error.edgePsnrDb) : json(nullptr)},
       {"edge_pixels", m.error.edgePixels},
+      // Every pixel an edge: no interior to report.
+      {"interior_psnr_db", m.error.interiorPixels > 0 ? json(m.error.interiorPsnrDb) : json(nullptr)},
       {"ssim", m.error.ssim},
       {"max_abs_error", m.error.maxAbsError},
   };
@@ -242,7 +244,7 @@ void addTrafficBounds(nlohmann::json& rows, double copyGigabytesPerSecond) {
 }
 
 const std::vector<std::string>& qualityFigures() {
-  static const std::vector<std::string> names = {"psnr_db", "edge_psnr_db", "ssim"};
+  static const std::vector<std::string> names = {"psnr_db", "edge_psnr_db", "interior_psnr_db", "ssim"};
   return names;
 }
 

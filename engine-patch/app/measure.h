@@ -75,7 +75,7 @@ void addTimeRatios(nlohmann::json& rows);
 void addTrafficBounds(nlohmann::json& rows, double copyGigabytesPerSecond);
 
 // The quality figures a target can name, and the cost figures tune can minimise.
-const std::vector<std::string>& qualityFigures();  // psnr_db, edge_psnr_db, ssim
+const std::vector<std::string>& qualityFigures();  // psnr_db, edge_psnr_db, interior_psnr_db, ssim
 const std::vector<std::string>& costFigures();     // evals_per_pixel, gpu_ms, plugin_bytes_per_pixel
 
 }  // namespace app

@@ -30,7 +30,7 @@ ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference,
   if (image.width != reference.width || image.height != reference.height)
     throw std::invalid_argument("compare: image sizes differ");
   ErrorMetrics m;
-  double sum = 0, edgeSum = 0;
+  double sum = 0, edgeSum = 0, interiorSum = 0;
   const size_t pixels = size_t(image.width) * image.height;
   for (size_t p = 0; p < pixels; ++p) {
     double pixelSum = 0;
@@ -43,6 +43,9 @@ ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference,
     if (!edgeMask.empty() && edgeMask[p]) {
       edgeSum += pixelSum;
       ++m.edgePixels;
+    } else {
+      interiorSum += pixelSum;
+      ++m.interiorPixels;
     }
   }
   m.mse = sum / (3.0 * pixels);
@@ -50,6 +53,10 @@ ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference,
   if (m.edgePixels > 0) {
     m.edgeMse = edgeSum / (3.0 * m.edgePixels);
     m.edgePsnrDb = psnrFromMse(m.edgeMse);
+  }
+  if (m.interiorPixels > 0) {
+    m.interiorMse = interiorSum / (3.0 * m.interiorPixels);
+    m.interiorPsnrDb = psnrFromMse(m.interiorMse);
   }
   m.ssim = ssim(image, reference);
   return m;

@@ -20,9 +20,12 @@ struct ErrorMetrics {
   double psnrDb = 0;       // 10 log10(1 / mse); capped at kPsnrCapDb for identical images
   double edgeMse = 0;      // the same over the edge mask only
   double edgePsnrDb = 0;
+  double interiorMse = 0;  // the same off the edge mask (every pixel when the mask is empty): blur shows here
+  double interiorPsnrDb = 0;
   double ssim = 0;         // Wang et al. 2004 on luma: 11×11 Gaussian window, σ = 1.5
   double maxAbsError = 0;  // largest per-channel difference
   int edgePixels = 0;
+  int interiorPixels = 0;
 };
 
 constexpr double kPsnrCapDb = 100.0;

@@ -40,11 +40,12 @@ std::string fileSafe(std::string name) {
 
 // Per method, summed over a scene's frames.
 struct MethodTotals {
-  double psnr = 0, edgePsnr = 0, minEdgePsnr = 1e9, psnrVsPerSample = 0, ssim = 0, maxError = 0;
+  double psnr = 0, edgePsnr = 0, minEdgePsnr = 1e9, interiorPsnr = 0, psnrVsPerSample = 0, ssim = 0, maxError = 0;
   double evaluations = 0, gpuMs = 0, flicker = 0;
   double wallMs = 0;  // of the first frame (0: not measured)
   std::map<std::string, double> passMs;
   int frames = 0, flickerFrames = 0, edgeFrames = 0;  // edge figures: frames whose ground truth has edges
+  int interiorFrames = 0;
   double bytesPerPixel = 0;
   std::vector<float> previousError;  // signed display error of the previous frame
 
@@ -52,6 +53,7 @@ struct MethodTotals {
     psnr += m.error.psnrDb;
     if (m.error.edgePixels > 0)
       edgePsnr += m.error.edgePsnrDb, minEdgePsnr = std::min(minEdgePsnr, m.error.edgePsnrDb), ++edgeFrames;
+    if (m.error.interiorPixels > 0) interiorPsnr += m.error.interiorPsnrDb, ++interiorFrames;
     psnrVsPerSample += m.psnrVsPerSampleDb.value_or(0);
     ssim += m.error.ssim, maxError = std::max(maxError, m.error.maxAbsError);
     evaluations += m.stats.evaluationsPerPixel(), gpuMs += m.gpuMs;
@@ -86,6 +88,7 @@ struct MethodTotals {
             {"psnr_db", psnr / n},
             {"edge_psnr_db", edgeFrames ? json(edgePsnr / edgeFrames) : json(nullptr)},
             {"min_edge_psnr_db", edgeFrames ? json(minEdgePsnr) : json(nullptr)},
+            {"interior_psnr_db", interiorFrames ? json(interiorPsnr / interiorFrames) : json(nullptr)},
             {"psnr_vs_per_sample_db", psnrVsPerSample / n},
             {"ssim", ssim / n},
             {"max_abs_error", maxError},
@@ -259,7 +262,7 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
   const std::string dir = scene["directory"];
   html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
        << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>wall ms (frame 1)</th><th>plugin overhead ms</th><th>plugin B/px</th><th>PSNR dB</th>"
-       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max "
+       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>interior PSNR dB</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max "
           "err</th><th>flicker</th></tr>\n";
   for (const auto& r : scene["rows"]) {
     html << "<tr><td>" << htmlEscape(r["method"]) << "</td>";
@@ -272,6 +275,7 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
                                                             {"psnr_db", 2},
                                                             {"edge_psnr_db", 2},
                                                             {"min_edge_psnr_db", 2},
+                                                            {"interior_psnr_db", 2},
                                                             {"psnr_vs_per_sample_db", 2},
                                                             {"ssim", 4},
                                                             {"max_abs_error", 3},

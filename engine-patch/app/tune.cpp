@@ -121,7 +121,11 @@ std::vector<TunePoint> measureCandidates(const TuneOptions& options, const std::
       json& entry = cache[key.str()];
       std::optional<FrameReference> reference;
       for (size_t i = 0; i < specs.size(); ++i) {
-        if (entry.contains(specs[i]) && entry[specs[i]].contains(options.cost)) {
+        // An entry from before a figure existed (interior_psnr_db, say) is measured again.
+        const bool cached = entry.contains(specs[i]) && entry[specs[i]].contains(options.cost) &&
+                            std::all_of(qualityFigures().begin(), qualityFigures().end(),
+                                        [&](const std::string& figure) { return entry[specs[i]].contains(figure); });
+        if (cached) {
           ++reused;
         } else {
           if (!reference)
