@@ -16,11 +16,15 @@ FrameStatistics::Slot* FrameStatistics::openSlot() {
   return frames_ > 0 && slot.state == Slot::State::Open ? &slot : nullptr;
 }
 
-void FrameStatistics::beginFrame() {
+void FrameStatistics::closeFrame() {
   if (Slot* open = openSlot()) {
     if (passDepth_ > 0) endPass();  // a pass left open by an error return
     open->state = Slot::State::Pending;
   }
+}
+
+void FrameStatistics::beginFrame() {
+  closeFrame();
   collect();
   Slot& slot = ring_[frames_ % kFramesInFlight];
   // A slot still pending here (the GPU this far behind) is dropped, never waited for: its queries are
@@ -115,10 +119,7 @@ bool FrameStatistics::collect() {
 }
 
 void FrameStatistics::waitForLastFrame() {
-  if (Slot* open = openSlot()) {
-    if (passDepth_ > 0) endPass();
-    open->state = Slot::State::Pending;
-  }
+  closeFrame();
   for (uint64_t frame = frames_ > kFramesInFlight ? frames_ - kFramesInFlight + 1 : 1; frame <= frames_; ++frame) {
     Slot& slot = ring_[(frame - 1) % kFramesInFlight];
     if (slot.frame == frame && slot.state == Slot::State::Pending) read(slot, GL_QUERY_RESULT);

@@ -75,6 +75,7 @@ class FrameStatistics {
     uint64_t knownEvaluations = 0;
     QueryPool timePool, fragmentPool, samplesPool;
   };
+  void closeFrame();  // the frame in flight, if any, becomes pending
   bool available(const Slot& slot) const;
   void read(Slot& slot, GLenum resultMode);
   Slot* openSlot();
