@@ -23,6 +23,7 @@ struct ContextCapabilities {
 struct PluginContext {
   Config config;  // as granted
   GBufferLayout layout;
+  FrameInfo frame;  // of the last resolve(): its planes decode depth-buffer values in every later pass
   ContextCapabilities capabilities;
   ObjectCounter objects;
   LogCallback log;

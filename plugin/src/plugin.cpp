@@ -21,13 +21,20 @@ Status validateLayout(const GBufferLayout& layout) {
   if (layout.attachments.empty() || layout.attachments.size() > size_t(kMaxAttachments))
     return invalid("layout has " + std::to_string(layout.attachments.size()) + " attachments (allowed: 1.." +
                    std::to_string(kMaxAttachments) + ")");
-  int positions = 0;
+  int positions = 0, normals = 0;
   for (const Attachment& a : layout.attachments) {
     if (!a.texture || !a.internalFormat) return invalid("an attachment has no texture or no format");
     positions += a.role == AttachmentRole::ViewPosition;
+    normals += a.role == AttachmentRole::NormalGloss;
   }
-  if (positions != 1)
-    return invalid("layout needs exactly one ViewPosition attachment (has " + std::to_string(positions) + ")");
+  const bool depthInPosition = layout.depthSource == DepthSource::PositionChannel;
+  if (depthInPosition ? positions != 1 : positions > 1)
+    return invalid(std::string("layout needs ") + (depthInPosition ? "exactly" : "at most") +
+                   " one ViewPosition attachment (has " + std::to_string(positions) + ")" +
+                   (depthInPosition && positions == 0
+                        ? "; a host without one sets depthSource = DepthSource::DepthBuffer"
+                        : ""));
+  if (normals > 1) return invalid("layout has " + std::to_string(normals) + " NormalGloss attachments (at most one)");
   if (layout.depthChannel < 0 || layout.depthChannel > 3) return invalid("depthChannel must be 0..3");
   const DepthEncoding& depth = layout.depthEncoding;
   if (depth.kind == DepthEncoding::Kind::LogAboveKnee && !(depth.knee > 0 && std::isfinite(depth.knee)))
@@ -36,9 +43,12 @@ Status validateLayout(const GBufferLayout& layout) {
   if (depth.kind == DepthEncoding::Kind::FsoCompressedViewZ &&
       !(depth.farDistance > 100000.0f && std::isfinite(depth.farDistance)))
     return invalid("depthEncoding.farDistance must be above 100000 m for FsoCompressedViewZ (FSO's GLOBAL_FAR_Z)");
-  if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer || !layout.lightTexture ||
-      !layout.displayFramebuffer || !layout.displayTexture)
-    return invalid("layout is missing a host framebuffer or texture (gbuffer, depth-stencil, light, display)");
+  if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer || !layout.lightTexture)
+    return invalid("layout is missing a host framebuffer or texture (gbufferFramebuffer, depthStencilTexture, "
+                   "lightFramebuffer, lightTexture)");
+  if (!layout.displayFramebuffer != !layout.displayTexture)
+    return invalid("layout names only one of displayFramebuffer and displayTexture (both, or neither without post "
+                   "methods)");
   if (!sizedDepthFormat(layout.depthStencilTexture)) {
     GLint format = 0;
     if (glIsTexture(layout.depthStencilTexture))
@@ -88,7 +98,6 @@ struct Plugin::Impl {
   std::unique_ptr<PostTarget> postTarget;
   // The method's technique first, then the stacked ones; each pass runs them in this order.
   std::vector<ActiveTechnique> techniques;
-  FrameInfo lastFrame;  // from resolve(), for post()
   std::unique_ptr<BudgetController> budget;
   bool resolvedThisFrame = false;
   uint64_t budgetFrame = 0;  // the measured frame the budget last saw
@@ -298,7 +307,7 @@ Status Plugin::resolve(const FrameInfo& frame) {
   PluginContext& context = impl_->context;
   impl_->beginFrame();
   impl_->resolvedThisFrame = true;
-  impl_->lastFrame = frame;
+  impl_->context.frame = frame;
   if (!impl_->resolvePass) return Status::ok();
   GlStateGuard guard;
   if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
@@ -325,7 +334,7 @@ Status Plugin::shade(const LightingFunction& lighting) {
     const SliceRenderer::Plan plan = technique ? technique->slicePlan(context, shared) : SliceRenderer::Plan{};
     Status status = impl_->slices->shade(context, *impl_->msaa, lighting, plan);
     if (status && context.config.restoreGBufferAfterShade)
-      status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->lastFrame, *impl_->slices);
+      status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->context.frame, *impl_->slices);
     return status;
   }
   // Single-slice methods light once, every pixel, in the host's own target.
@@ -339,7 +348,7 @@ Status Plugin::shade(const LightingFunction& lighting) {
   GlStateGuard guard;
   SharedTargets shared = impl_->shared();
   for (ActiveTechnique& active : impl_->techniques)
-    if (Status status = active.technique->afterLighting(context, shared, impl_->lastFrame); !status) return status;
+    if (Status status = active.technique->afterLighting(context, shared, impl_->context.frame); !status) return status;
   return Status::ok();
 }
 
@@ -350,7 +359,7 @@ Status Plugin::post() {
   const GBufferLayout& layout = impl_->context.layout;
   impl_->postTarget->begin(layout);
   for (ActiveTechnique& active : impl_->techniques)
-    if (Status status = active.technique->post(impl_->context, shared, impl_->lastFrame); !status) return status;
+    if (Status status = active.technique->post(impl_->context, shared, impl_->context.frame); !status) return status;
   impl_->postTarget->end(layout);
   return Status::ok();
 }

@@ -1,5 +1,6 @@
 #include "shader_library.h"
 
+#include "context.h"
 #include "retroaa/types.h"
 #include "shared_constants.h"
 
@@ -62,9 +63,15 @@ GLint ShaderProgram::location(const char* name) const {
   return -1;
 }
 
-void ShaderProgram::setDepthEncoding(const GBufferLayout& layout) const {
-  set("uDepthKnee", layout.depthEncoding.knee);
-  set("uBackgroundAbove", layout.depthEncoding.backgroundAbove);
+void ShaderProgram::setDepthEncoding(const PluginContext& context) const {
+  set("uDepthKnee", context.layout.depthEncoding.knee);
+  set("uBackgroundAbove", context.layout.depthEncoding.backgroundAbove);
+  setDepthPlanes(context);
+}
+
+void ShaderProgram::setDepthPlanes(const PluginContext& context) const {
+  set("uDepthNear", context.frame.nearPlane);
+  set("uDepthFar", context.frame.farPlane);
 }
 
 ShaderLibrary::ShaderLibrary(ObjectCounter& counter, std::string overrideDirectory, Warn warn)

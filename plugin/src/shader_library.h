@@ -14,7 +14,7 @@
 
 namespace retroaa {
 
-struct GBufferLayout;
+struct PluginContext;
 
 // A linked program and the uniforms the plugin sets on it. Their locations are looked up once, when
 // the program is built, and the build fails if the shader does not declare one of them: C++ and
@@ -31,8 +31,11 @@ class ShaderProgram {
   void setVec2Array(const char* name, int count, const float* xy) const {
     glProgramUniform2fv(get(), location(name), count, xy);
   }
-  // The uniforms of common/depth.glsl, from the host's depth encoding.
-  void setDepthEncoding(const GBufferLayout& layout) const;
+  // The uniforms of common/depth.glsl and depth_buffer.glsl: the host's depth encoding and the planes
+  // of the frame being resolved.
+  void setDepthEncoding(const PluginContext& context) const;
+  // The uniforms of common/depth_buffer.glsl alone: the planes of the frame being resolved.
+  void setDepthPlanes(const PluginContext& context) const;
 
  private:
   friend class ShaderLibrary;
@@ -41,8 +44,9 @@ class ShaderProgram {
   std::vector<std::pair<std::string, GLint>> uniforms_;
 };
 
-// The uniforms common/depth.glsl declares (for the uniform list of a program that includes it).
-#define RETROAA_DEPTH_ENCODING_UNIFORMS "uDepthKnee", "uBackgroundAbove"
+// The uniforms common/depth.glsl and depth_buffer.glsl declare (for the uniform list of a program that includes it).
+#define RETROAA_DEPTH_BUFFER_UNIFORMS "uDepthNear", "uDepthFar"
+#define RETROAA_DEPTH_ENCODING_UNIFORMS "uDepthKnee", "uBackgroundAbove", RETROAA_DEPTH_BUFFER_UNIFORMS
 
 class ShaderLibrary {
  public:

@@ -1,6 +1,7 @@
 #include "shared_constants.h"
 
 #include "retroaa/config.h"
+#include "retroaa/types.h"
 
 namespace retroaa {
 
@@ -13,6 +14,7 @@ const std::string& sharedConstantDefines() {
     std::string d;
     d += defineLine("UNIT_SLICE_WEIGHTS", kUnitSliceWeights);
     d += defineLine("UNIT_DEPTH_STENCIL", kUnitDepthStencil);
+    d += defineLine("UNIT_SLICE_COUNTS", kUnitSliceCounts);
     d += defineLine("MAX_ATTACHMENTS", kMaxAttachments);
     d += "#define NO_SLICE " + std::to_string(kNoSlice) + "u\n";
     d += defineLine("WEIGHTING_MEDIAN", int(ResolveWeighting::Median));
@@ -27,6 +29,14 @@ const std::string& sharedConstantDefines() {
     d += defineLine("DETECTOR_MATERIAL", int(EdgeDetector::Material));
     d += defineLine("DETECTOR_COVERAGE", int(EdgeDetector::Coverage));
     d += defineLine("DETECTOR_EVERY_PIXEL", int(EdgeDetector::EveryPixel));
+    d += defineLine("DEPTH_BUFFER_PERSPECTIVE", int(DepthBufferEncoding::Perspective));
+    d += defineLine("DEPTH_BUFFER_LOGARITHMIC", int(DepthBufferEncoding::Logarithmic));
+    d += defineLine("DEPTH_BUFFER_REVERSED_PERSPECTIVE", int(DepthBufferEncoding::ReversedPerspective));
+    d += defineLine("DEPTH_BUFFER_REVERSED_INFINITE", int(DepthBufferEncoding::ReversedInfinite));
+    d += defineLine("DEPTH_SOURCE_POSITION_CHANNEL", int(DepthSource::PositionChannel));
+    d += defineLine("DEPTH_SOURCE_DEPTH_BUFFER", int(DepthSource::DepthBuffer));
+    d += defineLine("NORMAL_XYZ", int(NormalEncoding::Xyz));
+    d += defineLine("NORMAL_OCTAHEDRAL", int(NormalEncoding::Octahedral));
     return d;
   }();
   return defines;

@@ -21,7 +21,7 @@ void main() {
     if (isinf(d) || !sampleIsFinite(pixel, s)) { ++background; continue; }
     sum += d;
 #if NORMAL_ATTACHMENT >= 0
-    vec3 n = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).xyz;
+    vec3 n = sampleNormal(pixel, s);
     normalSum += dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
 #endif
   }
@@ -37,7 +37,7 @@ void main() {
     sumFootprints += u;
     sumSquares += u * u;
 #if NORMAL_ATTACHMENT >= 0
-    vec3 n = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).xyz;
+    vec3 n = sampleNormal(pixel, s);
     minCosine = min(minCosine, dot(n, n) > 0.0 ? abs(dot(meanNormal, normalize(n))) : 0.0);
 #endif
   }

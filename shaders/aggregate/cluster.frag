@@ -39,12 +39,8 @@ void main() {
     if (kind[s] != 0) continue;
     vec2 offset = (uSamplePositions[s] - 0.5) * d * uFootprintTan;
     position[s] = vec3(offset, d);
-#if NORMAL_ATTACHMENT >= 0
-    vec3 n = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).xyz;
+    vec3 n = sampleNormal(pixel, s);
     normal[s] = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0, 0.0, 1.0);
-#else
-    normal[s] = vec3(0.0, 0.0, 1.0);
-#endif
     meanPosition += position[s];
     normalSum += normal[s];
     ++geometry;

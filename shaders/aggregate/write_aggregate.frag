@@ -11,6 +11,7 @@ uniform float uGlossBias;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+  limitDepthWriteToSlice(pixel);
   uvec2 assignment = texelFetch(uAssignment, pixel, 0).xy;
   vec4 values[ATTACHMENT_COUNT];
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
@@ -21,7 +22,7 @@ void main() {
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += FETCH(uAttachments[a], pixel, s);
     depthSum += sampleDistance(pixel, s);
 #if NORMAL_ATTACHMENT >= 0
-    vec3 n = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).xyz;
+    vec3 n = sampleNormal(pixel, s);
     normalSum += dot(n, n) > 0.0 ? normalize(n) : vec3(0.0, 0.0, 1.0);  // as the clustering treats it
 #endif
     count += 1.0;
@@ -29,11 +30,15 @@ void main() {
   if (count == 0.0) discard;
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] /= count;
   float meanDepth = depthSum / count;
+  STORE_SLICE_DEPTH(isinf(meanDepth) ? kDepthBufferFar : metresToDepthBuffer(meanDepth));
   if (!isinf(meanDepth)) {  // background aggregates keep their (averaged) marker
+#if DEPTH_SOURCE == DEPTH_SOURCE_POSITION_CHANNEL
     values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = encodeDepth(meanDepth);
+#endif
 #if NORMAL_ATTACHMENT >= 0
     float length = length(normalSum) / count;
-    values[NORMAL_ATTACHMENT].xyz = length > 1e-4 ? normalize(normalSum) : vec3(0.0, 0.0, 1.0);
+    values[NORMAL_ATTACHMENT] =
+        encodeNormal(values[NORMAL_ATTACHMENT], length > 1e-4 ? normalize(normalSum) : vec3(0.0, 0.0, 1.0));
     if (uHasGloss != 0) {
       float exponent = exp2(values[NORMAL_ATTACHMENT].w * uGlossScale + uGlossBias);
       float widened = length * exponent / (length + exponent * (1.0 - length));  // Toksvig 2004

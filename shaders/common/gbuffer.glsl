@@ -1,7 +1,10 @@
 // Access to the plugin's multisampled copy of the host G-buffer. The plugin prepends the layout's
 // #defines (MsaaGBuffer::shaderDefines): SAMPLES, MULTISAMPLED, ATTACHMENT_COUNT, the attachment
-// indices by role, DEPTH_CHANNEL, DEPTH_ENCODING, the outputs out0..outK and STORE_OUTPUTS(values).
+// indices by role, DEPTH_SOURCE, DEPTH_CHANNEL, DEPTH_ENCODING, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING,
+// the outputs out0..outK and STORE_OUTPUTS(values).
 #include "common/depth.glsl"
+#include "common/depth_buffer.glsl"
+#include "common/normal.glsl"
 
 #if MULTISAMPLED
 #define GBUFFER_SAMPLER sampler2DMS
@@ -19,8 +22,31 @@ float distanceOfStored(float stored) {
   float d = decodeDepth(stored);
   return d > 0.0 ? d : 1.0 / 0.0;
 }
+float distanceOfDepthBuffer(float z) {
+  if (depthBufferIsFar(z)) return 1.0 / 0.0;
+  float d = depthBufferToMetres(z);
+  return d > 0.0 ? d : 1.0 / 0.0;
+}
+#if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
+float sampleDistance(ivec2 pixel, int s) { return distanceOfDepthBuffer(FETCH(uDepthBuffer, pixel, s).r); }
+// Whether the host marked sample s as "no geometry" (its own background, left as the host cleared it).
+bool sampleMarkedBackground(ivec2 pixel, int s) { return depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r); }
+#else
 float sampleDistance(ivec2 pixel, int s) {
   return distanceOfStored(FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL]);
+}
+bool sampleMarkedBackground(ivec2 pixel, int s) {
+  return isBackground(FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL]);
+}
+#endif
+
+// Sample s's normal, decoded (NormalEncoding); facing the camera where the layout has none.
+vec3 sampleNormal(ivec2 pixel, int s) {
+#if NORMAL_ATTACHMENT >= 0
+  return decodeNormal(FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s));
+#else
+  return vec3(0.0, 0.0, 1.0);
+#endif
 }
 
 bool sampleIsFinite(ivec2 pixel, int s) {
@@ -29,13 +55,26 @@ bool sampleIsFinite(ivec2 pixel, int s) {
   return all(equal(nonFinite, uvec4(0u)));
 }
 
-#if NORMAL_ATTACHMENT >= 0
 // A sample written for the host's lighting: on geometry, a zero-length normal (which a host that
 // normalises it would turn into NaN) becomes one facing the camera. A background sample is no surface:
 // its values stay as the host cleared them, so the host's lighting treats it as it treats its own
 // background pixels. Everything else is left bit for bit.
-vec4 safeNormal(vec4 normalGloss, vec4 position) {
-  if (isBackground(position[DEPTH_CHANNEL])) return normalGloss;
+vec4 safeNormal(vec4 normalGloss, bool markedBackground) {
+  if (!kNormalCanBeZero || markedBackground) return normalGloss;
   return dot(normalGloss.xyz, normalGloss.xyz) > 0.0 ? normalGloss : vec4(0.0, 0.0, 1.0, normalGloss.w);
 }
+
+// The depth writes of the slices (WRITE_DEPTH: DepthSource::DepthBuffer): a slice's writer runs again
+// into the host's depth texture, limited by the counts to the pixels the slice writes (a count of at
+// least uMinCount; 0: every pixel).
+#ifdef WRITE_DEPTH
+layout(binding = UNIT_SLICE_COUNTS) uniform usampler2D uSliceCountsOfDepth;
+uniform int uMinCount;
+void limitDepthWriteToSlice(ivec2 pixel) {
+  if (uMinCount > 0 && int(texelFetch(uSliceCountsOfDepth, pixel, 0).r) < uMinCount) discard;
+}
+#define STORE_SLICE_DEPTH(value) gl_FragDepth = (value)
+#else
+void limitDepthWriteToSlice(ivec2 pixel) {}
+#define STORE_SLICE_DEPTH(value)
 #endif

@@ -5,38 +5,29 @@
 // edge: their mean offset from the pixel centre points at the other side, and their share f of the
 // pixel is how much of it the other surface covers. One bilinear tap, f texels towards that side,
 // blends (1 − f) of this pixel with f of its neighbour there.
-// The plugin prepends SAMPLES and LOGARITHMIC_DEPTH.
+// The plugin prepends SAMPLES and DEPTH_BUFFER_ENCODING.
+#include "common/depth_buffer.glsl"
 layout(binding = 0) uniform sampler2D uInput;        // the display image (linear filtering)
 layout(binding = 1) uniform sampler2D uPixelDepth;   // the host's single-sample depth buffer
 layout(binding = 2) uniform sampler2DMS uSampleDepth;  // multisampled depth of the same frame
 uniform vec2 uSamplePositions[SAMPLES];
 uniform vec2 uTexelSize;
-uniform float uNear;
-uniform float uFar;
 uniform float uFootprintTan;  // tan(hfov / width)
 uniform float uTolerance;     // c of the Eq. 1 style depth test
 out vec4 outColour;
-
-float toMetres(float z) {
-#if LOGARITHMIC_DEPTH
-  return uNear * exp2(z * log2(uFar / uNear));
-#else
-  return uNear * uFar / (uFar - z * (uFar - uNear));
-#endif
-}
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 centre = texelFetch(uInput, pixel, 0);
   float zPixel = texelFetch(uPixelDepth, pixel, 0).r;
-  bool pixelBackground = zPixel >= 1.0;
-  float dPixel = toMetres(zPixel);
+  bool pixelBackground = depthBufferIsFar(zPixel);
+  float dPixel = depthBufferToMetres(zPixel);
   vec2 offsetSum = vec2(0.0);
   int differing = 0;
   for (int s = 0; s < SAMPLES; ++s) {
     float z = texelFetch(uSampleDepth, pixel, s).r;
-    bool background = z >= 1.0;
-    float d = toMetres(z);
+    bool background = depthBufferIsFar(z);
+    float d = depthBufferToMetres(z);
     bool differs = background != pixelBackground ||
                    (!background && abs(d - dPixel) > min(d, dPixel) * uFootprintTan * uTolerance);
     if (differs) {

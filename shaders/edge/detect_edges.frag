@@ -13,14 +13,6 @@ uniform float uDepthCloseness;   // c of the depth detector
 uniform float uNormalCosine;     // cos(angle) of the normal detector
 layout(location = 0) out uint outCount;
 
-vec3 sampleNormal(ivec2 pixel, int s) {
-#if NORMAL_ATTACHMENT >= 0
-  return FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).xyz;
-#else
-  return vec3(0.0, 0.0, 1.0);
-#endif
-}
-
 bool isEdge(ivec2 pixel) {
 #if EDGE_DETECTOR == DETECTOR_EVERY_PIXEL
   return true;
@@ -44,12 +36,21 @@ bool isEdge(ivec2 pixel) {
 #elif EDGE_DETECTOR == DETECTOR_NORMAL
     if (dot(normalize(sampleNormal(pixel, s)), normalize(n0)) < uNormalCosine) return true;
 #elif EDGE_DETECTOR == DETECTOR_MATERIAL
-    vec4 albedo = FETCH(uAttachments[ALBEDO_ATTACHMENT], pixel, s) - FETCH(uAttachments[ALBEDO_ATTACHMENT], pixel, 0);
-    vec4 specular = FETCH(uAttachments[SPECULAR_ATTACHMENT], pixel, s) - FETCH(uAttachments[SPECULAR_ATTACHMENT], pixel, 0);
-    float gloss = FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).w - FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, 0).w;
-    if (any(greaterThan(abs(albedo), vec4(1.0 / 512.0))) || any(greaterThan(abs(specular), vec4(1.0 / 512.0))) ||
-        abs(gloss) > 1.0 / 512.0)
-      return true;
+    // The material channels the layout has: albedo, specular, and gloss beside an xyz normal.
+    bool differs = false;
+#if ALBEDO_ATTACHMENT >= 0
+    differs = differs || any(greaterThan(abs(FETCH(uAttachments[ALBEDO_ATTACHMENT], pixel, s) -
+                                             FETCH(uAttachments[ALBEDO_ATTACHMENT], pixel, 0)), vec4(1.0 / 512.0)));
+#endif
+#if SPECULAR_ATTACHMENT >= 0
+    differs = differs || any(greaterThan(abs(FETCH(uAttachments[SPECULAR_ATTACHMENT], pixel, s) -
+                                             FETCH(uAttachments[SPECULAR_ATTACHMENT], pixel, 0)), vec4(1.0 / 512.0)));
+#endif
+#if NORMAL_ATTACHMENT >= 0 && NORMAL_ENCODING == NORMAL_XYZ
+    differs = differs || abs(FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).w -
+                             FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, 0).w) > 1.0 / 512.0;
+#endif
+    if (differs) return true;
 #elif EDGE_DETECTOR == DETECTOR_COVERAGE
     // The host's model shader runs once per pixel and primitive; every sample one primitive covers
     // holds its outputs bit for bit. Any difference means a second primitive.

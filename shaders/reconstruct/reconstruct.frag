@@ -9,16 +9,16 @@
 // A sub-sample no neighbour matches (a wire thinner than a pixel that no pixel centre hit) cannot be
 // rebuilt and keeps the pixel's colour. Colours are mixed in linear light (the display holds sRGB-encoded
 // values): averaging the encoded values darkens every blended edge, 0.8 dB of edge PSNR on the demo.
-// The plugin prepends SAMPLES, LOGARITHMIC_DEPTH, HAS_NORMALS, PACKED_SAMPLE_NORMALS and RADIANCE (run
-// on the HDR light target before tonemapping instead of on the display).
+// The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING, HAS_NORMALS, PACKED_SAMPLE_NORMALS
+// and RADIANCE (run on the HDR light target before tonemapping instead of on the display).
+#include "common/depth_buffer.glsl"
+#include "common/normal.glsl"
 layout(binding = 0) uniform sampler2D uInput;           // the display image (or the light target)
 layout(binding = 1) uniform sampler2D uPixelDepth;      // the host's single-sample depth buffer
-layout(binding = 2) uniform sampler2D uPixelNormal;     // the host's single-sample normal (xyz)
+layout(binding = 2) uniform sampler2D uPixelNormal;     // the host's single-sample normal (as encoded)
 layout(binding = 3) uniform sampler2DMS uSampleDepth;   // multisampled depth of the same frame
 layout(binding = 4) uniform sampler2DMS uSampleNormal;  // its normals (xy only when packed)
 uniform vec2 uSamplePositions[SAMPLES];
-uniform float uNear;
-uniform float uFar;
 uniform float uFootprintTan;  // tan(hfov / width)
 uniform float uTolerance;     // c of the Eq. 1 style depth test
 out vec4 outColour;
@@ -39,23 +39,15 @@ struct Geometry {
   bool background;
 };
 
-float toMetres(float z) {
-#if LOGARITHMIC_DEPTH
-  return uNear * exp2(z * log2(uFar / uNear));
-#else
-  return uNear * uFar / (uFar - z * (uFar - uNear));
-#endif
-}
-
 vec3 unitOrFacing(vec3 n) { return dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0); }
 
 Geometry pixelGeometry(ivec2 pixel) {
   float z = texelFetch(uPixelDepth, pixel, 0).r;
   Geometry g;
-  g.background = z >= 1.0;
-  g.depth = toMetres(z);
+  g.background = depthBufferIsFar(z);
+  g.depth = depthBufferToMetres(z);
 #if HAS_NORMALS
-  g.normal = unitOrFacing(texelFetch(uPixelNormal, pixel, 0).xyz);
+  g.normal = unitOrFacing(decodeNormal(texelFetch(uPixelNormal, pixel, 0)));
 #else
   g.normal = vec3(0.0, 0.0, 1.0);
 #endif
@@ -65,9 +57,11 @@ Geometry pixelGeometry(ivec2 pixel) {
 Geometry sampleGeometry(ivec2 pixel, int s) {
   float z = texelFetch(uSampleDepth, pixel, s).r;
   Geometry g;
-  g.background = z >= 1.0;
-  g.depth = toMetres(z);
-#if HAS_NORMALS && PACKED_SAMPLE_NORMALS
+  g.background = depthBufferIsFar(z);
+  g.depth = depthBufferToMetres(z);
+#if HAS_NORMALS && NORMAL_ENCODING == NORMAL_OCTAHEDRAL  // two channels, packed or not
+  g.normal = decodeNormal(vec4(texelFetch(uSampleNormal, pixel, s).xy, 0.0, 0.0));
+#elif HAS_NORMALS && PACKED_SAMPLE_NORMALS
   vec2 xy = texelFetch(uSampleNormal, pixel, s).xy;
   g.normal = unitOrFacing(vec3(xy, sqrt(max(1.0 - dot(xy, xy), 0.0))));
 #elif HAS_NORMALS

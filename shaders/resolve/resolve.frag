@@ -55,6 +55,14 @@ vec4 fetched[SAMPLES][ATTACHMENT_COUNT];
 #else
 #define SAMPLE_VALUE(a, s) FETCH(uAttachments[a], pixel, s)
 #endif
+// A sample's view distance and whether the host marked it as background, from the cached values.
+#if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
+#define SAMPLE_DISTANCE(s) distanceOfDepthBuffer(FETCH(uDepthBuffer, pixel, s).r)
+#define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r)
+#else
+#define SAMPLE_DISTANCE(s) distanceOfStored(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL])
+#define SAMPLE_MARKED_BACKGROUND(s) isBackground(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL])
+#endif
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -73,7 +81,7 @@ void main() {
     uvec4 nonFinite = uvec4(0u);
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) nonFinite |= nonFiniteLanes(SAMPLE_VALUE(a, s));
     usable[s] = all(equal(nonFinite, uvec4(0u)));
-    distance[s] = distanceOfStored(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL]);
+    distance[s] = SAMPLE_DISTANCE(s);
     sortKey[s] = fso && isinf(distance[s]) ? 0.0 : distance[s];
     if (usable[s]) ++usableCount;
   }
@@ -81,9 +89,11 @@ void main() {
   vec4 values[ATTACHMENT_COUNT];
   if (usableCount == 0) {  // every sample corrupt: write an empty background pixel
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
+#if DEPTH_SOURCE == DEPTH_SOURCE_POSITION_CHANNEL
     values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = backgroundStoredDepth();
+#endif
     STORE_OUTPUTS(values);
-    STORE_DEPTH(1.0);
+    STORE_DEPTH(kDepthBufferFar);
     return;
   }
 
@@ -139,11 +149,14 @@ void main() {
   }
 
   if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
+    bool markedBackground = false;
     for (int s = 0; s < SAMPLES; ++s)
-      if (s == lastContributor)
+      if (s == lastContributor) {
         for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = SAMPLE_VALUE(a, s);
+        markedBackground = SAMPLE_MARKED_BACKGROUND(s);
+      }
 #if NORMAL_ATTACHMENT >= 0
-    values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], values[POSITION_ATTACHMENT]);
+    values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], markedBackground);
 #endif
     STORE_OUTPUTS(values);
     STORE_DEPTH(FETCH(uDepthBuffer, pixel, lastContributor).r);
@@ -152,11 +165,15 @@ void main() {
 
   float depthSum = 0.0;
   float depthBufferMean = 0.0, depthBufferMax = 0.0;
+  vec3 normal = vec3(0.0);  // the weighted mean of the decoded normals
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
   for (int s = 0; s < SAMPLES; ++s) {
     float w = weight[s] / weightSum;
     if (w <= 0.0) continue;
     for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += w * SAMPLE_VALUE(a, s);
+#if NORMAL_ATTACHMENT >= 0
+    normal += w * decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
+#endif
     if (!referenceIsBackground) depthSum += w * distance[s];
     float depthBuffer = FETCH(uDepthBuffer, pixel, s).r;
     depthBufferMean += w * depthBuffer;
@@ -164,17 +181,19 @@ void main() {
   }
 
   // Depth is averaged in metres and re-encoded: no encoding but `linear` is linear.
+#if DEPTH_SOURCE == DEPTH_SOURCE_POSITION_CHANNEL
   if (!referenceIsBackground) values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = encodeDepth(depthSum);
+#endif
 #if NORMAL_ATTACHMENT >= 0
-  vec3 normal = values[NORMAL_ATTACHMENT].xyz;
   float len = length(normal);
   if (!(len > 1e-4)) {  // opposing or zero-length normals: fall back to the reference's, then the view
     for (int s = 0; s < SAMPLES; ++s)
-      if (s == reference) normal = SAMPLE_VALUE(NORMAL_ATTACHMENT, s).xyz;
+      if (s == reference) normal = decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
     len = length(normal);
     if (!(len > 1e-4)) normal = vec3(0.0, 0.0, 1.0), len = 1.0;
   }
-  if (!referenceIsBackground) values[NORMAL_ATTACHMENT].xyz = normal / len;
+  // A background pixel keeps its averaged raw values (an octahedral pair averaged as stored).
+  if (!referenceIsBackground) values[NORMAL_ATTACHMENT] = encodeNormal(values[NORMAL_ATTACHMENT], normal / len);
 #endif
   STORE_OUTPUTS(values);
   // FSO writes the weighted mean of the samples' depth-buffer values. Ours write the reference sample's

@@ -8,8 +8,10 @@
 #include "smaa/smaa_common.glsl"
 #if SMAA_EDGE_MODE == 2
 #include "common/depth.glsl"
+#include "common/depth_buffer.glsl"
 #endif
-layout(binding = 0) uniform sampler2D uInput;  // colour, or the host's position attachment (depth mode)
+// Colour; in depth mode the host's position attachment, or its depth texture (DepthSource::DepthBuffer).
+layout(binding = 0) uniform sampler2D uInput;
 out vec2 outEdges;
 
 #define SMAA_LOCAL_CONTRAST_ADAPTATION_FACTOR 2.0
@@ -26,9 +28,14 @@ float contrast(vec3 a, vec3 b) {
 vec3 valueAt(ivec2 p) {
   p = clamp(p, ivec2(0), ivec2(uMetrics.zw) - 1);
 #if SMAA_EDGE_MODE == 2
-  float stored = texelFetch(uInput, p, 0)[DEPTH_CHANNEL];
   // Background counts as very far, so every silhouette against it is a step.
+#if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
+  float z = texelFetch(uInput, p, 0).r;
+  return vec3(depthBufferIsFar(z) ? 1e30 : depthBufferToMetres(z));
+#else
+  float stored = texelFetch(uInput, p, 0)[DEPTH_CHANNEL];
   return vec3(isBackground(stored) ? 1e30 : decodeDepth(stored));
+#endif
 #else
   return perceptual(texelFetch(uInput, p, 0).rgb);
 #endif

@@ -16,8 +16,12 @@ using GLenumValue = unsigned int;
 
 enum class AttachmentRole : uint8_t {
   Albedo,        // rgb albedo; averaged
-  ViewPosition,  // view-space position with depth in channel `depthChannel`, encoded per DepthEncoding
-  NormalGloss,   // xyz view-space normal (renormalised after averaging), w gloss (averaged apart)
+  // Position with view depth in channel `depthChannel`, encoded per DepthEncoding (DepthSource::
+  // PositionChannel); with another depth source, any position (world space too), averaged.
+  ViewPosition,
+  // The surface normal, encoded per GBufferLayout::normalEncoding (xyz, or octahedral in xy) in any one
+  // space; averaged as decoded unit vectors and re-encoded; w gloss with NormalEncoding::Xyz (averaged apart).
+  NormalGloss,
   Specular,      // averaged
   Emissive,      // averaged (the sky lives here for background pixels)
   Other,         // averaged
@@ -48,10 +52,32 @@ struct GlossEncoding {
   float log2ExponentBias = 1.0f;
 };
 
-// How the host's depth buffer maps to view depth d (for the coverage filter).
+// How the host's depth buffer maps to view depth d, with FrameInfo's near and far planes (coverage,
+// reconstruct, and every pass when the depth source is the depth buffer). The value at the far end
+// (1, or 0 for the reversed kinds) marks "no geometry".
 enum class DepthBufferEncoding : uint8_t {
-  Perspective,  // the rasteriser's [0,1] depth of a standard perspective projection (FreeSpace Open)
+  Perspective,  // a standard perspective projection's window depth, near 0, far 1 (FreeSpace Open)
   Logarithmic,  // log2(d / near) / log2(far / near), written by the model shader
+  // Reversed-Z: near 1, far 0, with glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE): n(f − d) / (d(f − n)).
+  ReversedPerspective,
+  ReversedInfinite,  // reversed-Z with the far plane at infinity: n / d (FrameInfo::farPlane unused)
+};
+
+// Where the plugin reads each sample's view depth (closeness tests, edges, clustering, background).
+enum class DepthSource : uint8_t {
+  // Channel `depthChannel` of the ViewPosition attachment, per `depthEncoding`; background is a stored
+  // value at or above `depthEncoding.backgroundAbove` (FSO's compressed z: decoded depth <= 0.001 m).
+  PositionChannel,
+  // The hardware depth buffer, per `depthBufferEncoding` and FrameInfo's planes; background is the far
+  // value. No position attachment is needed; the slices write each sample's depth into the host's
+  // depth texture as well, for a host whose lighting rebuilds positions from it.
+  DepthBuffer,
+};
+
+// How the NormalGloss attachment holds the normal.
+enum class NormalEncoding : uint8_t {
+  Xyz,         // xyz as a vector (normalised or not); w gloss
+  Octahedral,  // xy octahedral (Cigolle et al. 2014) in [-1, 1]; zw left to the host, averaged
 };
 
 struct Attachment {
@@ -64,16 +90,21 @@ struct Attachment {
 struct GBufferLayout {
   int width = 0, height = 0;
   std::vector<Attachment> attachments;  // in draw-buffer order: attachment i is location i
-  int depthChannel = 2;                 // channel of ViewPosition holding encoded depth
+  DepthSource depthSource = DepthSource::PositionChannel;
+  int depthChannel = 2;  // channel of ViewPosition holding encoded depth (DepthSource::PositionChannel)
   DepthEncoding depthEncoding;
+  NormalEncoding normalEncoding = NormalEncoding::Xyz;
   GlossEncoding glossEncoding;
   DepthBufferEncoding depthBufferEncoding = DepthBufferEncoding::Perspective;
   GLuintHandle gbufferFramebuffer = 0;                      // the host's single-sample G-buffer (attachments + depth)
-  GLuintHandle depthStencilTexture = 0;                     // DEPTH24_STENCIL8
+  GLuintHandle depthStencilTexture = 0;                     // any depth or depth-stencil texture format
   uint8_t hostStencilBits = 0x00;                           // stencil bits the host owns; retroaa leaves them alone
-  GLuintHandle lightFramebuffer = 0;                        // where the host's lighting accumulates (RGBA16F)
-  GLuintHandle lightTexture = 0;                            // its colour texture (slices composite into it)
-  GLuintHandle displayFramebuffer = 0, displayTexture = 0;  // tonemapped RGBA8, for post()
+  // Where the host's lighting accumulates, and its colour texture (slices composite into it): any colour
+  // format, e.g. an RGBA16F HDR target, or the host's sRGB display when it lights straight into it.
+  GLuintHandle lightFramebuffer = 0, lightTexture = 0;
+  // The tonemapped display that post() filters (RGBA8 or GL_SRGB8_ALPHA8); needed only by the post
+  // methods (fxaa, smaa, coverage): 0 elsewhere.
+  GLuintHandle displayFramebuffer = 0, displayTexture = 0;
 };
 
 enum class LogLevel : uint8_t { Info, Warning, Error };
@@ -100,7 +131,7 @@ struct FrameInfo {
   // The projection's vertical field of view (what FreeSpace Open passes its MSAA resolve as `fov`).
   // Eq. 1's pixel footprint uses the horizontal one, derived from this and the layout's aspect ratio.
   float verticalFovRadians = 1.0f;
-  float nearPlane = 0.1f, farPlane = 1e6f;  // metres, for DepthBufferEncoding
+  float nearPlane = 0.1f, farPlane = 1e6f;  // metres, for DepthBufferEncoding (and DepthSource::DepthBuffer)
 };
 
 // One plugin pass of a measured frame (Config::measureGpuTime).

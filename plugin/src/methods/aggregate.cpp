@@ -28,11 +28,16 @@ class AggregateTechnique : public Technique {
         {RETROAA_GBUFFER_PASS_UNIFORMS, "uLength", "uThreshold", "uSamplePositions"});
     if (!cluster) return cluster.error();
     t.clusterProgram_ = std::move(cluster.value());
-    auto write = context.shaders->program(
-        "common/fullscreen.vert", "aggregate/write_aggregate.frag", source.shaderDefines(layout),
-        {RETROAA_DEPTH_ENCODING_UNIFORMS, "uSlice", "uHasGloss", "uGlossScale", "uGlossBias"});
-    if (!write) return write.error();
-    t.writeProgram_ = std::move(write.value());
+    for (const bool depth : {false, true}) {  // the G-buffer write, and its depth write where the slices make one
+      if (depth && !shared.slices->writesHostDepth()) continue;
+      auto write = context.shaders->program(
+          "common/fullscreen.vert", "aggregate/write_aggregate.frag",
+          depth ? SliceRenderer::depthWriteDefines(source, layout) : source.shaderDefines(layout),
+          {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSlice", "uHasGloss", "uGlossScale",
+           "uGlossBias"});
+      if (!write) return write.error();
+      (depth ? t.writeDepthProgram_ : t.writeProgram_) = std::move(write.value());
+    }
     auto composite = context.shaders->program("common/fullscreen.vert", "aggregate/composite_coverage.frag", "",
                                               {"uSlice", "uSamples"});
     if (!composite) return composite.error();
@@ -67,13 +72,14 @@ class AggregateTechnique : public Technique {
     plan.firstSliceEverywhere = true;  // aggregate 0 replaces the resolved value of every pixel
     plan.sliceCount = std::min(aggregateCount_, samples_) + 1;  // + background
     plan.writeProgram = &writeProgram_;
-    const GBufferLayout& layout = context.layout;
-    plan.bindWriteInputs = [this, &layout]() {
+    plan.writeDepthProgram = &writeDepthProgram_;
+    plan.bindWriteInputs = [this, &context](const ShaderProgram& program) {
+      const GBufferLayout& layout = context.layout;
       glBindTextureUnit(kUnitSliceWeights, assignment_.get());
-      writeProgram_.setDepthEncoding(layout);
-      writeProgram_.set("uHasGloss", layout.glossEncoding.present ? 1 : 0);
-      writeProgram_.set("uGlossScale", layout.glossEncoding.log2ExponentScale);
-      writeProgram_.set("uGlossBias", layout.glossEncoding.log2ExponentBias);
+      program.setDepthEncoding(context);
+      program.set("uHasGloss", layout.glossEncoding.present ? 1 : 0);
+      program.set("uGlossScale", layout.glossEncoding.log2ExponentScale);
+      program.set("uGlossBias", layout.glossEncoding.log2ExponentBias);
     };
     plan.compositeProgram = &compositeProgram_;
     plan.bindCompositeInputs = [this]() {
@@ -87,7 +93,7 @@ class AggregateTechnique : public Technique {
   bool keepsObjectsFor(const Config& config) const override { return config.aggregateCount == aggregateCount_; }
 
  private:
-  ShaderProgram clusterProgram_, writeProgram_, compositeProgram_;
+  ShaderProgram clusterProgram_, writeProgram_, writeDepthProgram_, compositeProgram_;
   GlTexture assignment_;
   GlFramebuffer clusterTarget_;
   std::vector<float> samplePositions_;

@@ -18,11 +18,10 @@ class CoverageTechnique : public SampleGeometryTechnique {
     auto technique = std::make_unique<CoverageTechnique>();
     if (Status status = technique->createGeometry(context, shared, Method::Coverage, false, "coverage"); !status)
       return status.error();
-    const bool logarithmic = context.layout.depthBufferEncoding == DepthBufferEncoding::Logarithmic;
     auto program = context.shaders->program(
         "common/fullscreen.vert", "coverage/coverage_filter.frag",
-        defineLine("SAMPLES", technique->geometry_.samples) + defineLine("LOGARITHMIC_DEPTH", logarithmic),
-        {"uSamplePositions", "uTexelSize", "uNear", "uFar", "uFootprintTan", "uTolerance"});
+        defineLine("SAMPLES", technique->geometry_.samples) + depthEncodingDefines(context.layout),
+        {"uSamplePositions", "uTexelSize", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -38,8 +37,7 @@ class CoverageTechnique : public SampleGeometryTechnique {
     glBindTextureUnit(2, geometry_.depth);
     program_.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
     program_.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
-    program_.set("uNear", frame.nearPlane);
-    program_.set("uFar", frame.farPlane);
+    program_.setDepthPlanes(context);
     program_.set("uFootprintTan", context.footprintTan(frame));
     program_.set("uTolerance", context.config.coverageTolerance);
     context.drawFullscreen();

@@ -17,10 +17,13 @@ namespace retroaa {
 // position, or be backed by more samples), so the resolve at N = 1 sees exactly what `off` sees.
 // The uniforms MsaaGBuffer::beginPass sets, for the uniform list of a program that reads the G-buffer.
 #define RETROAA_GBUFFER_PASS_UNIFORMS RETROAA_DEPTH_ENCODING_UNIFORMS, "uFootprintTan"
+// The uniform a slice writer's depth variant declares (common/gbuffer.glsl, WRITE_DEPTH).
+#define RETROAA_SLICE_DEPTH_UNIFORMS "uMinCount"
 
 // The index of the layout's first attachment with `role`; -1 where it has none.
 int findRole(const GBufferLayout& layout, AttachmentRole role);
-// The #defines common/depth.glsl needs for the layout's position channel (DEPTH_CHANNEL, DEPTH_ENCODING).
+// The #defines common/depth.glsl, depth_buffer.glsl and normal.glsl need for the layout's depth source and
+// encodings (DEPTH_SOURCE, DEPTH_CHANNEL, DEPTH_ENCODING, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING).
 std::string depthEncodingDefines(const GBufferLayout& layout);
 
 class MsaaGBuffer {
@@ -91,6 +94,12 @@ class SliceRenderer {
   // `target` (0: the plugin's own) must hold the counts at location 0 and this renderer's mask as stencil.
   Status writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport, GLuint target = 0);
   GLuint counts() const { return counts_.get(); }
+  // Whether each slice writes the host's depth texture too (DepthSource::DepthBuffer: the host's
+  // lighting rebuilds positions from it), and the #defines of a slice writer's depth variant.
+  bool writesHostDepth() const { return depthWriter_.get() != 0; }
+  static std::string depthWriteDefines(const MsaaGBuffer& source, const GBufferLayout& layout) {
+    return "#define WRITE_DEPTH 1\n" + source.shaderDefines(layout, false);
+  }
   GLuint mask() const { return mask_.get(); }
   // How a method uses the slices.
   struct Plan {
@@ -103,9 +112,12 @@ class SliceRenderer {
     std::function<Status()> maskAfterFirstSlice;
     int sliceCount = 0;  // most slices a pixel may need (0: the sample count)
     // A technique's own slice writer (null: sample sampleOrder[s] verbatim). It is given uniform
-    // `uSlice` and the G-buffer; `bindWriteInputs` binds and sets what else it reads.
+    // `uSlice` and the G-buffer; `bindWriteInputs` binds and sets on the program what else it reads.
+    // Where the slices write the host's depth (writesHostDepth()), `writeDepthProgram` is the same
+    // shader built with depthWriteDefines(): it writes gl_FragDepth for the pixels of the slice.
     const ShaderProgram* writeProgram = nullptr;
-    std::function<void()> bindWriteInputs;
+    const ShaderProgram* writeDepthProgram = nullptr;
+    std::function<void(const ShaderProgram&)> bindWriteInputs;
     // A technique's own composite weights (null: 1 / count). It is given uniform `uSlice`, the slice's
     // light on unit 0 and the counts on unit 1; `bindCompositeInputs` binds the rest.
     const ShaderProgram* compositeProgram = nullptr;
@@ -129,7 +141,8 @@ class SliceRenderer {
  private:
   GlTexture light_, mask_, counts_;
   GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
-  ShaderProgram writeSlice_, composite_, markPixels_;
+  GlFramebuffer depthWriter_;  // the host's depth texture alone (DepthSource::DepthBuffer), else none
+  ShaderProgram writeSlice_, writeSliceDepth_, composite_, markPixels_;
   int maxCount_ = 1;
   bool lastWriteEverywhere_ = true;
   uint64_t bytes_ = 0;

@@ -65,8 +65,10 @@ std::string fsoFarDefine(const DepthEncoding& encoding) {
 }  // namespace
 
 std::string depthEncodingDefines(const GBufferLayout& layout) {
-  return defineLine("DEPTH_CHANNEL", layout.depthChannel) +
-         defineLine("DEPTH_ENCODING", int(layout.depthEncoding.kind)) + fsoFarDefine(layout.depthEncoding);
+  return defineLine("DEPTH_SOURCE", int(layout.depthSource)) + defineLine("DEPTH_CHANNEL", layout.depthChannel) +
+         defineLine("DEPTH_ENCODING", int(layout.depthEncoding.kind)) + fsoFarDefine(layout.depthEncoding) +
+         defineLine("DEPTH_BUFFER_ENCODING", int(layout.depthBufferEncoding)) +
+         defineLine("NORMAL_ENCODING", int(layout.normalEncoding));
 }
 
 std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOutputs) const {
@@ -94,7 +96,7 @@ void MsaaGBuffer::bind(const GBufferLayout& layout) const {
 void MsaaGBuffer::beginPass(const ShaderProgram& program, const PluginContext& context, const FrameInfo& frame) const {
   program.use();
   bind(context.layout);
-  program.setDepthEncoding(context.layout);
+  program.setDepthEncoding(context);
   program.set("uFootprintTan", context.footprintTan(frame));
 }
 

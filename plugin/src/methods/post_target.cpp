@@ -6,6 +6,10 @@ namespace retroaa {
 Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
   auto target = std::make_unique<PostTarget>();
   const GBufferLayout& layout = context.layout;
+  if (!layout.displayFramebuffer)
+    return Error{ErrorCode::InvalidLayout,
+                 "the post methods (fxaa, smaa, coverage) filter the host's display: the layout names no "
+                 "displayFramebuffer and displayTexture"};
   GLint displayFormat = GL_RGBA8;
   glGetTextureLevelParameteriv(layout.displayTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &displayFormat);
   const bool srgb = displayFormat == GL_SRGB8_ALPHA8;

@@ -30,13 +30,12 @@ class ReconstructTechnique : public SampleGeometryTechnique {
       t.radiance_ = makeTexture(context, GLenum(format), layout.width, layout.height, 0, "reconstruct.radiance",
                                 t.geometry_.bytes);
     }
-    const bool logarithmic = layout.depthBufferEncoding == DepthBufferEncoding::Logarithmic;
     auto program = context.shaders->program(
         "common/fullscreen.vert", "reconstruct/reconstruct.frag",
-        defineLine("SAMPLES", t.geometry_.samples) + defineLine("LOGARITHMIC_DEPTH", logarithmic) +
+        defineLine("SAMPLES", t.geometry_.samples) + depthEncodingDefines(layout) +
             defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
             defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) + defineLine("RADIANCE", t.beforeTonemap_),
-        {"uSamplePositions", "uNear", "uFar", "uFootprintTan", "uTolerance"});
+        {"uSamplePositions", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -79,8 +78,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     glBindTextureUnit(3, geometry_.depth);
     glBindTextureUnit(4, geometry_.normal);
     program_.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
-    program_.set("uNear", frame.nearPlane);
-    program_.set("uFar", frame.farPlane);
+    program_.setDepthPlanes(context);
     program_.set("uFootprintTan", context.footprintTan(frame));
     program_.set("uTolerance", context.config.reconstructTolerance);
     context.drawFullscreen();

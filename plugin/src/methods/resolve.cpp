@@ -77,7 +77,7 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     layoutCheck_.use();
     source.bind(layout);
-    layoutCheck_.setDepthEncoding(layout);
+    layoutCheck_.setDepthEncoding(context);
     for (int mode = 0; mode < 2; ++mode) {
       layoutCheck_.set("uMode", mode);
       glBeginQuery(GL_SAMPLES_PASSED, mode == 0 ? noGeometryQuery_.get() : nonPositiveQuery_.get());
@@ -98,26 +98,47 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
   layoutCheckState_ = LayoutCheck::Done;
   const double pixels = double(context.pixelCount());
   const char* kinds[] = {"Linear", "LogAboveKnee", "FsoCompressedViewZ"};
+  const char* depthBufferKinds[] = {"Perspective", "Logarithmic", "ReversedPerspective", "ReversedInfinite"};
+  const bool fromDepthBuffer = layout.depthSource == DepthSource::DepthBuffer;
   const std::string where =
-      "(GBufferLayout: ViewPosition attachment, depthChannel=" + std::to_string(layout.depthChannel) +
-      ", depthEncoding " + kinds[int(layout.depthEncoding.kind)] + ")";
+      fromDepthBuffer ? std::string("(GBufferLayout: depthSource DepthBuffer, depthBufferEncoding ") +
+                            depthBufferKinds[int(layout.depthBufferEncoding)] + ", FrameInfo near/far planes)"
+                      : "(GBufferLayout: ViewPosition attachment, depthChannel=" + std::to_string(layout.depthChannel) +
+                            ", depthEncoding " + kinds[int(layout.depthEncoding.kind)] + ")";
   auto percent = [&](GLuint64 count) { return std::to_string(int(std::lround(100.0 * double(count) / pixels))); };
   if (double(nonPositive) > 0.005 * pixels)
     context.warn("layout check: " + percent(nonPositive) + "% of pixels hold geometry at view depth <= 0 " + where +
-                 ": is the position world-space, or the depth in another channel? Such samples are treated as "
-                 "background by the resolve and lose their anti-aliasing");
+                 (fromDepthBuffer ? std::string(": is the depth buffer's encoding another (reversed-Z?)")
+                                  : std::string(": is the position world-space, or the depth in another channel?")) +
+                 " Such samples are treated as background by the resolve and lose their anti-aliasing");
+  std::string backgroundRule;
+  if (fromDepthBuffer)
+    backgroundRule = std::string("the far depth-buffer value, ") +
+                     (layout.depthBufferEncoding == DepthBufferEncoding::ReversedPerspective ||
+                              layout.depthBufferEncoding == DepthBufferEncoding::ReversedInfinite
+                          ? "0"
+                          : "1");
+  else if (layout.depthEncoding.kind == DepthEncoding::Kind::FsoCompressedViewZ)
+    backgroundRule = "decoded depth <= 0.001 m";
+  else
+    backgroundRule = "stored >= backgroundAbove = " + std::to_string(int(layout.depthEncoding.backgroundAbove));
   if (double(noGeometry) >= 0.99 * pixels)
     context.warn("layout check: " + percent(noGeometry) + "% of pixels have no sample with geometry " + where +
                  ": if the frame shows geometry, its depth reads as background under that encoding (" +
-                 (layout.depthEncoding.kind == DepthEncoding::Kind::FsoCompressedViewZ
-                      ? std::string("decoded depth <= 0.001 m")
-                      : "stored >= backgroundAbove = " + std::to_string(int(layout.depthEncoding.backgroundAbove))) +
-                 "), or the depth is in another channel");
+                 backgroundRule + ")" + (fromDepthBuffer ? "" : ", or the depth is in another channel"));
 }
 
 Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
                             const SliceRenderer& slices) {
   ScopedPass timed(context, "resolve.restore");
+  if (slices.writesHostDepth()) {  // the slices wrote the host's depth as well: the whole resolve again
+    context.beginFullscreenPass(hostTarget_.get());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    drawResolve(context, program_, source, frame);
+    return Status::ok();
+  }
   // Depth test off: the depth is left as it is. Only where a slice wrote: through the slices' writer
   // (the host's attachments over the count stencil) where count > 1, unless slice 0 wrote everywhere.
   context.beginFullscreenPass(slices.lastWriteEverywhere() ? hostTarget_.get() : slices.writer());

@@ -49,12 +49,25 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
                                    {slices->compositeTarget_.get(), "slices.composite"},
                                    {slices->sliceWriter_.get(), "slices.writer"}})
     if (Status status = checkFramebuffer(fbo, label); !status) return status.error();
+  // A host that rebuilds positions from its depth buffer needs each slice's depth there too: a second
+  // write into its depth texture alone (the writer's own depth-stencil is the count mask).
+  if (layout.depthSource == DepthSource::DepthBuffer) {
+    slices->depthWriter_ = makeFramebuffer(context, "slices.depth_writer");
+    glNamedFramebufferTexture(slices->depthWriter_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
+    glNamedFramebufferDrawBuffer(slices->depthWriter_.get(), GL_NONE);
+    if (Status status = checkFramebuffer(slices->depthWriter_.get(), "slices.depth_writer"); !status)
+      return status.error();
+  }
 
-  auto writeSlice =
-      context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag", source.shaderDefines(layout),
-                               {RETROAA_DEPTH_ENCODING_UNIFORMS, "uSample"});
-  if (!writeSlice) return writeSlice.error();
-  slices->writeSlice_ = std::move(writeSlice.value());
+  for (const bool depth : {false, true}) {
+    if (depth && !slices->writesHostDepth()) continue;
+    auto writeSlice = context.shaders->program(
+        "common/fullscreen.vert", "slices/write_slice.frag",
+        depth ? depthWriteDefines(source, layout) : source.shaderDefines(layout),
+        {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSample"});
+    if (!writeSlice) return writeSlice.error();
+    (depth ? slices->writeSliceDepth_ : slices->writeSlice_) = std::move(writeSlice.value());
+  }
   auto composite = context.shaders->program("common/fullscreen.vert", "slices/composite.frag");
   if (!composite) return composite.error();
   slices->composite_ = std::move(composite.value());
@@ -116,17 +129,20 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
         stencilPassWhereCountAbove(1);
       else
         sliceStencil(slice);
-      if (plan.writeProgram) {
-        plan.writeProgram->use();
+      auto useWriter = [&](const ShaderProgram* own, const ShaderProgram& stock) {
+        const ShaderProgram& program = plan.writeProgram ? *own : stock;
+        program.use();
         source.bind(layout);
-        if (plan.bindWriteInputs) plan.bindWriteInputs();
-        plan.writeProgram->set("uSlice", slice);
-      } else {
-        writeSlice_.use();
-        source.bind(layout);
-        writeSlice_.setDepthEncoding(layout);
-        writeSlice_.set("uSample", sampleOf(slice));
-      }
+        if (plan.writeProgram) {
+          if (plan.bindWriteInputs) plan.bindWriteInputs(program);
+          program.set("uSlice", slice);
+        } else {
+          program.setDepthEncoding(context);
+          program.set("uSample", sampleOf(slice));
+        }
+        return &program;
+      };
+      useWriter(plan.writeProgram, writeSlice_);
       // The write passes exactly where this slice's lighting will run (slice 0 lights every pixel):
       // its occlusion query counts the slice's evaluations, without a pass of its own.
       const bool countOnGpu = slice > 0;
@@ -136,6 +152,17 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
         context.statistics->endEvaluationCount();
       else
         context.statistics->addEvaluations(context.pixelCount());
+      if (writesHostDepth()) {  // the same pixels' depth, selected by the counts instead of the stencil
+        context.beginFullscreenPass(depthWriter_.get());
+        glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
+        glDepthFunc(GL_ALWAYS);
+        glDepthMask(GL_TRUE);
+        const ShaderProgram* program = useWriter(plan.writeDepthProgram, writeSliceDepth_);
+        const int minCount = slice > 0 ? slice + 1 : plan.firstSliceEverywhere ? 0 : 2;
+        program->set("uMinCount", minCount);
+        glBindTextureUnit(kUnitSliceCounts, counts_.get());
+        context.drawFullscreen();
+      }
     }
     // A slice without pixels (every count of the frame at most `slice`) draws nothing: the GPU skips its
     // lighting and composite on its own query's result, without the CPU waiting for it. A slice whose
@@ -162,6 +189,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       ScopedPass timed(context, "slices.composite");
       context.beginFullscreenPass(compositeTarget_.get());
       sliceStencil(slice);  // slice 0 overwrites the whole target, later slices add
+      glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB light target (a display lit directly) adds in linear light
       if (slice > 0) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);

@@ -87,7 +87,7 @@ class SmaaPasses {
     const GBufferLayout& layout = context.layout;
     p.quality_ = context.config.smaaQuality;
     p.detection_ = context.config.smaaEdgeDetection;
-    p.positionAttachment_ = findRole(layout, AttachmentRole::ViewPosition);  // the layout has exactly one
+    p.positionAttachment_ = findRole(layout, AttachmentRole::ViewPosition);
     const std::string name = label;
     p.edges_ = makeTexture(context, GL_RG8, layout.width, layout.height, 0, (name + ".edges").c_str(), p.bytes_);
     p.weights_ = makeTexture(context, GL_RGBA8, layout.width, layout.height, 0, (name + ".weights").c_str(), p.bytes_);
@@ -158,8 +158,10 @@ class SmaaPasses {
       glClearNamedFramebufferfv(edgesTarget_.get(), GL_COLOR, 0, zero);  // pixels without edges discard
       edgesProgram_.use();
       if (detection_ == SmaaEdgeDetection::Depth) {
-        edgesProgram_.setDepthEncoding(layout);
-        glBindTextureUnit(0, layout.attachments[size_t(positionAttachment_)].texture);
+        edgesProgram_.setDepthEncoding(context);
+        glBindTextureUnit(0, layout.depthSource == DepthSource::DepthBuffer
+                                 ? layout.depthStencilTexture
+                                 : layout.attachments[size_t(positionAttachment_)].texture);
       } else {
         glBindTextureUnit(0, input);
       }
