@@ -99,4 +99,27 @@ void checkFramebuffer(GLuint framebuffer, const char* label) {
   throw std::runtime_error(message.str());
 }
 
+GpuMesh uploadMesh(const Mesh& mesh) {
+  GpuMesh gpu;
+  GLuint names[2];
+  glCreateBuffers(2, names);
+  gpu.vertices = Buffer(names[0]);
+  gpu.indices = Buffer(names[1]);
+  glNamedBufferStorage(gpu.vertices, mesh.vertices.size() * sizeof(Vertex), mesh.vertices.data(), 0);
+  glNamedBufferStorage(gpu.indices, mesh.indices.size() * sizeof(uint32_t), mesh.indices.data(), 0);
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  gpu.vertexArray = VertexArray(vao);
+  glVertexArrayVertexBuffer(vao, 0, gpu.vertices, 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vao, gpu.indices);
+  glEnableVertexArrayAttrib(vao, 0);
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
+  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
+  glVertexArrayAttribBinding(vao, 0, 0);
+  glVertexArrayAttribBinding(vao, 1, 0);
+  gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+  return gpu;
+}
+
 }  // namespace host

@@ -2,6 +2,8 @@
 // (The plugin has its own: it must not depend on its host.)
 #pragma once
 
+#include "mesh.h"
+
 #include <epoxy/gl.h>
 
 #include <map>
@@ -73,6 +75,14 @@ class Program {
 };
 
 Texture makeTexture2D(GLenum internalFormat, int width, int height, const char* label);
+
+// A mesh in GPU buffers: positions at attribute 0, normals at 1, indexed triangles.
+struct GpuMesh {
+  VertexArray vertexArray;
+  Buffer vertices, indices;
+  GLsizei indexCount = 0;
+};
+GpuMesh uploadMesh(const Mesh& mesh);
 void checkFramebuffer(GLuint framebuffer, const char* label);  // throws with the status name
 
 }  // namespace host

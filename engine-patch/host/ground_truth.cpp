@@ -1,13 +1,15 @@
 #include "ground_truth.h"
 
+#include "gl_objects.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace host {
 
-GroundTruth renderGroundTruth(Renderer& renderer, const Camera& camera, int samplesPerAxis) {
+GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int samplesPerAxis) {
   const int width = renderer.width(), height = renderer.height();
-  FrameHooks* previousHooks = renderer.hooks();
-  renderer.setHooks(nullptr);
+  renderer.setStockPath(true);
 
   Texture radiance = makeTexture2D(GL_RGBA32F, width, height, "host.ground_truth.radiance");
   Texture moments = makeTexture2D(GL_RGBA32F, width, height, "host.ground_truth.luma_moments");
@@ -23,7 +25,7 @@ GroundTruth renderGroundTruth(Renderer& renderer, const Camera& camera, int samp
   glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
   glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
 
-  Program accumulate("shaders/fullscreen.vert", "shaders/accumulate.frag");
+  Program accumulate("shaders/fullscreen.vert", "shaders/accumulate.frag", renderer.groundTruthDefines());
   GLuint vao = 0;
   glCreateVertexArrays(1, &vao);
   VertexArray emptyVertexArray(vao);
@@ -39,13 +41,13 @@ GroundTruth renderGroundTruth(Renderer& renderer, const Camera& camera, int samp
       glUseProgram(accumulate.get());
       glUniform1f(accumulate.uniform("uWeight"), weight);
       glUniform1f(accumulate.uniform("uExposure"), renderer.exposure());
-      glBindTextureUnit(0, renderer.targets().lightTexture);
+      glBindTextureUnit(0, renderer.radianceTexture());
       glBindVertexArray(emptyVertexArray);
       glDrawArrays(GL_TRIANGLES, 0, 3);
       glDisable(GL_BLEND);
     }
 
-  renderer.tonemap(radiance);
+  renderer.present(radiance);
   GroundTruth truth;
   truth.width = width;
   truth.height = height;
@@ -66,7 +68,7 @@ GroundTruth renderGroundTruth(Renderer& renderer, const Camera& camera, int samp
     }
   }
   truth.radiance = std::move(flipped);
-  renderer.setHooks(previousHooks);
+  renderer.setStockPath(false);
   return truth;
 }
 

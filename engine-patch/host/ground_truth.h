@@ -8,7 +8,7 @@
 // curvature, which is why the choice is fixed here once.)
 #pragma once
 
-#include "renderer.h"
+#include "engine.h"
 
 #include <cstdint>
 #include <vector>
@@ -22,7 +22,8 @@ struct GroundTruth {
   std::vector<float> lumaStdDev;   // per pixel: std. deviation of the supersamples' display luma
 };
 
-// Renders with the stock hooks whatever hooks the renderer has; restores them afterwards.
-GroundTruth renderGroundTruth(Renderer& renderer, const Camera& camera, int samplesPerAxis);
+// Renders with the host's stock path (the caller takes its AA hooks off first, or the ground truth
+// holds the AA's images).
+GroundTruth renderGroundTruth(Engine& engine, const Camera& camera, int samplesPerAxis);
 
 }  // namespace host

@@ -37,11 +37,11 @@ Renderer::Renderer(const Scene& scene, int width, int height)
       pointProgram_("shaders/light_volume.vert", "shaders/light_point.frag", positionDepthDefines(scene)),
       emissiveProgram_("shaders/fullscreen.vert", "shaders/emissive.frag", positionDepthDefines(scene)),
       tonemapProgram_("shaders/fullscreen.vert", "shaders/tonemap.frag") {
-  for (const Object& object : scene_.objects) meshes_.push_back(upload(object.mesh));
+  for (const Object& object : scene_.objects) meshes_.push_back(uploadMesh(object.mesh));
   // Light volumes must contain their sphere: a 16-segment sphere's faces sit inside radius 1, so
   // the volume is scaled up by 1/cos(pi/16)^2 when drawn.
-  sphereVolume_ = upload(generate::sphere(1.0f, 3));
-  boxVolume_ = upload(generate::box(glm::vec3(2.0f)));
+  sphereVolume_ = uploadMesh(generate::sphere(1.0f, 3));
+  boxVolume_ = uploadMesh(generate::box(glm::vec3(2.0f)));
   GLuint vao = 0;
   glCreateVertexArrays(1, &vao);
   emptyVertexArray_ = VertexArray(vao);
@@ -49,29 +49,6 @@ Renderer::Renderer(const Scene& scene, int width, int height)
 }
 
 Renderer::~Renderer() = default;
-
-Renderer::GpuMesh Renderer::upload(const Mesh& mesh) const {
-  GpuMesh gpu;
-  GLuint names[2];
-  glCreateBuffers(2, names);
-  gpu.vertices = Buffer(names[0]);
-  gpu.indices = Buffer(names[1]);
-  glNamedBufferStorage(gpu.vertices, mesh.vertices.size() * sizeof(Vertex), mesh.vertices.data(), 0);
-  glNamedBufferStorage(gpu.indices, mesh.indices.size() * sizeof(uint32_t), mesh.indices.data(), 0);
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  gpu.vertexArray = VertexArray(vao);
-  glVertexArrayVertexBuffer(vao, 0, gpu.vertices, 0, sizeof(Vertex));
-  glVertexArrayElementBuffer(vao, gpu.indices);
-  glEnableVertexArrayAttrib(vao, 0);
-  glEnableVertexArrayAttrib(vao, 1);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
-  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
-  glVertexArrayAttribBinding(vao, 0, 0);
-  glVertexArrayAttribBinding(vao, 1, 0);
-  gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
-  return gpu;
-}
 
 void Renderer::createTargets(int width, int height) {
   // opengl_setup_scene_textures(): FSO's attachments and formats.
@@ -133,6 +110,13 @@ void Renderer::resize(int width, int height) {
 void Renderer::setHooks(FrameHooks* hooks) {
   hooks_ = hooks ? hooks : &stockHooks_;
   hooks_->targetsCreated(targets_);
+}
+
+void Renderer::setStockPath(bool stock) {
+  if (stock == (suspendedHooks_ != nullptr)) return;
+  FrameHooks* installed = stock ? hooks_ : suspendedHooks_;
+  suspendedHooks_ = stock ? hooks_ : nullptr;
+  setHooks(stock ? nullptr : installed);
 }
 
 void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {

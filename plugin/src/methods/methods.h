@@ -142,7 +142,10 @@ class SliceRenderer {
   GlTexture light_, mask_, counts_;
   GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
   GlFramebuffer depthWriter_;  // the host's depth texture alone (DepthSource::DepthBuffer), else none
-  ShaderProgram writeSlice_, writeSliceDepth_, composite_, markPixels_;
+  // Where the host's light target has 8 bits per channel: the slices' half-float sum and its copy there.
+  GlTexture accumulation_;
+  GlFramebuffer presentTarget_;
+  ShaderProgram writeSlice_, writeSliceDepth_, composite_, markPixels_, presentLight_;
   int maxCount_ = 1;
   bool lastWriteEverywhere_ = true;
   uint64_t bytes_ = 0;

@@ -32,8 +32,23 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
   slices->lightTarget_ = makeFramebuffer(context, "slices.light");
   glNamedFramebufferTexture(slices->lightTarget_.get(), GL_COLOR_ATTACHMENT0, slices->light_.get(), 0);
   glNamedFramebufferTexture(slices->lightTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
+  // Slices composite into the host's light target where it holds floats; into a half-float sum of the
+  // plugin's otherwise, copied into the host's target once all slices are in (presentLight).
+  GLint redType = GL_FLOAT;
+  glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
+  if (redType != GL_FLOAT) {
+    slices->accumulation_ = makeTexture(context, GL_RGBA16F, w, h, 0, "slices.accumulation", slices->bytes_);
+    slices->presentTarget_ = makeFramebuffer(context, "slices.present");
+    glNamedFramebufferTexture(slices->presentTarget_.get(), GL_COLOR_ATTACHMENT0, layout.lightTexture, 0);
+    if (Status status = checkFramebuffer(slices->presentTarget_.get(), "slices.present"); !status)
+      return status.error();
+    auto present = context.shaders->program("common/fullscreen.vert", "slices/present_light.frag");
+    if (!present) return present.error();
+    slices->presentLight_ = std::move(present.value());
+  }
   slices->compositeTarget_ = makeFramebuffer(context, "slices.composite");
-  glNamedFramebufferTexture(slices->compositeTarget_.get(), GL_COLOR_ATTACHMENT0, layout.lightTexture, 0);
+  glNamedFramebufferTexture(slices->compositeTarget_.get(), GL_COLOR_ATTACHMENT0,
+                            slices->accumulation_ ? slices->accumulation_.get() : layout.lightTexture, 0);
   glNamedFramebufferTexture(slices->compositeTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
   slices->sliceWriter_ = makeFramebuffer(context, "slices.writer");
   std::vector<GLenum> drawBuffers;
@@ -206,6 +221,14 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       context.drawFullscreen();
     }
     if (skippable) glEndConditionalRender();
+  }
+  if (accumulation_) {
+    ScopedPass timed(context, "slices.present");
+    context.beginFullscreenPass(presentTarget_.get());
+    glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB target encodes the linear sum
+    presentLight_.use();
+    glBindTextureUnit(0, accumulation_.get());
+    context.drawFullscreen();
   }
   return Status::ok();
 }

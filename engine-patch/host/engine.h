@@ -1,0 +1,55 @@
+// What the tools need of a host engine, whichever host it is: render a frame, read what it displays
+// and the linear radiance behind it. renderer.h is the FreeSpace Open-shaped host, second_renderer.h
+// a deferred renderer shaped unlike it; each has its own seams for an AA module (frame_hooks.h,
+// SecondSeams) and its own patch in engine-patch/patch/.
+#pragma once
+
+#include "scene.h"
+
+#include <epoxy/gl.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace host {
+
+// GPU time of the host's passes for the last frame (timer queries), in milliseconds.
+struct HostTimings {
+  double modelPassMs = 0;       // the host's own geometry: sky and models into the model-pass target
+  double afterModelPassMs = 0;  // the hooks after it: the plugin's resolve, a prepass of the models
+  double lightingMs = 0, tonemapMs = 0, frameMs = 0;
+};
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+  virtual void resize(int width, int height) = 0;
+  // Renders one frame into the display target; `jitterPixels` shifts the image (ground truth).
+  virtual void renderFrame(const Camera& camera, glm::vec2 jitterPixels = glm::vec2(0)) = 0;
+  virtual int width() const = 0;
+  virtual int height() const = 0;
+  virtual const Scene& scene() const = 0;
+  virtual GLuint displayFramebuffer() const = 0;
+  // The display as top-down RGBA8 (sRGB-encoded values), and the frame's linear radiance as top-down
+  // RGBA32F: what the ground truth averages.
+  virtual std::vector<uint8_t> readDisplay() const = 0;
+  virtual std::vector<float> readLight() const = 0;
+  // For the ground truth (ground_truth.h): the texture that reads as the frame's linear radiance; how the
+  // display encodes a radiance (accumulate.frag's #defines: none for FSO's tonemap at exposure(),
+  // DISPLAY_CLAMP for radiance clamped to [0, 1]); and the pass that shows an averaged radiance.
+  virtual GLuint radianceTexture() const = 0;
+  virtual std::string groundTruthDefines() const = 0;
+  virtual float exposure() const = 0;
+  virtual void present(GLuint radianceTexture) = 0;
+  // While true, frames take the host's stock path, whatever AA seams are installed (the ground truth).
+  virtual void setStockPath(bool stock) = 0;
+
+  bool measureTime = false;  // timer queries around each pass (waits for the GPU)
+  const HostTimings& timings() const { return timings_; }
+
+ protected:
+  HostTimings timings_;
+};
+
+}  // namespace host

@@ -1,0 +1,86 @@
+// A second host, deliberately unlike the FreeSpace Open-shaped one (renderer.h), to prove retroaa in a
+// deferred renderer it was not written beside: no position target (positions are rebuilt from the
+// depth buffer and the projection), world-space normals octahedrally encoded in an RG16F target,
+// albedo + specular intensity in one RGBA8 target, a GL_DEPTH_COMPONENT32F depth buffer with reversed-Z
+// (glClipControl zero-to-one, cleared to 0, GL_GREATER), background marked by far depth only, lighting
+// as one full-screen pass plus additive light volumes straight into its sRGB display (radiance clamped,
+// no tonemap), then a forward pass: emissive objects drawn after lighting, depth-tested against the
+// scene. It knows nothing of retroaa; engine-patch/patch/second_host_patch.cpp is the only code that does.
+#pragma once
+
+#include "engine.h"
+#include "frame_hooks.h"
+#include "gl_objects.h"
+#include "scene.h"
+
+#include <functional>
+
+namespace host {
+
+struct SecondTargets {
+  int width = 0, height = 0;
+  GLuint gbufferFramebuffer = 0;          // normal (location 0) + albedoSpecular (location 1) + depth
+  GLuint normal = 0, albedoSpecular = 0;  // RG16F octahedral world normal; RGBA8 albedo, specular in a
+  GLuint depth = 0;                       // GL_DEPTH_COMPONENT32F, reversed-Z
+  GLuint displayFramebuffer = 0, display = 0;  // GL_SRGB8_ALPHA8 + the same depth (forward pass)
+};
+
+// Where an AA module may step in. The stock implementation is the host's own single-sample path.
+class SecondSeams {
+ public:
+  virtual ~SecondSeams() = default;
+  virtual void targetsCreated(const SecondTargets&) {}
+  // The framebuffer the geometry pass clears and draws into (same draw buffers as the host's own).
+  virtual GLuint geometryTarget(GLuint own) { return own; }
+  virtual void geometryDone(const FrameView&) {}
+  // After the geometry pass: an AA module that wants the geometry drawn once more (a multisampled depth
+  // and normal prepass) gets `draw`, which clears the framebuffer it is given and draws into it.
+  virtual void geometryAgain(const std::function<void(GLuint target)>&) {}
+  // Runs the host's lighting (`pass`, rendering into the framebuffer it is given; it clears colour).
+  virtual void lighting(const std::function<void(GLuint target)>& pass, GLuint own) { pass(own); }
+  virtual void frameDone() {}  // after the forward pass, on the display
+};
+
+class SecondRenderer : public Engine {
+ public:
+  SecondRenderer(const Scene& scene, int width, int height);
+  ~SecondRenderer() override;
+
+  void setSeams(SecondSeams* seams);  // nullptr: the stock path
+  const SecondTargets& targets() const { return targets_; }
+  // The projection: reversed-Z, zero-to-one depth, jittered by `jitterPixels`.
+  glm::mat4 projection(const Camera& camera, glm::vec2 jitterPixels = glm::vec2(0)) const;
+
+  void resize(int width, int height) override;
+  void renderFrame(const Camera& camera, glm::vec2 jitterPixels = glm::vec2(0)) override;
+  int width() const override { return targets_.width; }
+  int height() const override { return targets_.height; }
+  const Scene& scene() const override { return scene_; }
+  GLuint displayFramebuffer() const override { return targets_.displayFramebuffer; }
+  std::vector<uint8_t> readDisplay() const override;
+  std::vector<float> readLight() const override;
+  GLuint radianceTexture() const override { return targets_.display; }  // an sRGB texture reads as linear
+  std::string groundTruthDefines() const override { return "#define DISPLAY_CLAMP 1\n"; }
+  float exposure() const override { return 1.0f; }  // applied in the lighting
+  void present(GLuint radiance) override;
+  void setStockPath(bool stock) override;
+
+ private:
+  void createTargets(int width, int height);
+  void drawObjects(const Program& program, const glm::mat4& viewProjection, bool emissive) const;
+  void lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection);
+
+  const Scene& scene_;
+  SecondSeams stockSeams_;
+  SecondSeams* seams_ = &stockSeams_;
+  SecondSeams* suspendedSeams_ = nullptr;
+  SecondTargets targets_;
+  Texture normal_, albedoSpecular_, depth_, display_;
+  Framebuffer gbufferFramebuffer_, displayFramebuffer_;
+  Program geometryProgram_, sunProgram_, pointProgram_, forwardProgram_, presentProgram_;
+  std::vector<GpuMesh> meshes_;
+  GpuMesh sphere_;
+  VertexArray emptyVertexArray_;
+};
+
+}  // namespace host

@@ -1,0 +1,12 @@
+#version 450 core
+// The second host's objects: world-space normals, one model-view-projection per draw.
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+uniform mat4 uModel;
+uniform mat4 uViewProjection;
+uniform mat3 uNormalToWorld;
+out vec3 vWorldNormal;
+void main() {
+  vWorldNormal = uNormalToWorld * inNormal;
+  gl_Position = uViewProjection * (uModel * vec4(inPosition, 1.0));
+}

@@ -1,0 +1,156 @@
+// Every method in the second host (engine-patch/host/second_renderer.h), a deferred renderer shaped
+// unlike FreeSpace Open: no position target (depth buffer, reversed-Z D32F), octahedral world normals,
+// lighting straight into an sRGB display, a forward pass after lighting. Each method must run without a
+// GL error, leave the background as the host drew it, anti-alias silhouettes at least as well as `off`
+// when it is a multi-sample method, and leave the host's G-buffer holding the resolved surface.
+#include "second_host_patch.h"
+#include "commands.h"
+#include "image_io.h"
+#include "test_support.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+using namespace testing_support;
+
+namespace {
+
+constexpr int kWidth = 192, kHeight = 144;
+
+struct SecondHost {
+  host::Scene scene = host::loadScene("default");
+  std::unique_ptr<host::SecondRenderer> renderer;
+  std::unique_ptr<patch::SecondHostHooks> hooks;
+
+  SecondHost() {
+    context();
+    renderer = std::make_unique<host::SecondRenderer>(scene, kWidth, kHeight);
+    auto created = patch::SecondHostHooks::create(renderer->targets(), retroaa::Config{});
+    if (!created) throw std::runtime_error(created.error().message);
+    hooks = std::move(created.value());
+    renderer->setSeams(hooks.get());
+  }
+  app::DisplayImage render(const std::string& spec) {
+    const retroaa::Status status = hooks->plugin().reconfigure(app::parseMethodSpec(spec, {}).config);
+    if (!status) throw std::runtime_error(status.error().message);
+    renderer->renderFrame(scene.camera);
+    return app::DisplayImage::fromRgba8(kWidth, kHeight, renderer->readDisplay());
+  }
+  // The host's G-buffer and depth as floats (GL rows): normal RG, albedo+specular RGBA, depth.
+  std::vector<float> gbuffer() const {
+    const host::SecondTargets& t = renderer->targets();
+    std::vector<float> all, part(size_t(kWidth) * kHeight * 4);
+    for (GLuint texture : {t.normal, t.albedoSpecular}) {
+      glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(part.size() * 4), part.data());
+      all.insert(all.end(), part.begin(), part.end());
+    }
+    std::vector<float> depth(size_t(kWidth) * kHeight);
+    glGetTextureImage(t.depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
+    all.insert(all.end(), depth.begin(), depth.end());
+    return all;
+  }
+  std::vector<float> depth() const {
+    const std::vector<float> all = gbuffer();
+    return {all.end() - kWidth * kHeight, all.end()};
+  }
+};
+
+// Pixels (top-down, as DisplayImage) where no geometry is: the depth stays far at every position of an
+// 8×8 grid over the pixel and over its eight neighbours (no filter's first ring reaches geometry).
+std::vector<bool> openBackground(SecondHost& host) {
+  std::vector<bool> empty(size_t(kWidth) * kHeight, true);
+  host.hooks->plugin().reconfigure(app::parseMethodSpec("off", {}).config);
+  for (int sy = 0; sy < 8; ++sy)
+    for (int sx = 0; sx < 8; ++sx) {
+      host.renderer->renderFrame(host.scene.camera, glm::vec2((sx + 0.5f) / 8 - 0.5f, (sy + 0.5f) / 8 - 0.5f));
+      const std::vector<float> depth = host.depth();
+      for (size_t i = 0; i < empty.size(); ++i) empty[i] = empty[i] && depth[i] <= 0.0f;
+    }
+  std::vector<bool> open(size_t(kWidth) * kHeight, false);
+  for (int y = 1; y + 1 < kHeight; ++y)
+    for (int x = 1; x + 1 < kWidth; ++x) {
+      bool all = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) all = all && empty[size_t(y + dy) * kWidth + x + dx];
+      open[size_t(kHeight - 1 - y) * kWidth + x] = all;  // GL rows run bottom-up
+    }
+  return open;
+}
+
+// RETROAA_SECOND_HOST_IMAGES=folder keeps each method's image, to look at.
+void writeImageIfAsked(const std::string& name, const std::vector<uint8_t>& rgba) {
+  if (const char* folder = std::getenv("RETROAA_SECOND_HOST_IMAGES"))
+    app::writeImage8(std::string(folder) + "/" + name + ".png", kWidth, kHeight, rgba, {});
+}
+
+void checkMethod(const std::string& spec) {
+  SecondHost host;
+  const std::vector<bool> open = openBackground(host);
+  const int errorsBefore = context().debugErrorCount();
+  const app::DisplayImage off = host.render("off");
+  const std::vector<float> offGBuffer = host.gbuffer();
+  const app::DisplayImage image = host.render(spec);
+  const std::vector<float> gbuffer = host.gbuffer();
+  writeImageIfAsked(spec, host.renderer->readDisplay());
+  EXPECT_EQ(host.hooks->lastError(), "");
+  EXPECT_EQ(context().debugErrorCount(), errorsBefore) << spec << " raised GL errors";
+  for (float value : gbuffer) ASSERT_TRUE(std::isfinite(value)) << spec << ": the host's G-buffer holds " << value;
+
+  // The background is the host's own: no relit sky, no halo.
+  size_t openPixels = 0, changed = 0;
+  for (size_t i = 0; i < open.size(); ++i) {
+    if (!open[i]) continue;
+    ++openPixels;
+    for (int c = 0; c < 3; ++c) changed += image.rgb[i * 3 + c] != off.rgb[i * 3 + c];
+  }
+  EXPECT_GT(openPixels, size_t(kWidth * kHeight / 10)) << "the scene should show open sky";
+  EXPECT_EQ(changed, 0u) << spec << " changed background pixels";
+
+  const retroaa::Config granted = host.hooks->plugin().config();
+  const retroaa::MethodInfo* method = retroaa::findMethod(granted.method);
+  if (host.hooks->plugin().multisampledAttachment(retroaa::AttachmentRole::Albedo) != 0) {
+    // The host's G-buffer after shade() is the resolved surface: what `resolve` leaves there.
+    host.render("resolve");
+    EXPECT_EQ(host.gbuffer(), gbuffer) << spec << " left the host's G-buffer unlike resolve's";
+  } else {
+    EXPECT_EQ(offGBuffer, gbuffer) << spec << " changed the host's G-buffer";
+
+  }
+
+  host.hooks->plugin().reconfigure(app::parseMethodSpec("off", {}).config);
+  host.renderer->setStockPath(true);
+  const host::GroundTruth truth = host::renderGroundTruth(*host.renderer, host.scene.camera, 4);
+  host.renderer->setStockPath(false);
+  const ScoringTruth scoring{app::DisplayImage::fromRgba8(truth.width, truth.height, truth.display),
+                             app::edgeMaskFromSpread(truth.lumaStdDev)};
+  const app::ErrorMetrics offError = scoring.score(off), methodError = scoring.score(image);
+  std::printf("%s: edge PSNR %.2f dB (off %.2f dB), interior %.2f dB (off %.2f dB)\n", spec.c_str(),
+              methodError.edgePsnrDb, offError.edgePsnrDb, methodError.interiorPsnrDb, offError.interiorPsnrDb);
+  if (method->multisampled && granted.samples > 1)
+    EXPECT_GE(methodError.edgePsnrDb, offError.edgePsnrDb) << spec << " anti-aliases worse than off";
+}
+
+}  // namespace
+
+// One test per method: the matrix below must name every method the plugin has.
+#define SECOND_HOST_METHOD(Name, spec) \
+  TEST(SecondHost, Name##KeepsTheBackgroundAndTheResolvedGBufferAndBeatsOffOnEdges) { checkMethod(spec); }
+SECOND_HOST_METHOD(Off, "off")
+SECOND_HOST_METHOD(Fxaa, "fxaa")
+SECOND_HOST_METHOD(Resolve, "resolve")
+SECOND_HOST_METHOD(Edge, "edge")
+SECOND_HOST_METHOD(PerSample, "per-sample")
+SECOND_HOST_METHOD(Adaptive, "adaptive")
+SECOND_HOST_METHOD(Aggregate, "aggregate")
+SECOND_HOST_METHOD(Coverage, "coverage")
+SECOND_HOST_METHOD(Reconstruct, "reconstruct")
+SECOND_HOST_METHOD(Smaa, "smaa")
+SECOND_HOST_METHOD(SmaaS2x, "smaa-s2x")
+const std::set<std::string> kMatrix = {"off",      "fxaa",     "resolve",     "edge", "per-sample", "adaptive",
+                                       "aggregate", "coverage", "reconstruct", "smaa", "smaa-s2x"};
+
+TEST(SecondHost, TheMatrixNamesEveryMethod) {
+  for (const retroaa::MethodInfo& row : retroaa::methodTable())
+    EXPECT_TRUE(kMatrix.count(row.name)) << row.name << " has no SecondHost test";
+}
