@@ -127,7 +127,7 @@ std::vector<MethodSpec> parseMethodList(const std::string& list, const retroaa::
 
 int runRender(const RenderOptions& options) {
   host::HeadlessContext context;
-  Session session(options.scene, options.width, options.height, context.info().summary());
+  Session session(options.scene, options.width, options.height, context.info().summary(), options.host);
   const host::Camera camera = session.camera(options.frame);
   const std::string ext = lowerExtension(options.out);
   if (ext != ".png" && ext != ".exr")
@@ -285,7 +285,7 @@ int runBench(const BenchOptions& options) {
   const std::vector<MethodSpec> specs = parseMethodList(options.methods, options.base);
 
   host::HeadlessContext context;
-  Session session(options.scene, options.width, options.height, context.info().summary());
+  Session session(options.scene, options.width, options.height, context.info().summary(), options.host);
   const host::Camera camera = session.camera(options.frame);
   const int w = options.width, h = options.height;
   std::fprintf(stderr, "bench: %s, %dx%d, %zu triangles, %zu lights; ground truth %dx%d per pixel...\n",
@@ -426,8 +426,8 @@ int runSoak(const SoakOptions& options) {
       "MiB (growth %.1f, bound %.0f)\n",
       objectsAtStart, objectsAtEnd, glErrors, residentAfterWarmUp, residentPeak, growth, options.maxGrowthMiB);
   const bool ok = objectsAtEnd == objectsAtStart && glErrors == 0 && growth <= options.maxGrowthMiB &&
-                  session.hooks->lastError().empty();
-  if (!session.hooks->lastError().empty()) std::printf("soak: plugin error: %s\n", session.hooks->lastError().c_str());
+                  session.lastError().empty();
+  if (!session.lastError().empty()) std::printf("soak: plugin error: %s\n", session.lastError().c_str());
   std::printf("soak: %s\n", ok ? "passed" : "FAILED");
   return ok ? kExitOk : kExitCheckFailed;
 }

@@ -31,6 +31,7 @@ std::vector<MethodSpec> parseMethodList(const std::string& list, const retroaa::
 
 struct RenderOptions {
   std::string scene = "default";
+  std::string host = "fso";  // the host engine (Session's kHostNames)
   std::string method;    // a MethodSpec, "ground-truth", or empty: the config's own method
   retroaa::Config base;  // from --config / --set / FSO flags
   int width = 320, height = 240;
@@ -50,6 +51,7 @@ int runRender(const RenderOptions& options);
 
 struct BenchOptions {
   std::string scene = "default";
+  std::string host = "fso";
   std::string methods = "all";
   retroaa::Config base;
   int width = 320, height = 240;

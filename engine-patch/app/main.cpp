@@ -76,6 +76,8 @@ const char* kMethodsHelp = "comma-separated method specs; 'all' (every method an
 void addRender(CommandLine& line) {
   auto options = std::make_shared<app::RenderOptions>();
   CLI::App* sub = line.cli.add_subcommand("render", "render one frame headless");
+  sub->add_option("--host", options->host, "host engine: fso (FreeSpace Open-shaped) or second (docs/integration.md)")
+      ->check(CLI::IsMember({"fso", "second"}));
   sub->add_option("--scene", options->scene, "scene file, or 'default'");
   sub->add_option("--method", options->method,
                   "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
@@ -97,6 +99,8 @@ void addRender(CommandLine& line) {
 void addBench(CommandLine& line) {
   auto options = std::make_shared<app::BenchOptions>();
   CLI::App* sub = line.cli.add_subcommand("bench", "every method on one frame: speed against error");
+  sub->add_option("--host", options->host, "host engine: fso (FreeSpace Open-shaped) or second (docs/integration.md)")
+      ->check(CLI::IsMember({"fso", "second"}));
   sub->add_option("--scene", options->scene, "scene file, or 'default'");
   sub->add_option("--methods", options->methods, kMethodsHelp);
   line.addSizeOptions(sub, options->width, options->height);
@@ -139,6 +143,8 @@ void addRegress(CommandLine& line) {
   auto options = std::make_shared<app::RegressOptions>();
   CLI::App* sub =
       line.cli.add_subcommand("regress", "every frame of recorded demo scenes with every method: report and goldens");
+  sub->add_option("--host", options->host, "host engine: fso (FreeSpace Open-shaped) or second (docs/integration.md)")
+      ->check(CLI::IsMember({"fso", "second"}));
   sub->add_option("scenes", options->scenes, "scene files (default: the five recorded scenes)");
   sub->add_option("--methods", options->methods, kMethodsHelp);
   line.addSizeOptions(sub, options->width, options->height);

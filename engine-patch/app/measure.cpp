@@ -37,7 +37,7 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
 }
 
 double measureWallMs(Session& session, const host::Camera& camera, int frames) {
-  host::Renderer& renderer = *session.renderer;
+  host::Engine& renderer = *session.renderer;
   retroaa::Config quiet = session.config;
   quiet.measureGpuTime = false;
   const std::string method = session.method;
@@ -134,7 +134,7 @@ double measureShadingFloor(Session& session, const host::Camera& camera) {
 
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
                     int warmUpFrames, int wallFrames) {
-  host::Renderer& renderer = *session.renderer;
+  host::Engine& renderer = *session.renderer;
   Measurement m;
   if (wallFrames > 0) m.wallMs = measureWallMs(session, camera, wallFrames);
   retroaa::Config measured = session.config;

@@ -351,7 +351,8 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
   const fs::path goldenDirectory = options.goldenDirectory.empty() ? fs::path(RETROAA_INTEGRATION_TESTS_DIR) / "golden"
                                                                    : fs::path(options.goldenDirectory);
   for (const auto& scene : report["scenes"]) {
-    const fs::path goldenFile = goldenDirectory / (fileSafe(scene["scene"]) + ".json");
+    const fs::path goldenFile =
+        goldenDirectory / (fileSafe(scene["scene"]) + (options.host == "fso" ? "" : "." + options.host) + ".json");
     const json settings = {{"width", options.width},
                            {"height", options.height},
                            {"ground_truth_samples_per_axis", options.groundTruthSamples},
@@ -412,6 +413,7 @@ int runRegress(const RegressOptions& options) {
   fs::create_directories(options.out);
   json report = {
       {"renderer", context.info().summary()},
+      {"host", options.host},
       {"width", options.width},
       {"height", options.height},
       {"ground_truth_samples_per_pixel", options.groundTruthSamples * options.groundTruthSamples},
@@ -419,7 +421,7 @@ int runRegress(const RegressOptions& options) {
       {"flicker", "mean over frames t of the RMS over pixels of (error_t - error_(t-1)), error = image - ground truth"},
       {"scenes", json::array()}};
   for (size_t si = 0; si < scenes.size(); ++si) {
-    Session session(scenes[si], options.width, options.height, context.info().summary());
+    Session session(scenes[si], options.width, options.height, context.info().summary(), options.host);
     report["scenes"].push_back(regressScene(session, scenes[si], frames[si], specs, options, progress));
   }
   std::ofstream(fs::path(options.out) / "report.json") << report.dump(2) << "\n";

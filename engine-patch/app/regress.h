@@ -12,6 +12,7 @@ namespace app {
 
 struct RegressOptions {
   std::vector<std::string> scenes;  // empty: the five recorded scenes of integration-tests/scenes
+  std::string host = "fso";         // the host engine; goldens of another host than fso are <scene>.<host>.json
   std::string methods = "each";     // one spec per method (expandMethodList)
   retroaa::Config base;
   int width = 240, height = 180;

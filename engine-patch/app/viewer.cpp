@@ -126,8 +126,8 @@ class Viewer {
       }
       glfwSwapBuffers(window_);
       recordFrameTime(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
-      if (!a_->hooks->lastError().empty()) {
-        std::fprintf(stderr, "view: plugin error: %s\n", a_->hooks->lastError().c_str());
+      if (!a_->lastError().empty()) {
+        std::fprintf(stderr, "view: plugin error: %s\n", a_->lastError().c_str());
         status = kExitCheckFailed;
         break;
       }
@@ -329,10 +329,10 @@ class Viewer {
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glViewport(0, 0, width_, height_);
     const int split = b_ ? int(divider_ * width_) : width_;
-    const GLuint aDisplay = a_->renderer->targets().displayFramebuffer;
+    const GLuint aDisplay = a_->renderer->displayFramebuffer();
     glBlitNamedFramebuffer(aDisplay, 0, 0, 0, split, height_, 0, 0, split, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     if (b_) {
-      glBlitNamedFramebuffer(b_->renderer->targets().displayFramebuffer, 0, split, 0, width_, height_, split, 0, width_,
+      glBlitNamedFramebuffer(b_->renderer->displayFramebuffer(), 0, split, 0, width_, height_, split, 0, width_,
                              height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
       glEnable(GL_SCISSOR_TEST);  // the divider: a 2-pixel white line
       glScissor(std::max(split - 1, 0), 0, 2, height_);
@@ -344,7 +344,7 @@ class Viewer {
       const int lens = std::min(width_, height_) / 3, source = std::max(lens / magnifierZoom_, 1);
       const int sx = glm::clamp(int(magnifierAt_.x) - source / 2, 0, width_ - source);
       const int sy = glm::clamp(height_ - int(magnifierAt_.y) - source / 2, 0, height_ - source);
-      const GLuint from = (b_ && sx >= split) ? b_->renderer->targets().displayFramebuffer : aDisplay;
+      const GLuint from = (b_ && sx >= split) ? b_->renderer->displayFramebuffer() : aDisplay;
       glBlitNamedFramebuffer(from, 0, sx, sy, sx + source, sy + source, width_ - lens, height_ - lens, width_, height_,
                              GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }

@@ -113,6 +113,12 @@ void SecondRenderer::drawObjects(const Program& program, const glm::mat4& viewPr
 void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   const int width = targets_.width, height = targets_.height;
   const glm::mat4 viewProjection = projection(camera, jitterPixels) * camera.view();
+  GLuint timestamps[5] = {};  // frame start, geometry, its hooks, lighting, frame end
+  if (measureTime) glGenQueries(5, timestamps);
+  auto stamp = [&](int i) {
+    if (measureTime) glQueryCounter(timestamps[i], GL_TIMESTAMP);
+  };
+  stamp(0);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDisable(GL_BLEND);
   glDisable(GL_STENCIL_TEST);
@@ -135,6 +141,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
     glDisable(GL_CULL_FACE);
   };
   geometryInto(seams_->geometryTarget(gbufferFramebuffer_));
+  stamp(1);
   FrameView view;
   view.verticalFovRadians = glm::radians(camera.fovYDegrees);
   view.width = width;
@@ -143,9 +150,11 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   view.farPlane = camera.farPlane;
   seams_->geometryDone(view);
   seams_->geometryAgain(geometryInto);
+  stamp(2);
 
   seams_->lighting([&](GLuint target) { lightingPass(target, camera, projection(camera, jitterPixels)); },
                    displayFramebuffer_);
+  stamp(3);
 
   // Forward: emissive objects over the lit image, tested against the scene's depth.
   glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
@@ -162,6 +171,17 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   glDisable(GL_FRAMEBUFFER_SRGB);
   seams_->frameDone();
   glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // the GL default, for whoever draws next
+  stamp(4);
+  if (measureTime) {  // waits for the GPU: tools only
+    GLuint64 t[5];
+    for (int i = 0; i < 5; ++i) glGetQueryObjectui64v(timestamps[i], GL_QUERY_RESULT, &t[i]);
+    glDeleteQueries(5, timestamps);
+    timings_.modelPassMs = (t[1] - t[0]) * 1e-6;
+    timings_.afterModelPassMs = (t[2] - t[1]) * 1e-6;
+    timings_.lightingMs = (t[3] - t[2]) * 1e-6;
+    timings_.tonemapMs = (t[4] - t[3]) * 1e-6;  // the forward pass and the AA post pass
+    timings_.frameMs = (t[4] - t[0]) * 1e-6;
+  }
 }
 
 void SecondRenderer::lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection) {

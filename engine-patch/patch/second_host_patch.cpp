@@ -1,7 +1,5 @@
 #include "second_host_patch.h"
 
-#include <cstdio>
-
 namespace patch {
 
 retroaa::GBufferLayout describeSecondHost(const host::SecondTargets& t) {
@@ -32,21 +30,5 @@ retroaa::Result<std::unique_ptr<SecondHostHooks>> SecondHostHooks::create(const 
   hooks->plugin_ = std::move(plugin.value());
   return hooks;
 }
-
-void SecondHostHooks::report(const retroaa::Status& status) {
-  if (!status && lastError_.empty()) std::fprintf(stderr, "retroaa: %s\n", (lastError_ = status.error().message).c_str());
-}
-void SecondHostHooks::targetsCreated(const host::SecondTargets& t) { report(plugin_->resize(describeSecondHost(t))); }
-GLuint SecondHostHooks::geometryTarget(GLuint) { return plugin_->geometryFramebuffer(); }
-void SecondHostHooks::geometryDone(const host::FrameView& view) {
-  report(plugin_->resolve({view.verticalFovRadians, view.nearPlane, view.farPlane}));
-}
-void SecondHostHooks::geometryAgain(const std::function<void(GLuint)>& draw) {
-  if (const GLuint target = plugin_->prepassFramebuffer()) draw(target);  // coverage, reconstruct
-}
-void SecondHostHooks::lighting(const std::function<void(GLuint)>& pass, GLuint) {
-  report(plugin_->shade([&pass](retroaa::GLuintHandle target) { pass(target); }));
-}
-void SecondHostHooks::frameDone() { report(plugin_->post()); }
 
 }  // namespace patch

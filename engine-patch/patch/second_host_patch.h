@@ -1,11 +1,9 @@
-// The second host's patch: the only code of that host that knows retroaa (second_host_patch.cpp).
+// The second host's patch: the only code of that host that knows retroaa (with second_host_patch.cpp).
 #pragma once
-
 #include "retroaa/plugin.h"
 #include "second_renderer.h"
 
-#include <memory>
-#include <string>
+#include <cstdio>
 
 namespace patch {
 
@@ -13,19 +11,24 @@ retroaa::GBufferLayout describeSecondHost(const host::SecondTargets& targets);
 
 class SecondHostHooks : public host::SecondSeams {
  public:
-  static retroaa::Result<std::unique_ptr<SecondHostHooks>> create(const host::SecondTargets& targets,
-                                                                  const retroaa::Config& config);
-  void targetsCreated(const host::SecondTargets& targets) override;
-  GLuint geometryTarget(GLuint own) override;
-  void geometryDone(const host::FrameView& view) override;
-  void geometryAgain(const std::function<void(GLuint)>& draw) override;
-  void lighting(const std::function<void(GLuint)>& pass, GLuint own) override;
-  void frameDone() override;
+  static retroaa::Result<std::unique_ptr<SecondHostHooks>> create(const host::SecondTargets&, const retroaa::Config&);
+  void targetsCreated(const host::SecondTargets& t) override { report(plugin_->resize(describeSecondHost(t))); }
+  GLuint geometryTarget(GLuint) override { return plugin_->geometryFramebuffer(); }
+  void geometryDone(const host::FrameView& v) override {
+    report(plugin_->resolve({v.verticalFovRadians, v.nearPlane, v.farPlane}));
+  }
+  void geometryAgain(const std::function<void(GLuint)>& draw) override {
+    if (const GLuint target = plugin_->prepassFramebuffer()) draw(target);  // coverage, reconstruct
+  }
+  void lighting(const std::function<void(GLuint)>& pass, GLuint) override { report(plugin_->shade(pass)); }
+  void frameDone() override { report(plugin_->post()); }
   retroaa::Plugin& plugin() { return *plugin_; }
   const std::string& lastError() const { return lastError_; }
 
  private:
-  void report(const retroaa::Status& status);
+  void report(const retroaa::Status& s) {
+    if (!s && lastError_.empty()) std::fprintf(stderr, "retroaa: %s\n", (lastError_ = s.error().message).c_str());
+  }
   std::unique_ptr<retroaa::Plugin> plugin_;
   std::string lastError_;
 };
