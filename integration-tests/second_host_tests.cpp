@@ -8,8 +8,12 @@
 #include "image_io.h"
 #include "test_support.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 using namespace testing_support;
@@ -153,4 +157,22 @@ const std::set<std::string> kMatrix = {"off",      "fxaa",     "resolve",     "e
 TEST(SecondHost, TheMatrixNamesEveryMethod) {
   for (const retroaa::MethodInfo& row : retroaa::methodTable())
     EXPECT_TRUE(kMatrix.count(row.name)) << row.name << " has no SecondHost test";
+}
+
+TEST(SecondHost, BenchTakesTheSecondHostAndRefusesAnUnknownOne) {
+  const std::string json = (std::filesystem::temp_directory_path() / "retroaa_second_host_bench.json").string();
+  CliRun r = runCli(
+      "bench --host second --methods off,per-sample --width 96 --height 72 --gt-samples 3 --repeats 1 "
+      "--wall-frames 0 --json " +
+      json);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(json);
+  const nlohmann::json document = nlohmann::json::parse(in);
+  ASSERT_EQ(document["rows"].size(), 2u);
+  EXPECT_GT(document["rows"][1]["edge_psnr_db"].get<double>(), document["rows"][0]["edge_psnr_db"].get<double>());
+  EXPECT_DOUBLE_EQ(document["rows"][1]["evals_per_pixel"].get<double>(), 4.0);
+
+  r = runCli("bench --host unreal --methods off --width 32 --height 24 --json " + json);
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("--host"), std::string::npos) << r.output;
 }
