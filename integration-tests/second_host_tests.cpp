@@ -131,8 +131,9 @@ void checkMethod(const std::string& spec) {
   const app::ErrorMetrics offError = scoring.score(off), methodError = scoring.score(image);
   std::printf("%s: edge PSNR %.2f dB (off %.2f dB), interior %.2f dB (off %.2f dB)\n", spec.c_str(),
               methodError.edgePsnrDb, offError.edgePsnrDb, methodError.interiorPsnrDb, offError.interiorPsnrDb);
-  if (method->multisampled && granted.samples > 1)
+  if (method->multisampled && granted.samples > 1) {
     EXPECT_GE(methodError.edgePsnrDb, offError.edgePsnrDb) << spec << " anti-aliases worse than off";
+  }
 }
 
 }  // namespace
