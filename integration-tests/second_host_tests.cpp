@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -27,9 +28,9 @@ struct SecondHost {
   std::unique_ptr<host::SecondRenderer> renderer;
   std::unique_ptr<patch::SecondHostHooks> hooks;
 
-  SecondHost() {
+  explicit SecondHost(bool worldPositionTarget = false) {
     context();
-    renderer = std::make_unique<host::SecondRenderer>(scene, kWidth, kHeight);
+    renderer = std::make_unique<host::SecondRenderer>(scene, kWidth, kHeight, worldPositionTarget);
     auto created = patch::SecondHostHooks::create(renderer->targets(), retroaa::Config{});
     if (!created) throw std::runtime_error(created.error().message);
     hooks = std::move(created.value());
@@ -88,6 +89,23 @@ void writeImageIfAsked(const std::string& name, const std::vector<uint8_t>& rgba
     app::writeImage8(std::string(folder) + "/" + name + ".png", kWidth, kHeight, rgba, {});
 }
 
+ScoringTruth scoringTruth(SecondHost& host) {
+  host.hooks->plugin().reconfigure(app::parseMethodSpec("off", {}).config);
+  host.renderer->setStockPath(true);
+  const host::GroundTruth truth = host::renderGroundTruth(*host.renderer, host.scene.camera, 4);
+  host.renderer->setStockPath(false);
+  return {app::DisplayImage::fromRgba8(truth.width, truth.height, truth.display),
+          app::edgeMaskFromSpread(truth.lumaStdDev)};
+}
+
+size_t changedPixels(const app::DisplayImage& a, const app::DisplayImage& b, const std::vector<bool>& where) {
+  size_t changed = 0;
+  for (size_t i = 0; i < where.size(); ++i)
+    if (where[i])
+      for (int c = 0; c < 3; ++c) changed += a.rgb[i * 3 + c] != b.rgb[i * 3 + c];
+  return changed;
+}
+
 void checkMethod(const std::string& spec) {
   SecondHost host;
   const std::vector<bool> open = openBackground(host);
@@ -102,14 +120,8 @@ void checkMethod(const std::string& spec) {
   for (float value : gbuffer) ASSERT_TRUE(std::isfinite(value)) << spec << ": the host's G-buffer holds " << value;
 
   // The background is the host's own: no relit sky, no halo.
-  size_t openPixels = 0, changed = 0;
-  for (size_t i = 0; i < open.size(); ++i) {
-    if (!open[i]) continue;
-    ++openPixels;
-    for (int c = 0; c < 3; ++c) changed += image.rgb[i * 3 + c] != off.rgb[i * 3 + c];
-  }
-  EXPECT_GT(openPixels, size_t(kWidth * kHeight / 10)) << "the scene should show open sky";
-  EXPECT_EQ(changed, 0u) << spec << " changed background pixels";
+  EXPECT_GT(std::count(open.begin(), open.end(), true), kWidth * kHeight / 10) << "the scene should show open sky";
+  EXPECT_EQ(changedPixels(image, off, open), 0u) << spec << " changed background pixels";
 
   const retroaa::Config granted = host.hooks->plugin().config();
   const retroaa::MethodInfo* method = retroaa::findMethod(granted.method);
@@ -122,12 +134,7 @@ void checkMethod(const std::string& spec) {
 
   }
 
-  host.hooks->plugin().reconfigure(app::parseMethodSpec("off", {}).config);
-  host.renderer->setStockPath(true);
-  const host::GroundTruth truth = host::renderGroundTruth(*host.renderer, host.scene.camera, 4);
-  host.renderer->setStockPath(false);
-  const ScoringTruth scoring{app::DisplayImage::fromRgba8(truth.width, truth.height, truth.display),
-                             app::edgeMaskFromSpread(truth.lumaStdDev)};
+  const ScoringTruth scoring = scoringTruth(host);
   const app::ErrorMetrics offError = scoring.score(off), methodError = scoring.score(image);
   std::printf("%s: edge PSNR %.2f dB (off %.2f dB), interior %.2f dB (off %.2f dB)\n", spec.c_str(),
               methodError.edgePsnrDb, offError.edgePsnrDb, methodError.interiorPsnrDb, offError.interiorPsnrDb);
@@ -176,4 +183,78 @@ TEST(SecondHost, BenchTakesTheSecondHostAndRefusesAnUnknownOne) {
   r = runCli("bench --host unreal --methods off --width 32 --height 24 --json " + json);
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find("--host"), std::string::npos) << r.output;
+}
+
+namespace {
+// The second host keeping world positions in a third attachment its lighting never reads, described
+// with DepthSource::WorldPosition: the plugin takes view depth from them and the frame's view matrix.
+struct WorldPositionSeams : host::SecondSeams {
+  std::unique_ptr<retroaa::Plugin> plugin;
+  bool passViewMatrix = true;  // false: FrameInfo keeps its identity matrix (a host that forgot it)
+  static retroaa::GBufferLayout layoutOf(const host::SecondTargets& t) {
+    retroaa::GBufferLayout layout = patch::describeSecondHost(t);
+    layout.attachments.push_back({retroaa::AttachmentRole::ViewPosition, GL_RGBA32F, t.worldPosition});
+    layout.depthSource = retroaa::DepthSource::WorldPosition;
+    layout.lightingReadsDepth = true;  // the host's lighting still rebuilds positions from depth
+    return layout;
+  }
+  GLuint geometryTarget(GLuint) override { return plugin->geometryFramebuffer(); }
+  void geometryDone(const host::FrameView& view) override {
+    retroaa::FrameInfo frame{view.verticalFovRadians, view.nearPlane, view.farPlane};
+    if (passViewMatrix) std::copy_n(&view.view[0][0], 16, frame.viewMatrix);
+    EXPECT_TRUE(plugin->resolve(frame));
+  }
+  void lighting(const std::function<void(GLuint)>& pass, GLuint) override { EXPECT_TRUE(plugin->shade(pass)); }
+  void frameDone() override { EXPECT_TRUE(plugin->post()); }
+};
+}  // namespace
+
+TEST(SecondHost, WorldPositionsAsTheDepthSourceAntiAliasLikeTheDepthBuffer) {
+  SecondHost host(true);
+  const std::vector<bool> open = openBackground(host);
+  const ScoringTruth scoring = scoringTruth(host);
+  const app::DisplayImage off = host.render("off");
+  const double offEdge = scoring.score(off).edgePsnrDb;
+  const int errorsBefore = context().debugErrorCount();
+  for (const std::string spec : {"resolve", "edge", "aggregate", "adaptive"}) {
+    const double fromDepth = scoring.score(host.render(spec)).edgePsnrDb;
+    WorldPositionSeams seams;
+    retroaa::Description description;
+    description.config = app::parseMethodSpec(spec, {}).config;
+    description.layout = WorldPositionSeams::layoutOf(host.renderer->targets());
+    auto created = retroaa::Plugin::create(description);
+    ASSERT_TRUE(created) << created.error().message;
+    seams.plugin = std::move(created.value());
+    host.renderer->setSeams(&seams);
+    for (int frame = 0; frame < 3; ++frame)
+      host.renderer->renderFrame(host.scene.camera);  // the layout check reads back
+    const app::DisplayImage image = app::DisplayImage::fromRgba8(kWidth, kHeight, host.renderer->readDisplay());
+    host.renderer->setSeams(host.hooks.get());
+    const double fromWorld = scoring.score(image).edgePsnrDb;
+    std::printf("%s: edge PSNR %.2f dB from world positions, %.2f dB from depth (off %.2f dB)\n", spec.c_str(),
+                fromWorld, fromDepth, offEdge);
+    EXPECT_GE(fromWorld, offEdge) << spec;
+    EXPECT_NEAR(fromWorld, fromDepth, 0.25) << spec;
+    EXPECT_EQ(changedPixels(image, off, open), 0u) << spec << " changed background pixels";
+    for (const std::string& warning : seams.plugin->warnings()) ADD_FAILURE() << spec << ": " << warning;
+  }
+  EXPECT_EQ(context().debugErrorCount(), errorsBefore);
+}
+
+TEST(SecondHost, WorldPositionsWithoutTheViewMatrixAreNamedInAWarning) {
+  SecondHost host(true);
+  WorldPositionSeams seams;
+  seams.passViewMatrix = false;
+  retroaa::Description description;
+  description.config = app::parseMethodSpec("edge", {}).config;
+  description.layout = WorldPositionSeams::layoutOf(host.renderer->targets());
+  auto created = retroaa::Plugin::create(description);
+  ASSERT_TRUE(created) << created.error().message;
+  seams.plugin = std::move(created.value());
+  host.renderer->setSeams(&seams);
+  for (int frame = 0; frame < 3; ++frame) host.renderer->renderFrame(host.scene.camera);
+  host.renderer->setSeams(host.hooks.get());
+  std::string warnings;
+  for (const std::string& warning : seams.plugin->warnings()) warnings += warning + "\n";
+  EXPECT_NE(warnings.find("FrameInfo::viewMatrix"), std::string::npos) << warnings;
 }

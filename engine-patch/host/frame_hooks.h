@@ -5,6 +5,8 @@
 
 #include <epoxy/gl.h>
 
+#include <glm/glm.hpp>
+
 #include <functional>
 
 namespace host {
@@ -27,6 +29,7 @@ struct FrameView {
   float verticalFovRadians = 1.0f;  // the projection's (FreeSpace Open's Proj_fov)
   int width = 0, height = 0;
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres
+  glm::mat4 view{1.0f};                     // world to view
 };
 
 // Draws the frame's models again into `target` with the model shaders; the target's draw buffers

@@ -163,6 +163,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   frameView.height = height;
   frameView.nearPlane = camera.nearPlane;
   frameView.farPlane = camera.farPlane;
+  frameView.view = view;
   hooks_->modelPassEnd(frameView);
   hooks_->modelPrepass([&](GLuint target) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 4, -1, "host.model_prepass");

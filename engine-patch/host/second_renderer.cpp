@@ -28,8 +28,9 @@ std::vector<uint8_t> readTopDown(GLuint texture, int width, int height) {
 }
 }  // namespace
 
-SecondRenderer::SecondRenderer(const Scene& scene, int width, int height)
+SecondRenderer::SecondRenderer(const Scene& scene, int width, int height, bool worldPositionTarget)
     : scene_(scene),
+      worldPositionTarget_(worldPositionTarget),
       geometryProgram_("shaders/second/geometry.vert", "shaders/second/geometry.frag"),
       sunProgram_("shaders/fullscreen.vert", "shaders/second/sun.frag"),
       pointProgram_("shaders/second/point.vert", "shaders/second/point.frag"),
@@ -56,14 +57,19 @@ void SecondRenderer::createTargets(int width, int height) {
   displayFramebuffer_ = Framebuffer(fbos[1]);
   glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT0, normal_, 0);
   glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT1, albedoSpecular_, 0);
-  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(fbos[0], 2, drawBuffers);
+  if (worldPositionTarget_) {
+    worldPosition_ = makeTexture2D(GL_RGBA32F, width, height, "second.gbuffer.world_position");
+    glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT2, worldPosition_, 0);
+  }
+  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(fbos[0], worldPositionTarget_ ? 3 : 2, drawBuffers);
   glNamedFramebufferTexture(fbos[0], GL_DEPTH_ATTACHMENT, depth_, 0);
   glNamedFramebufferTexture(fbos[1], GL_COLOR_ATTACHMENT0, display_, 0);
   glNamedFramebufferTexture(fbos[1], GL_DEPTH_ATTACHMENT, depth_, 0);
   checkFramebuffer(fbos[0], "second.gbuffer");
   checkFramebuffer(fbos[1], "second.display");
-  targets_ = {width, height, gbufferFramebuffer_, normal_, albedoSpecular_, depth_, displayFramebuffer_, display_};
+  targets_ = {width,    height,        gbufferFramebuffer_, normal_, albedoSpecular_, depth_, displayFramebuffer_,
+              display_, worldPosition_};
   seams_->targetsCreated(targets_);
 }
 
@@ -131,6 +137,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
     const float zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(target, GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(target, GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(target, GL_COLOR, 2, zero);  // a draw buffer the target leaves GL_NONE ignores it
     const float farDepth = 0.0f;
     glClearNamedFramebufferfv(target, GL_DEPTH, 0, &farDepth);
     glEnable(GL_DEPTH_TEST);
@@ -148,6 +155,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   view.height = height;
   view.nearPlane = camera.nearPlane;
   view.farPlane = camera.farPlane;
+  view.view = camera.view();
   seams_->geometryDone(view);
   seams_->geometryAgain(geometryInto);
   stamp(2);

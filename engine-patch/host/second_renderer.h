@@ -23,6 +23,7 @@ struct SecondTargets {
   GLuint normal = 0, albedoSpecular = 0;  // RG16F octahedral world normal; RGBA8 albedo, specular in a
   GLuint depth = 0;                       // GL_DEPTH_COMPONENT32F, reversed-Z
   GLuint displayFramebuffer = 0, display = 0;  // GL_SRGB8_ALPHA8 + the same depth (forward pass)
+  GLuint worldPosition = 0;                    // RGBA32F world position at location 2, when asked for (0: none)
 };
 
 // Where an AA module may step in. The stock implementation is the host's own single-sample path.
@@ -43,7 +44,9 @@ class SecondSeams {
 
 class SecondRenderer : public Engine {
  public:
-  SecondRenderer(const Scene& scene, int width, int height);
+  // `worldPositionTarget`: the geometry pass also writes world positions (location 2), which the host's
+  // own lighting does not read: a third attachment for a layout that takes depth from it.
+  SecondRenderer(const Scene& scene, int width, int height, bool worldPositionTarget = false);
   ~SecondRenderer() override;
 
   void setSeams(SecondSeams* seams);  // nullptr: the stock path
@@ -75,7 +78,8 @@ class SecondRenderer : public Engine {
   SecondSeams* seams_ = &stockSeams_;
   SecondSeams* suspendedSeams_ = nullptr;
   SecondTargets targets_;
-  Texture normal_, albedoSpecular_, depth_, display_;
+  bool worldPositionTarget_ = false;
+  Texture normal_, albedoSpecular_, depth_, display_, worldPosition_;
   Framebuffer gbufferFramebuffer_, displayFramebuffer_;
   Program geometryProgram_, sunProgram_, pointProgram_, forwardProgram_, presentProgram_;
   std::vector<GpuMesh> meshes_;

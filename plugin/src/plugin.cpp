@@ -27,7 +27,7 @@ Status validateLayout(const GBufferLayout& layout) {
     positions += a.role == AttachmentRole::ViewPosition;
     normals += a.role == AttachmentRole::NormalGloss;
   }
-  const bool depthInPosition = layout.depthSource == DepthSource::PositionChannel;
+  const bool depthInPosition = layout.depthSource != DepthSource::DepthBuffer;
   if (depthInPosition ? positions != 1 : positions > 1)
     return invalid(std::string("layout needs ") + (depthInPosition ? "exactly" : "at most") +
                    " one ViewPosition attachment (has " + std::to_string(positions) + ")" +

@@ -66,6 +66,9 @@ GLint ShaderProgram::location(const char* name) const {
 void ShaderProgram::setDepthEncoding(const PluginContext& context) const {
   set("uDepthKnee", context.layout.depthEncoding.knee);
   set("uBackgroundAbove", context.layout.depthEncoding.backgroundAbove);
+  const float* v = context.frame.viewMatrix;  // column-major: row 2 is v[2], v[6], v[10], v[14]
+  const float viewDepthRow[4] = {v[2], v[6], v[10], v[14]};
+  setVec4("uViewDepthRow", viewDepthRow);
   setDepthPlanes(context);
 }
 

@@ -46,7 +46,7 @@ class ShaderProgram {
 
 // The uniforms common/depth.glsl and depth_buffer.glsl declare (for the uniform list of a program that includes it).
 #define RETROAA_DEPTH_BUFFER_UNIFORMS "uDepthNear", "uDepthFar"
-#define RETROAA_DEPTH_ENCODING_UNIFORMS "uDepthKnee", "uBackgroundAbove", RETROAA_DEPTH_BUFFER_UNIFORMS
+#define RETROAA_DEPTH_ENCODING_UNIFORMS "uDepthKnee", "uBackgroundAbove", "uViewDepthRow", RETROAA_DEPTH_BUFFER_UNIFORMS
 
 class ShaderLibrary {
  public:

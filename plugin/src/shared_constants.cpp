@@ -35,6 +35,7 @@ const std::string& sharedConstantDefines() {
     d += defineLine("DEPTH_BUFFER_REVERSED_INFINITE", int(DepthBufferEncoding::ReversedInfinite));
     d += defineLine("DEPTH_SOURCE_POSITION_CHANNEL", int(DepthSource::PositionChannel));
     d += defineLine("DEPTH_SOURCE_DEPTH_BUFFER", int(DepthSource::DepthBuffer));
+    d += defineLine("DEPTH_SOURCE_WORLD_POSITION", int(DepthSource::WorldPosition));
     d += defineLine("NORMAL_XYZ", int(NormalEncoding::Xyz));
     d += defineLine("NORMAL_OCTAHEDRAL", int(NormalEncoding::Octahedral));
     return d;

@@ -3,6 +3,7 @@
 // (FSO_GLOBAL_FAR_Z injected with it).
 uniform float uDepthKnee;
 uniform float uBackgroundAbove;
+uniform vec4 uViewDepthRow;  // DepthSource::WorldPosition: the view matrix's third row (view z = row · (p, 1))
 
 #if DEPTH_ENCODING == 2
 // FreeSpace Open's z-compress.sdr, written from its definition: view z (negative in front) maps

@@ -27,10 +27,21 @@ float distanceOfDepthBuffer(float z) {
   float d = depthBufferToMetres(z);
   return d > 0.0 ? d : 1.0 / 0.0;
 }
+// A world-space position's distance in front of the camera; +inf behind it.
+float distanceOfWorld(vec3 p) {
+  float d = -dot(uViewDepthRow, vec4(p, 1.0));
+  return d > 0.0 ? d : 1.0 / 0.0;
+}
 #if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
 float sampleDistance(ivec2 pixel, int s) { return distanceOfDepthBuffer(FETCH(uDepthBuffer, pixel, s).r); }
 // Whether the host marked sample s as "no geometry" (its own background, left as the host cleared it).
 bool sampleMarkedBackground(ivec2 pixel, int s) { return depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r); }
+#elif DEPTH_SOURCE == DEPTH_SOURCE_WORLD_POSITION
+bool sampleMarkedBackground(ivec2 pixel, int s) { return depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r); }
+float sampleDistance(ivec2 pixel, int s) {
+  if (sampleMarkedBackground(pixel, s)) return 1.0 / 0.0;
+  return distanceOfWorld(FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s).xyz);
+}
 #else
 float sampleDistance(ivec2 pixel, int s) {
   return distanceOfStored(FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL]);

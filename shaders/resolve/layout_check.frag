@@ -15,6 +15,11 @@ void main() {
     if (depthBufferIsFar(z)) continue;
     anyGeometry = true;
     if (!(depthBufferToMetres(z) > 0.0)) nonPositive = true;
+#elif DEPTH_SOURCE == DEPTH_SOURCE_WORLD_POSITION
+    if (depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r)) continue;
+    anyGeometry = true;
+    if (!(-dot(uViewDepthRow, vec4(FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s).xyz, 1.0)) > 0.0))
+      nonPositive = true;
 #else
     float stored = FETCH(uAttachments[POSITION_ATTACHMENT], pixel, s)[DEPTH_CHANNEL];
     if (isBackground(stored)) continue;

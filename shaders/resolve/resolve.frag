@@ -59,6 +59,10 @@ vec4 fetched[SAMPLES][ATTACHMENT_COUNT];
 #if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
 #define SAMPLE_DISTANCE(s) distanceOfDepthBuffer(FETCH(uDepthBuffer, pixel, s).r)
 #define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r)
+#elif DEPTH_SOURCE == DEPTH_SOURCE_WORLD_POSITION
+#define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r)
+#define SAMPLE_DISTANCE(s) \
+  (SAMPLE_MARKED_BACKGROUND(s) ? 1.0 / 0.0 : distanceOfWorld(SAMPLE_VALUE(POSITION_ATTACHMENT, s).xyz))
 #else
 #define SAMPLE_DISTANCE(s) distanceOfStored(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL])
 #define SAMPLE_MARKED_BACKGROUND(s) isBackground(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL])

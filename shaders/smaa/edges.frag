@@ -10,7 +10,7 @@
 #include "common/depth.glsl"
 #include "common/depth_buffer.glsl"
 #endif
-// Colour; in depth mode the host's position attachment, or its depth texture (DepthSource::DepthBuffer).
+// Colour; in depth mode the host's position attachment (DepthSource::PositionChannel), else its depth texture.
 layout(binding = 0) uniform sampler2D uInput;
 out vec2 outEdges;
 
@@ -29,7 +29,7 @@ vec3 valueAt(ivec2 p) {
   p = clamp(p, ivec2(0), ivec2(uMetrics.zw) - 1);
 #if SMAA_EDGE_MODE == 2
   // Background counts as very far, so every silhouette against it is a step.
-#if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
+#if DEPTH_SOURCE != DEPTH_SOURCE_POSITION_CHANNEL  // the depth buffer
   float z = texelFetch(uInput, p, 0).r;
   return vec3(depthBufferIsFar(z) ? 1e30 : depthBufferToMetres(z));
 #else

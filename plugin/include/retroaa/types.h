@@ -72,6 +72,9 @@ enum class DepthSource : uint8_t {
   // value. No position attachment is needed; the slices write each sample's depth into the host's
   // depth texture as well, for a host whose lighting rebuilds positions from it.
   DepthBuffer,
+  // The ViewPosition attachment's xyz is a world-space position: view depth is −(V·p).z with
+  // FrameInfo::viewMatrix. Background is the depth buffer's far value (per `depthBufferEncoding`).
+  WorldPosition,
 };
 
 // How the NormalGloss attachment holds the normal.
@@ -98,6 +101,9 @@ struct GBufferLayout {
   DepthBufferEncoding depthBufferEncoding = DepthBufferEncoding::Perspective;
   GLuintHandle gbufferFramebuffer = 0;                      // the host's single-sample G-buffer (attachments + depth)
   GLuintHandle depthStencilTexture = 0;                     // any depth or depth-stencil texture format
+  // The host's lighting rebuilds positions from depthStencilTexture: each slice then writes its samples'
+  // depth there too, as it writes their attributes into the attachments. Implied by DepthSource::DepthBuffer.
+  bool lightingReadsDepth = false;
   uint8_t hostStencilBits = 0x00;                           // stencil bits the host owns; retroaa leaves them alone
   // Where the host's lighting accumulates, and its colour texture (slices composite into it): any colour
   // format, e.g. an RGBA16F HDR target, or the host's sRGB display when it lights straight into it.
@@ -132,6 +138,8 @@ struct FrameInfo {
   // Eq. 1's pixel footprint uses the horizontal one, derived from this and the layout's aspect ratio.
   float verticalFovRadians = 1.0f;
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres, for DepthBufferEncoding (and DepthSource::DepthBuffer)
+  // World to view, column-major as GL and GLM store it (DepthSource::WorldPosition only).
+  float viewMatrix[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 };
 
 // One plugin pass of a measured frame (Config::measureGpuTime).

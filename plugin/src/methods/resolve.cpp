@@ -100,19 +100,25 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
   const char* kinds[] = {"Linear", "LogAboveKnee", "FsoCompressedViewZ"};
   const char* depthBufferKinds[] = {"Perspective", "Logarithmic", "ReversedPerspective", "ReversedInfinite"};
   const bool fromDepthBuffer = layout.depthSource == DepthSource::DepthBuffer;
+  const bool fromWorld = layout.depthSource == DepthSource::WorldPosition;
   const std::string where =
       fromDepthBuffer ? std::string("(GBufferLayout: depthSource DepthBuffer, depthBufferEncoding ") +
                             depthBufferKinds[int(layout.depthBufferEncoding)] + ", FrameInfo near/far planes)"
-                      : "(GBufferLayout: ViewPosition attachment, depthChannel=" + std::to_string(layout.depthChannel) +
-                            ", depthEncoding " + kinds[int(layout.depthEncoding.kind)] + ")";
+      : fromWorld ? std::string(
+                        "(GBufferLayout: depthSource WorldPosition, ViewPosition attachment, "
+                        "depthBufferEncoding ") +
+                        depthBufferKinds[int(layout.depthBufferEncoding)] + "; FrameInfo::viewMatrix)"
+                  : "(GBufferLayout: ViewPosition attachment, depthChannel=" + std::to_string(layout.depthChannel) +
+                        ", depthEncoding " + kinds[int(layout.depthEncoding.kind)] + ")";
   auto percent = [&](GLuint64 count) { return std::to_string(int(std::lround(100.0 * double(count) / pixels))); };
   if (double(nonPositive) > 0.005 * pixels)
     context.warn("layout check: " + percent(nonPositive) + "% of pixels hold geometry at view depth <= 0 " + where +
                  (fromDepthBuffer ? std::string(": is the depth buffer's encoding another (reversed-Z?)")
+                  : fromWorld     ? std::string(": is FrameInfo::viewMatrix the world-to-view matrix?")
                                   : std::string(": is the position world-space, or the depth in another channel?")) +
                  " Such samples are treated as background by the resolve and lose their anti-aliasing");
   std::string backgroundRule;
-  if (fromDepthBuffer)
+  if (fromDepthBuffer || fromWorld)
     backgroundRule = std::string("the far depth-buffer value, ") +
                      (layout.depthBufferEncoding == DepthBufferEncoding::ReversedPerspective ||
                               layout.depthBufferEncoding == DepthBufferEncoding::ReversedInfinite
@@ -124,8 +130,8 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
     backgroundRule = "stored >= backgroundAbove = " + std::to_string(int(layout.depthEncoding.backgroundAbove));
   if (double(noGeometry) >= 0.99 * pixels)
     context.warn("layout check: " + percent(noGeometry) + "% of pixels have no sample with geometry " + where +
-                 ": if the frame shows geometry, its depth reads as background under that encoding (" +
-                 backgroundRule + ")" + (fromDepthBuffer ? "" : ", or the depth is in another channel"));
+                 ": if the frame shows geometry, its depth reads as background under that encoding (" + backgroundRule +
+                 ")" + (fromDepthBuffer || fromWorld ? "" : ", or the depth is in another channel"));
 }
 
 Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,

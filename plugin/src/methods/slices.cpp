@@ -66,7 +66,7 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
     if (Status status = checkFramebuffer(fbo, label); !status) return status.error();
   // A host that rebuilds positions from its depth buffer needs each slice's depth there too: a second
   // write into its depth texture alone (the writer's own depth-stencil is the count mask).
-  if (layout.depthSource == DepthSource::DepthBuffer) {
+  if (layout.depthSource == DepthSource::DepthBuffer || layout.lightingReadsDepth) {
     slices->depthWriter_ = makeFramebuffer(context, "slices.depth_writer");
     glNamedFramebufferTexture(slices->depthWriter_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
     glNamedFramebufferDrawBuffer(slices->depthWriter_.get(), GL_NONE);

@@ -159,7 +159,7 @@ class SmaaPasses {
       edgesProgram_.use();
       if (detection_ == SmaaEdgeDetection::Depth) {
         edgesProgram_.setDepthEncoding(context);
-        glBindTextureUnit(0, layout.depthSource == DepthSource::DepthBuffer
+        glBindTextureUnit(0, layout.depthSource != DepthSource::PositionChannel
                                  ? layout.depthStencilTexture
                                  : layout.attachments[size_t(positionAttachment_)].texture);
       } else {

@@ -6,7 +6,10 @@ uniform mat4 uModel;
 uniform mat4 uViewProjection;
 uniform mat3 uNormalToWorld;
 out vec3 vWorldNormal;
+out vec3 vWorldPosition;
 void main() {
   vWorldNormal = uNormalToWorld * inNormal;
-  gl_Position = uViewProjection * (uModel * vec4(inPosition, 1.0));
+  vec4 world = uModel * vec4(inPosition, 1.0);
+  vWorldPosition = world.xyz;
+  gl_Position = uViewProjection * world;
 }
