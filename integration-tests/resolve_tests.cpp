@@ -1,4 +1,5 @@
 // The depth-aware resolve and FXAA through the engine patch, on the demo scenes, against ground truth.
+#include "commands.h"
 #include "gl_state.h"
 #include "test_support.h"
 
@@ -292,4 +293,56 @@ TEST(Plugin, ALayoutWhoseDataLooksWrongIsNamedInAWarning) {
       EXPECT_EQ(layoutWarnings, "") << "a plausible frame";
     }
   }
+}
+
+TEST(Plugin, TakesADepthRenderbufferThroughATextureMirror) {
+  // A host whose depth is a renderbuffer: the plugin mirrors it in a texture of the same format, writes
+  // the resolved depth back into it after resolve(), and holds the mirror's bytes on top.
+  constexpr int w = 8, h = 4;
+  const SyntheticSample sample = surfaceSample(10);
+  SyntheticFrame frame(w, h);
+  GLuint renderbuffer = 0, readBack = 0;
+  glCreateRenderbuffers(1, &renderbuffer);
+  glNamedRenderbufferStorage(renderbuffer, GL_DEPTH24_STENCIL8, w, h);
+  retroaa::Description description;
+  description.config.method = retroaa::Method::Resolve;
+  description.layout = patch::describeHostGBuffer(frame.renderer->targets());
+  const uint64_t bytesWithTexture = retroaa::Plugin::create(description).value()->stats().bytesHeld;
+  description.layout.depthStencilTexture = 0;
+  description.layout.depthStencilRenderbuffer = renderbuffer;
+  {
+    auto plugin = retroaa::Plugin::create(description);
+    ASSERT_TRUE(plugin) << plugin.error().message;
+    EXPECT_EQ(plugin.value()->stats().bytesHeld, bytesWithTexture + uint64_t(w) * h * 4);
+    fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
+    ASSERT_TRUE(plugin.value()->resolve({1.0f}));
+    ASSERT_TRUE(plugin.value()->reconfigure(app::parseMethodSpec("fxaa", {}).config));  // post() reads it back
+    ASSERT_TRUE(plugin.value()->post());
+  }
+  glCreateFramebuffers(1, &readBack);
+  glNamedFramebufferRenderbuffer(readBack, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffer);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, readBack);
+  std::vector<float> values(w * h);
+  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, values.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  for (float v : values) ASSERT_NEAR(v, sample.depthBuffer.x, 1e-6);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+
+  // Both names, or a renderbuffer without depth: InvalidLayout naming the field.
+  description.layout.depthStencilTexture = frame.renderer->targets().depthStencil;
+  auto both = retroaa::Plugin::create(description);
+  ASSERT_FALSE(both);
+  EXPECT_NE(both.error().message.find("depthStencilRenderbuffer"), std::string::npos) << both.error().message;
+  GLuint colour = 0;
+  glCreateRenderbuffers(1, &colour);
+  glNamedRenderbufferStorage(colour, GL_RGBA8, w, h);
+  description.layout.depthStencilTexture = 0;
+  description.layout.depthStencilRenderbuffer = colour;
+  auto noDepth = retroaa::Plugin::create(description);
+  ASSERT_FALSE(noDepth);
+  EXPECT_EQ(noDepth.error().code, retroaa::ErrorCode::InvalidLayout);
+  EXPECT_NE(noDepth.error().message.find("depthStencilRenderbuffer"), std::string::npos) << noDepth.error().message;
+  glDeleteRenderbuffers(1, &colour);
+  glDeleteRenderbuffers(1, &renderbuffer);
+  glDeleteFramebuffers(1, &readBack);
 }

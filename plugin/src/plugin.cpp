@@ -59,10 +59,64 @@ Status validateLayout(const GBufferLayout& layout) {
         std::string("depthStencilTexture ") + std::to_string(layout.depthStencilTexture) +
         (format ? std::string(" has internal format ") + hex + ", no depth format" : std::string(" is not a texture")) +
         " (accepted: any depth or depth-stencil texture, e.g. GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT32F, "
-        "GL_DEPTH32F_STENCIL8; a renderbuffer must be copied into one)");
+        "GL_DEPTH32F_STENCIL8; a renderbuffer goes in depthStencilRenderbuffer)");
   }
   return Status::ok();
 }
+
+// A host's depth renderbuffer (GBufferLayout::depthStencilRenderbuffer) mirrored in a texture of the
+// same format, which every pass then uses as the host's depth texture. Depth only: the host's stencil
+// stays the host's.
+struct DepthMirror {
+  GlTexture texture;
+  GlFramebuffer hostDepth, mirrorDepth;
+  int width = 0, height = 0;
+  uint64_t bytes = 0;
+
+  static Status validate(const GBufferLayout& layout) {
+    if (!layout.depthStencilRenderbuffer) return Status::ok();
+    if (layout.depthStencilTexture)
+      return Error{ErrorCode::InvalidLayout,
+                   "layout names both depthStencilTexture and depthStencilRenderbuffer (one of them)"};
+    GLint depthBits = 0, samples = 0;
+    if (glIsRenderbuffer(layout.depthStencilRenderbuffer)) {
+      glGetNamedRenderbufferParameteriv(layout.depthStencilRenderbuffer, GL_RENDERBUFFER_DEPTH_SIZE, &depthBits);
+      glGetNamedRenderbufferParameteriv(layout.depthStencilRenderbuffer, GL_RENDERBUFFER_SAMPLES, &samples);
+    }
+    if (depthBits == 0 || samples > 1)
+      return Error{ErrorCode::InvalidLayout, "depthStencilRenderbuffer " +
+                                                 std::to_string(layout.depthStencilRenderbuffer) +
+                                                 " is no single-sample depth renderbuffer"};
+    return Status::ok();
+  }
+  static Result<std::unique_ptr<DepthMirror>> create(PluginContext& context, const GBufferLayout& layout) {
+    auto mirror = std::make_unique<DepthMirror>();
+    GLint format = 0;
+    glGetNamedRenderbufferParameteriv(layout.depthStencilRenderbuffer, GL_RENDERBUFFER_INTERNAL_FORMAT, &format);
+    mirror->width = layout.width;
+    mirror->height = layout.height;
+    mirror->texture =
+        makeTexture(context, GLenum(format), layout.width, layout.height, 0, "depth_mirror", mirror->bytes);
+    mirror->hostDepth = makeFramebuffer(context, "depth_mirror.host");
+    glNamedFramebufferRenderbuffer(mirror->hostDepth.get(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                   layout.depthStencilRenderbuffer);
+    mirror->mirrorDepth = makeFramebuffer(context, "depth_mirror.texture");
+    glNamedFramebufferTexture(mirror->mirrorDepth.get(), GL_DEPTH_ATTACHMENT, mirror->texture.get(), 0);
+    for (GLuint fbo : {mirror->hostDepth.get(), mirror->mirrorDepth.get()}) {
+      glNamedFramebufferDrawBuffer(fbo, GL_NONE);
+      glNamedFramebufferReadBuffer(fbo, GL_NONE);
+      if (Status status = checkFramebuffer(fbo, "depth_mirror"); !status) return status.error();
+    }
+    return mirror;
+  }
+  // The mirror into the host's renderbuffer, or back.
+  void copy(bool toHost) const {
+    glDisable(GL_SCISSOR_TEST);
+    glDepthMask(GL_TRUE);
+    glBlitNamedFramebuffer(toHost ? mirrorDepth.get() : hostDepth.get(), toHost ? hostDepth.get() : mirrorDepth.get(),
+                           0, 0, width, height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+};
 
 ContextCapabilities queryCapabilities(uint32_t disabledFeatures, int maxSamplesLimit) {
   ContextCapabilities caps;
@@ -96,6 +150,7 @@ struct Plugin::Impl {
   std::unique_ptr<ResolvePass> resolvePass;  // with the MSAA G-buffer: slice 0's base, and `resolve` itself
   std::unique_ptr<SliceRenderer> slices;
   std::unique_ptr<PostTarget> postTarget;
+  std::unique_ptr<DepthMirror> depthMirror;  // when the host's depth is a renderbuffer
   // The method's technique first, then the stacked ones; each pass runs them in this order.
   std::vector<ActiveTechnique> techniques;
   std::unique_ptr<BudgetController> budget;
@@ -249,9 +304,26 @@ struct Plugin::Impl {
     return Status::ok();
   }
 
+  // Validates `host` and makes it the layout every pass uses: a depth renderbuffer replaced by its mirror.
+  Status setLayout(const GBufferLayout& host) {
+    if (Status status = DepthMirror::validate(host); !status) return status;
+    GBufferLayout layout = host;
+    std::unique_ptr<DepthMirror> mirror;
+    if (host.depthStencilRenderbuffer && host.width > 0 && host.height > 0) {
+      auto created = DepthMirror::create(context, host);
+      if (!created) return created.error();
+      mirror = std::move(created.value());
+      layout.depthStencilTexture = mirror->texture.get();
+    }
+    if (Status status = validateLayout(layout); !status) return status;
+    context.layout = layout;
+    depthMirror = std::move(mirror);
+    return Status::ok();
+  }
+
   uint64_t bytesHeld() const {
-    uint64_t bytes =
-        (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) + (postTarget ? postTarget->bytes() : 0);
+    uint64_t bytes = (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) +
+                     (postTarget ? postTarget->bytes() : 0) + (depthMirror ? depthMirror->bytes : 0);
     for (const ActiveTechnique& active : techniques) bytes += active.technique->bytes();
     return bytes;
   }
@@ -266,11 +338,10 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
                                                     std::to_string(epoxy_gl_version() / 10) + "." +
                                                     std::to_string(epoxy_gl_version() % 10)};
   if (Status status = validateConfig(description.config); !status) return status.error();
-  if (Status status = validateLayout(description.layout); !status) return status.error();
   GlStateGuard guard;
   auto impl = std::make_unique<Impl>();
   PluginContext& context = impl->context;
-  context.layout = description.layout;
+  if (Status status = impl->setLayout(description.layout); !status) return status.error();
   context.log = description.log;
   context.capabilities = queryCapabilities(description.disabledFeatures, description.maxSamplesLimit);
   if (!context.capabilities.stencilExport)
@@ -311,6 +382,7 @@ Status Plugin::resolve(const FrameInfo& frame) {
   if (!impl_->resolvePass) return Status::ok();
   GlStateGuard guard;
   if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
+  if (impl_->depthMirror) impl_->depthMirror->copy(true);  // the resolved depth into the host's renderbuffer
   SharedTargets shared = impl_->shared();
   for (ActiveTechnique& active : impl_->techniques)
     if (Status status = active.technique->afterResolve(context, shared, frame); !status) return status;
@@ -357,6 +429,8 @@ Status Plugin::post() {
   GlStateGuard guard;
   SharedTargets shared = impl_->shared();
   const GBufferLayout& layout = impl_->context.layout;
+  // Without an MSAA G-buffer the host drew its own depth: the passes read it through the mirror.
+  if (impl_->depthMirror && !impl_->msaa) impl_->depthMirror->copy(false);
   impl_->postTarget->begin(layout);
   for (ActiveTechnique& active : impl_->techniques)
     if (Status status = active.technique->post(impl_->context, shared, impl_->context.frame); !status) return status;
@@ -391,9 +465,8 @@ Status Plugin::reconfigure(const Config& config) {
 }
 
 Status Plugin::resize(const GBufferLayout& layout) {
-  if (Status status = validateLayout(layout); !status) return status.error();
   GlStateGuard guard;
-  impl_->context.layout = layout;
+  if (Status status = impl_->setLayout(layout); !status) return status.error();
   impl_->context.statistics->release();
   return impl_->allocate(true);
 }

@@ -101,6 +101,9 @@ struct GBufferLayout {
   DepthBufferEncoding depthBufferEncoding = DepthBufferEncoding::Perspective;
   GLuintHandle gbufferFramebuffer = 0;                      // the host's single-sample G-buffer (attachments + depth)
   GLuintHandle depthStencilTexture = 0;                     // any depth or depth-stencil texture format
+  // Instead of depthStencilTexture, a single-sample depth(-stencil) renderbuffer: the plugin mirrors it in
+  // a texture of its own (+ its size), copied back after resolve() and in before post() where needed.
+  GLuintHandle depthStencilRenderbuffer = 0;
   // The host's lighting rebuilds positions from depthStencilTexture: each slice then writes its samples'
   // depth there too, as it writes their attributes into the attachments. Implied by DepthSource::DepthBuffer.
   bool lightingReadsDepth = false;
