@@ -41,7 +41,7 @@ demo: build
 # The unit tests, the fuzzing corpus and a small integration subset under AddressSanitizer and
 # UndefinedBehaviorSanitizer (clang). Mesa's own allocations are outside this project: leaks are not
 # checked (detect_leaks=0); the GL objects the plugin holds are counted by its own tests instead.
-SANITIZE_TESTS = 'Config|FuzzCorpus|Metrics|ResolveHardCases|AdaptiveMetrics|AggregateClustering|CoverageFilter|Plugin\.|Slices\.Edge|FramePath|Statistics\.'
+SANITIZE_TESTS = 'Config|FuzzCorpus|Metrics|ResolveHardCases|AdaptiveMetrics|AggregateClustering|CoverageFilter|Plugin\.|Slices\.Edge|FramePath|Statistics\.|SecondHost\.(Edge|Aggregate|WorldPositions)'
 test-sanitize: deps-clang
 	CC=clang CXX=clang++ cmake -S . -B build-sanitize -DRETROAA_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
 	cmake --build build-sanitize -j$(JOBS)
