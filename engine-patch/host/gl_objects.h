@@ -6,6 +6,9 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -75,6 +78,31 @@ class Program {
 };
 
 Texture makeTexture2D(GLenum internalFormat, int width, int height, const char* label);
+
+// Uniforms of the bound program, by location.
+inline void setUniform(GLint location, const glm::mat4& m) {
+  glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(m));
+}
+inline void setUniform(GLint location, const glm::mat3& m) {
+  glUniformMatrix3fv(location, 1, GL_FALSE, glm::value_ptr(m));
+}
+inline void setUniform(GLint location, glm::vec3 v) { glUniform3fv(location, 1, glm::value_ptr(v)); }
+inline void setUniform(GLint location, glm::vec2 v) { glUniform2fv(location, 1, glm::value_ptr(v)); }
+inline void setUniform(GLint location, float v) { glUniform1f(location, v); }
+inline void setUniform(GLint location, int v) { glUniform1i(location, v); }
+
+// A texture's RGBA texels as `type` (GL_UNSIGNED_BYTE for uint8_t, GL_FLOAT for float), rows top-down
+// as images run (GL's run bottom-up).
+template <typename T>
+std::vector<T> readTopDown(GLuint texture, int width, int height, GLenum type) {
+  std::vector<T> pixels(size_t(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(texture, 0, GL_RGBA, type, static_cast<GLsizei>(pixels.size() * sizeof(T)), pixels.data());
+  const size_t row = size_t(width) * 4;
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row, pixels.begin() + (height - 1 - y) * row);
+  return pixels;
+}
 
 // A mesh in GPU buffers: positions at attribute 0, normals at 1, indexed triangles.
 struct GpuMesh {

@@ -9,13 +9,6 @@ namespace host {
 
 namespace {
 
-void setUniform(GLint location, const glm::mat4& m) { glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(m)); }
-void setUniform(GLint location, const glm::mat3& m) { glUniformMatrix3fv(location, 1, GL_FALSE, glm::value_ptr(m)); }
-void setUniform(GLint location, glm::vec3 v) { glUniform3fv(location, 1, glm::value_ptr(v)); }
-void setUniform(GLint location, glm::vec2 v) { glUniform2fv(location, 1, glm::value_ptr(v)); }
-void setUniform(GLint location, float v) { glUniform1f(location, v); }
-void setUniform(GLint location, int v) { glUniform1i(location, v); }
-
 // The position-depth encoding's #defines, for every program that includes depth_codec.glsl.
 std::string positionDepthDefines(const Scene& scene) {
   if (scene.positionDepth != PositionDepth::FsoCompressed) return "";
@@ -315,26 +308,12 @@ void Renderer::tonemap(GLuint hdrTexture) {
   glPopDebugGroup();
 }
 
-namespace {
-template <typename T>
-std::vector<T> readTopDown(GLuint texture, int width, int height, GLenum format, GLenum type) {
-  std::vector<T> pixels(size_t(width) * height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(texture, 0, format, type, static_cast<GLsizei>(pixels.size() * sizeof(T)), pixels.data());
-  // GL rows run bottom-up; images run top-down.
-  const size_t row = size_t(width) * 4;
-  for (int y = 0; y < height / 2; ++y)
-    std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row, pixels.begin() + (height - 1 - y) * row);
-  return pixels;
-}
-}  // namespace
-
 std::vector<uint8_t> Renderer::readDisplay() const {
-  return readTopDown<uint8_t>(display_, targets_.width, targets_.height, GL_RGBA, GL_UNSIGNED_BYTE);
+  return readTopDown<uint8_t>(display_, targets_.width, targets_.height, GL_UNSIGNED_BYTE);
 }
 
 std::vector<float> Renderer::readLight() const {
-  return readTopDown<float>(light_, targets_.width, targets_.height, GL_RGBA, GL_FLOAT);
+  return readTopDown<float>(light_, targets_.width, targets_.height, GL_FLOAT);
 }
 
 }  // namespace host

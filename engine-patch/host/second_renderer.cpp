@@ -8,24 +8,7 @@
 namespace host {
 
 namespace {
-void setUniform(GLint location, const glm::mat4& m) { glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(m)); }
-void setUniform(GLint location, const glm::mat3& m) { glUniformMatrix3fv(location, 1, GL_FALSE, glm::value_ptr(m)); }
-void setUniform(GLint location, glm::vec3 v) { glUniform3fv(location, 1, glm::value_ptr(v)); }
-void setUniform(GLint location, glm::vec2 v) { glUniform2fv(location, 1, glm::value_ptr(v)); }
-void setUniform(GLint location, float v) { glUniform1f(location, v); }
-void setUniform(GLint location, int v) { glUniform1i(location, v); }
-
 bool isEmissive(const Material& material) { return glm::dot(material.emissive, glm::vec3(1.0f)) > 0.0f; }
-
-std::vector<uint8_t> readTopDown(GLuint texture, int width, int height) {
-  std::vector<uint8_t> pixels(size_t(width) * height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
-  const size_t row = size_t(width) * 4;  // GL rows run bottom-up; images run top-down
-  for (int y = 0; y < height / 2; ++y)
-    std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row, pixels.begin() + (height - 1 - y) * row);
-  return pixels;
-}
 }  // namespace
 
 SecondRenderer::SecondRenderer(const Scene& scene, int width, int height, bool worldPositionTarget)
@@ -236,7 +219,8 @@ void SecondRenderer::lightingPass(GLuint target, const Camera& camera, const glm
   for (const Light& light : scene_.lights) {
     if (light.type == LightType::Directional) continue;
     const glm::vec3 centre = light.type == LightType::Tube ? (light.position + light.end) * 0.5f : light.position;
-    const float radius = light.radius + (light.type == LightType::Tube ? glm::length(light.end - light.position) * 0.5f : 0.0f);
+    const float radius =
+        light.radius + (light.type == LightType::Tube ? glm::length(light.end - light.position) * 0.5f : 0.0f);
     setUniform(pointProgram_.uniform("uCentre"), centre);
     setUniform(pointProgram_.uniform("uRadius"), radius);
     setUniform(pointProgram_.uniform("uBoundRadius"), radius * 1.1f);  // the 16-segment sphere lies inside 1
@@ -263,7 +247,7 @@ void SecondRenderer::present(GLuint radiance) {
 }
 
 std::vector<uint8_t> SecondRenderer::readDisplay() const {
-  return readTopDown(display_, targets_.width, targets_.height);
+  return readTopDown<uint8_t>(display_, targets_.width, targets_.height, GL_UNSIGNED_BYTE);
 }
 
 std::vector<float> SecondRenderer::readLight() const {
