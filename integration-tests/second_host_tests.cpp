@@ -186,18 +186,11 @@ TEST(SecondHost, BenchTakesTheSecondHostAndRefusesAnUnknownOne) {
 }
 
 namespace {
-// The second host keeping world positions in a third attachment its lighting never reads, described
-// with DepthSource::WorldPosition: the plugin takes view depth from them and the frame's view matrix.
-struct WorldPositionSeams : host::SecondSeams {
+// The second host described by a layout other than its patch's (`layout`), through seams of the test's
+// own: the plugin gets the frame's view matrix unless `passViewMatrix` is false.
+struct LayoutSeams : host::SecondSeams {
   std::unique_ptr<retroaa::Plugin> plugin;
-  bool passViewMatrix = true;  // false: FrameInfo keeps its identity matrix (a host that forgot it)
-  static retroaa::GBufferLayout layoutOf(const host::SecondTargets& t) {
-    retroaa::GBufferLayout layout = patch::describeSecondHost(t);
-    layout.attachments.push_back({retroaa::AttachmentRole::ViewPosition, GL_RGBA32F, t.worldPosition});
-    layout.depthSource = retroaa::DepthSource::WorldPosition;
-    layout.lightingReadsDepth = true;  // the host's lighting still rebuilds positions from depth
-    return layout;
-  }
+  bool passViewMatrix = true;
   GLuint geometryTarget(GLuint) override { return plugin->geometryFramebuffer(); }
   void geometryDone(const host::FrameView& view) override {
     retroaa::FrameInfo frame{view.verticalFovRadians, view.nearPlane, view.farPlane};
@@ -207,6 +200,35 @@ struct WorldPositionSeams : host::SecondSeams {
   void lighting(const std::function<void(GLuint)>& pass, GLuint) override { EXPECT_TRUE(plugin->shade(pass)); }
   void frameDone() override { EXPECT_TRUE(plugin->post()); }
 };
+
+// The host keeping world positions in a third attachment its lighting never reads, described with
+// DepthSource::WorldPosition: the plugin takes view depth from them and the frame's view matrix.
+retroaa::GBufferLayout worldPositionLayout(const host::SecondTargets& t) {
+  retroaa::GBufferLayout layout = patch::describeSecondHost(t);
+  layout.attachments.push_back({retroaa::AttachmentRole::ViewPosition, GL_RGBA32F, t.worldPosition});
+  layout.depthSource = retroaa::DepthSource::WorldPosition;
+  layout.lightingReadsDepth = true;  // the host's lighting still rebuilds positions from depth
+  return layout;
+}
+
+// Three frames of `spec` in `host` under `layout` (the layout check reads back a frame later); the
+// display and the plugin's warnings.
+std::pair<app::DisplayImage, std::vector<std::string>> renderWithLayout(SecondHost& host, const std::string& spec,
+                                                                        const retroaa::GBufferLayout& layout,
+                                                                        bool passViewMatrix = true) {
+  LayoutSeams seams;
+  seams.passViewMatrix = passViewMatrix;
+  retroaa::Description description;
+  description.config = app::parseMethodSpec(spec, {}).config;
+  description.layout = layout;
+  auto created = retroaa::Plugin::create(description);
+  if (!created) throw std::runtime_error(created.error().message);
+  seams.plugin = std::move(created.value());
+  host.renderer->setSeams(&seams);
+  for (int frame = 0; frame < 3; ++frame) host.renderer->renderFrame(host.scene.camera);
+  host.renderer->setSeams(host.hooks.get());
+  return {app::DisplayImage::fromRgba8(kWidth, kHeight, host.renderer->readDisplay()), seams.plugin->warnings()};
+}
 }  // namespace
 
 TEST(SecondHost, WorldPositionsAsTheDepthSourceAntiAliasLikeTheDepthBuffer) {
@@ -218,43 +240,37 @@ TEST(SecondHost, WorldPositionsAsTheDepthSourceAntiAliasLikeTheDepthBuffer) {
   const int errorsBefore = context().debugErrorCount();
   for (const std::string spec : {"resolve", "edge", "aggregate", "adaptive"}) {
     const double fromDepth = scoring.score(host.render(spec)).edgePsnrDb;
-    WorldPositionSeams seams;
-    retroaa::Description description;
-    description.config = app::parseMethodSpec(spec, {}).config;
-    description.layout = WorldPositionSeams::layoutOf(host.renderer->targets());
-    auto created = retroaa::Plugin::create(description);
-    ASSERT_TRUE(created) << created.error().message;
-    seams.plugin = std::move(created.value());
-    host.renderer->setSeams(&seams);
-    for (int frame = 0; frame < 3; ++frame)
-      host.renderer->renderFrame(host.scene.camera);  // the layout check reads back
-    const app::DisplayImage image = app::DisplayImage::fromRgba8(kWidth, kHeight, host.renderer->readDisplay());
-    host.renderer->setSeams(host.hooks.get());
+    const auto [image, warnings] = renderWithLayout(host, spec, worldPositionLayout(host.renderer->targets()));
     const double fromWorld = scoring.score(image).edgePsnrDb;
     std::printf("%s: edge PSNR %.2f dB from world positions, %.2f dB from depth (off %.2f dB)\n", spec.c_str(),
                 fromWorld, fromDepth, offEdge);
     EXPECT_GE(fromWorld, offEdge) << spec;
     EXPECT_NEAR(fromWorld, fromDepth, 0.25) << spec;
     EXPECT_EQ(changedPixels(image, off, open), 0u) << spec << " changed background pixels";
-    for (const std::string& warning : seams.plugin->warnings()) ADD_FAILURE() << spec << ": " << warning;
+    for (const std::string& warning : warnings) ADD_FAILURE() << spec << ": " << warning;
   }
   EXPECT_EQ(context().debugErrorCount(), errorsBefore);
 }
 
 TEST(SecondHost, WorldPositionsWithoutTheViewMatrixAreNamedInAWarning) {
   SecondHost host(true);
-  WorldPositionSeams seams;
-  seams.passViewMatrix = false;
-  retroaa::Description description;
-  description.config = app::parseMethodSpec("edge", {}).config;
-  description.layout = WorldPositionSeams::layoutOf(host.renderer->targets());
-  auto created = retroaa::Plugin::create(description);
-  ASSERT_TRUE(created) << created.error().message;
-  seams.plugin = std::move(created.value());
-  host.renderer->setSeams(&seams);
-  for (int frame = 0; frame < 3; ++frame) host.renderer->renderFrame(host.scene.camera);
-  host.renderer->setSeams(host.hooks.get());
-  std::string warnings;
-  for (const std::string& warning : seams.plugin->warnings()) warnings += warning + "\n";
-  EXPECT_NE(warnings.find("FrameInfo::viewMatrix"), std::string::npos) << warnings;
+  const auto [image, warnings] = renderWithLayout(host, "edge", worldPositionLayout(host.renderer->targets()), false);
+  std::string all;
+  for (const std::string& warning : warnings) all += warning + "\n";
+  EXPECT_NE(all.find("FrameInfo::viewMatrix"), std::string::npos) << all;
+}
+
+TEST(SecondHost, WithoutALightTextureTheSlicesDrawIntoTheLightFramebuffer) {
+  // A host that names only the framebuffer it lights into (the window's, say): the slices sum in the
+  // plugin's half-float target and draw it there once, as they do for this host's 8-bit sRGB display.
+  SecondHost host;
+  const int errorsBefore = context().debugErrorCount();
+  for (const std::string spec : {"edge", "aggregate", "smaa-s2x"}) {
+    const app::DisplayImage withTexture = host.render(spec);
+    retroaa::GBufferLayout layout = patch::describeSecondHost(host.renderer->targets());
+    layout.lightTexture = 0;
+    const app::DisplayImage withoutTexture = renderWithLayout(host, spec, layout).first;
+    EXPECT_EQ(withoutTexture.rgb, withTexture.rgb) << spec;
+  }
+  EXPECT_EQ(context().debugErrorCount(), errorsBefore);
 }

@@ -43,9 +43,8 @@ Status validateLayout(const GBufferLayout& layout) {
   if (depth.kind == DepthEncoding::Kind::FsoCompressedViewZ &&
       !(depth.farDistance > 100000.0f && std::isfinite(depth.farDistance)))
     return invalid("depthEncoding.farDistance must be above 100000 m for FsoCompressedViewZ (FSO's GLOBAL_FAR_Z)");
-  if (!layout.gbufferFramebuffer || !layout.depthStencilTexture || !layout.lightFramebuffer || !layout.lightTexture)
-    return invalid("layout is missing a host framebuffer or texture (gbufferFramebuffer, depthStencilTexture, "
-                   "lightFramebuffer, lightTexture)");
+  if (!layout.gbufferFramebuffer || !layout.depthStencilTexture)
+    return invalid("layout is missing the host's G-buffer (gbufferFramebuffer, depthStencilTexture)");
   if (!layout.displayFramebuffer != !layout.displayTexture)
     return invalid("layout names only one of displayFramebuffer and displayTexture (both, or neither without post "
                    "methods)");

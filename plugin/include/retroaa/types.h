@@ -108,8 +108,10 @@ struct GBufferLayout {
   // depth there too, as it writes their attributes into the attachments. Implied by DepthSource::DepthBuffer.
   bool lightingReadsDepth = false;
   uint8_t hostStencilBits = 0x00;                           // stencil bits the host owns; retroaa leaves them alone
-  // Where the host's lighting accumulates, and its colour texture (slices composite into it): any colour
-  // format, e.g. an RGBA16F HDR target, or the host's sRGB display when it lights straight into it.
+  // Where the host's lighting accumulates (0: the default framebuffer, the window), and its colour
+  // texture: any colour format, e.g. an RGBA16F HDR target, or the host's sRGB display when it lights
+  // straight into it. Slices composite into a float texture directly; without a texture (0), or with 8 bits
+  // per channel, they sum in a half-float target of the plugin's and draw it into lightFramebuffer once.
   GLuintHandle lightFramebuffer = 0, lightTexture = 0;
   // The tonemapped display that post() filters (RGBA8 or GL_SRGB8_ALPHA8); needed only by the post
   // methods (fxaa, smaa, coverage): 0 elsewhere.

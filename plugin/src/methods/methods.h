@@ -142,7 +142,8 @@ class SliceRenderer {
   GlTexture light_, mask_, counts_;
   GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
   GlFramebuffer depthWriter_;  // the host's depth texture alone (DepthSource::DepthBuffer), else none
-  // Where the host's light target has 8 bits per channel: the slices' half-float sum and its copy there.
+  // Where the host's light texture has 8 bits per channel, or there is none: the slices' half-float sum
+  // and its copy into the host's light target.
   GlTexture accumulation_;
   GlFramebuffer presentTarget_;
   ShaderProgram writeSlice_, writeSliceDepth_, composite_, markPixels_, presentLight_;

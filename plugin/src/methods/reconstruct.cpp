@@ -24,6 +24,9 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     if (const int normal = findRole(layout, AttachmentRole::NormalGloss); normal >= 0)
       t.pixelNormal_ = layout.attachments[size_t(normal)].texture;
     t.beforeTonemap_ = context.config.reconstructBeforeTonemap;
+    if (t.beforeTonemap_ && !layout.lightTexture)
+      return Error{ErrorCode::InvalidLayout,
+                   "reconstruct_before_tonemap=on filters the light target: the layout names no lightTexture"};
     if (t.beforeTonemap_) {  // a copy of the light target to read neighbours from while writing it
       GLint format = GL_RGBA16F;
       glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);

@@ -32,16 +32,19 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
   slices->lightTarget_ = makeFramebuffer(context, "slices.light");
   glNamedFramebufferTexture(slices->lightTarget_.get(), GL_COLOR_ATTACHMENT0, slices->light_.get(), 0);
   glNamedFramebufferTexture(slices->lightTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
-  // Slices composite into the host's light target where it holds floats; into a half-float sum of the
-  // plugin's otherwise, copied into the host's target once all slices are in (presentLight).
+  // Slices composite into the host's light texture where it holds floats; into a half-float sum of the
+  // plugin's otherwise, or where the host names no light texture (it lights into a framebuffer, the
+  // window's included), written into the host's light target once all slices are in (presentLight).
   GLint redType = GL_FLOAT;
-  glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
-  if (redType != GL_FLOAT) {
+  if (layout.lightTexture) glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
+  if (redType != GL_FLOAT || !layout.lightTexture) {
     slices->accumulation_ = makeTexture(context, GL_RGBA16F, w, h, 0, "slices.accumulation", slices->bytes_);
-    slices->presentTarget_ = makeFramebuffer(context, "slices.present");
-    glNamedFramebufferTexture(slices->presentTarget_.get(), GL_COLOR_ATTACHMENT0, layout.lightTexture, 0);
-    if (Status status = checkFramebuffer(slices->presentTarget_.get(), "slices.present"); !status)
-      return status.error();
+    if (layout.lightTexture) {
+      slices->presentTarget_ = makeFramebuffer(context, "slices.present");
+      glNamedFramebufferTexture(slices->presentTarget_.get(), GL_COLOR_ATTACHMENT0, layout.lightTexture, 0);
+      if (Status status = checkFramebuffer(slices->presentTarget_.get(), "slices.present"); !status)
+        return status.error();
+    }
     auto present = context.shaders->program("common/fullscreen.vert", "slices/present_light.frag");
     if (!present) return present.error();
     slices->presentLight_ = std::move(present.value());
@@ -224,7 +227,8 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
   }
   if (accumulation_) {
     ScopedPass timed(context, "slices.present");
-    context.beginFullscreenPass(presentTarget_.get());
+    glBindFramebuffer(GL_FRAMEBUFFER, presentTarget_.get() ? presentTarget_.get() : layout.lightFramebuffer);
+    context.beginFullscreenPass(0);  // 0: the binding above (the host's may be the default framebuffer)
     glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB target encodes the linear sum
     presentLight_.use();
     glBindTextureUnit(0, accumulation_.get());
