@@ -126,8 +126,9 @@ void checkMethod(const std::string& spec) {
   const retroaa::Config granted = host.hooks->plugin().config();
   const retroaa::MethodInfo* method = retroaa::findMethod(granted.method);
   if (host.hooks->plugin().multisampledAttachment(retroaa::AttachmentRole::Albedo) != 0) {
-    // The host's G-buffer after shade() is the resolved surface: what `resolve` leaves there.
-    host.render("resolve");
+    // The host's G-buffer after shade() is the resolved surface: what `resolve` leaves there (from the
+    // same source: multisampled, or supersampled as `ssaa` makes it).
+    host.render("resolve@supersample=" + std::to_string(granted.supersample));
     EXPECT_EQ(host.gbuffer(), gbuffer) << spec << " left the host's G-buffer unlike resolve's";
   } else {
     EXPECT_EQ(offGBuffer, gbuffer) << spec << " changed the host's G-buffer";
@@ -138,7 +139,7 @@ void checkMethod(const std::string& spec) {
   const app::ErrorMetrics offError = scoring.score(off), methodError = scoring.score(image);
   std::printf("%s: edge PSNR %.2f dB (off %.2f dB), interior %.2f dB (off %.2f dB)\n", spec.c_str(),
               methodError.edgePsnrDb, offError.edgePsnrDb, methodError.interiorPsnrDb, offError.interiorPsnrDb);
-  if (method->multisampled && granted.samples > 1) {
+  if ((method->multisampled && granted.samples > 1) || granted.method == retroaa::Method::Ssaa) {
     EXPECT_GE(methodError.edgePsnrDb, offError.edgePsnrDb) << spec << " anti-aliases worse than off";
   }
 }
@@ -159,8 +160,9 @@ SECOND_HOST_METHOD(Coverage, "coverage")
 SECOND_HOST_METHOD(Reconstruct, "reconstruct")
 SECOND_HOST_METHOD(Smaa, "smaa")
 SECOND_HOST_METHOD(SmaaS2x, "smaa-s2x")
-const std::set<std::string> kMatrix = {"off",      "fxaa",     "resolve",     "edge", "per-sample", "adaptive",
-                                       "aggregate", "coverage", "reconstruct", "smaa", "smaa-s2x"};
+SECOND_HOST_METHOD(Ssaa, "ssaa")
+const std::set<std::string> kMatrix = {"off",       "fxaa",     "resolve",     "edge", "per-sample", "adaptive",
+                                       "aggregate", "coverage", "reconstruct", "smaa", "smaa-s2x",   "ssaa"};
 
 TEST(SecondHost, TheMatrixNamesEveryMethod) {
   for (const retroaa::MethodInfo& row : retroaa::methodTable())

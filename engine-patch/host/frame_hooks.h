@@ -47,6 +47,8 @@ class FrameHooks {
   virtual void targetsCreated(const HostTargets&) {}
   // gr_opengl_deferred_lighting_begin(): the framebuffer the background and models render into.
   virtual GLuint modelPassFramebuffer(GLuint stockGbuffer) { return stockGbuffer; }
+  // ...and how many times the host's width and height that framebuffer is (the model pass's viewport).
+  virtual int modelPassScale() { return 1; }
   // gr_opengl_deferred_lighting_msaa() / _end(): the model pass is done.
   virtual void modelPassEnd(const FrameView&) {}
   // After the model pass: an AA module that wants a multisampled copy of the models' depth (coverage)

@@ -123,8 +123,9 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   // gr_opengl_scene_texture_begin() + gr_opengl_deferred_lighting_begin()
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 1, -1, "host.model_pass");
   const GLuint modelTarget = hooks_->modelPassFramebuffer(gbufferFramebuffer_);
+  const int modelScale = hooks_->modelPassScale();
   glBindFramebuffer(GL_FRAMEBUFFER, modelTarget);
-  glViewport(0, 0, width, height);
+  glViewport(0, 0, width * modelScale, height * modelScale);
   glDisable(GL_BLEND);
   glDisable(GL_STENCIL_TEST);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -139,7 +140,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   glUseProgram(backgroundProgram_.get());
   setUniform(backgroundProgram_.uniform("uInverseProjection"), glm::inverse(projection));
   setUniform(backgroundProgram_.uniform("uViewToWorld"), glm::mat3(glm::inverse(view)));
-  setUniform(backgroundProgram_.uniform("uViewportSize"), glm::vec2(width, height));
+  setUniform(backgroundProgram_.uniform("uViewportSize"), glm::vec2(width, height) * float(modelScale));
   setUniform(backgroundProgram_.uniform("uSkyColor"), scene_.skyColor);
   setUniform(backgroundProgram_.uniform("uStarDensity"), scene_.starDensity);
   glBindVertexArray(emptyVertexArray_);

@@ -114,9 +114,9 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
   // Geometry: everything but the emissive objects, which the forward pass draws.
-  auto geometryInto = [&](GLuint target) {
+  auto geometryInto = [&](GLuint target, int scale) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, width, height);
+    glViewport(0, 0, width * scale, height * scale);
     const float zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(target, GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(target, GL_COLOR, 1, zero);
@@ -130,7 +130,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
     drawObjects(geometryProgram_, viewProjection, false);
     glDisable(GL_CULL_FACE);
   };
-  geometryInto(seams_->geometryTarget(gbufferFramebuffer_));
+  geometryInto(seams_->geometryTarget(gbufferFramebuffer_), seams_->geometryScale());
   stamp(1);
   FrameView view;
   view.verticalFovRadians = glm::radians(camera.fovYDegrees);
@@ -140,7 +140,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   view.farPlane = camera.farPlane;
   view.view = camera.view();
   seams_->geometryDone(view);
-  seams_->geometryAgain(geometryInto);
+  seams_->geometryAgain([&](GLuint target) { geometryInto(target, 1); });
   stamp(2);
 
   seams_->lighting([&](GLuint target) { lightingPass(target, camera, projection(camera, jitterPixels)); },

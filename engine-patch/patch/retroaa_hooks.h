@@ -24,6 +24,7 @@ class RetroaaHooks : public host::FrameHooks {
 
   void targetsCreated(const host::HostTargets& targets) override;
   GLuint modelPassFramebuffer(GLuint stockGbuffer) override;
+  int modelPassScale() override { return plugin_->geometryScale(); }
   void modelPassEnd(const host::FrameView& view) override;
   void modelPrepass(const host::ModelPrepass& pass) override;
   void lighting(const host::LightingPass& pass, GLuint stockLightFramebuffer) override;

@@ -20,11 +20,8 @@ retroaa::GBufferLayout describeSecondHost(const host::SecondTargets& t) {
 
 retroaa::Result<std::unique_ptr<SecondHostHooks>> SecondHostHooks::create(const host::SecondTargets& targets,
                                                                           const retroaa::Config& config) {
-  retroaa::Description description;
-  description.config = config;
-  description.layout = describeSecondHost(targets);
-  description.log = [](retroaa::LogLevel, const std::string& m) { std::fprintf(stderr, "retroaa: %s\n", m.c_str()); };
-  auto plugin = retroaa::Plugin::create(description);
+  auto log = [](retroaa::LogLevel, const std::string& m) { std::fprintf(stderr, "retroaa: %s\n", m.c_str()); };
+  auto plugin = retroaa::Plugin::create({config, describeSecondHost(targets), log});
   if (!plugin) return plugin.error();
   auto hooks = std::make_unique<SecondHostHooks>();
   hooks->plugin_ = std::move(plugin.value());

@@ -14,6 +14,7 @@ class SecondHostHooks : public host::SecondSeams {
   static retroaa::Result<std::unique_ptr<SecondHostHooks>> create(const host::SecondTargets&, const retroaa::Config&);
   void targetsCreated(const host::SecondTargets& t) override { report(plugin_->resize(describeSecondHost(t))); }
   GLuint geometryTarget(GLuint) override { return plugin_->geometryFramebuffer(); }
+  int geometryScale() override { return plugin_->geometryScale(); }
   void geometryDone(const host::FrameView& v) override {
     report(plugin_->resolve({v.verticalFovRadians, v.nearPlane, v.farPlane}));
   }

@@ -133,6 +133,16 @@ const std::vector<Setter>& setters() {
          return invalid("config key 'samples': unsupported sample count " + quoted(v) + " (allowed: 1, 2, 4, 8, 16)");
        },
        [](const Config& c) { return std::to_string(c.samples); }},
+      {{"supersample", "0", "0, 2, 3, 4",
+        "G-buffer methods' source: 0 multisampled (samples); m an m x m supersampled G-buffer (the host's model "
+        "pass renders at m x its viewport, Plugin::geometryScale), its m^2 sub-positions lit like samples; "
+        "reallocates"},
+       [](Config& c, const std::string& v) -> Status {
+         for (int allowed : {0, 2, 3, 4})
+           if (v == std::to_string(allowed)) return c.supersample = allowed, Status::ok();
+         return invalid("config key 'supersample': unsupported factor " + quoted(v) + " (allowed: 0, 2, 3, 4)");
+       },
+       [](const Config& c) { return std::to_string(c.supersample); }},
       {{"resolve_weighting", "median", "median, front, back, fso, mean, window",
         "how resolve weights a pixel's samples; free per frame"},
        [](Config& c, const std::string& v) {
@@ -304,7 +314,8 @@ const std::vector<Setter>& setters() {
         "files there replace built-in shaders of the same path; compile errors fall back"},
        [](Config& c, const std::string& v) { return c.shaderOverrideDirectory = v, Status::ok(); },
        [](const Config& c) { return c.shaderOverrideDirectory; }},
-      {{"measure_gpu_time", "off", "on, off", "timer and fragment-invocation queries per plugin pass, read back frames later (never waits)"},
+      {{"measure_gpu_time", "off", "on, off",
+        "timer and fragment-invocation queries per plugin pass, read back frames later (never waits)"},
        [](Config& c, const std::string& v) { return parseBool("measure_gpu_time", v, c.measureGpuTime); },
        [](const Config& c) { return std::string(c.measureGpuTime ? "on" : "off"); }},
   };

@@ -222,6 +222,11 @@ struct Plugin::Impl {
       requested.method = fallbackWithoutMultisampling();
       method = findMethod(requested.method);
     }
+    if (requested.method == Method::Ssaa && requested.supersample < 2) {
+      context.warn("method ssaa renders a supersampled G-buffer and supersample=" +
+                   std::to_string(requested.supersample) + "; using supersample=2");
+      requested.supersample = 2;
+    }
     if (requested.samples < method->minSamples && caps.maxSamples >= method->minSamples) {
       context.warn(std::string("method ") + method->name + " needs at least " + std::to_string(method->minSamples) +
                    " samples, samples=" + std::to_string(requested.samples) + " requested; using " +
@@ -233,6 +238,10 @@ struct Plugin::Impl {
       if (row.stackedOn && row.stackedOn(requested) && requested.samples < row.info.minSamples) {
         context.warn(std::string(row.info.stackKey) + " needs at least " + std::to_string(row.info.minSamples) +
                      " samples and samples=" + std::to_string(requested.samples) + "; the filter is off");
+        applySetting(requested, row.info.stackKey, "off");
+      } else if (row.stackedOn && row.stackedOn(requested) && row.info.minSamples > 1 && requested.supersample > 1) {
+        context.warn(std::string(row.info.stackKey) + " reads a multisampled G-buffer and supersample=" +
+                     std::to_string(requested.supersample) + " makes a supersampled one; the filter is off");
         applySetting(requested, row.info.stackKey, "off");
       }
     if (requested.measureGpuTime && !caps.timerQuery) {
@@ -254,7 +263,9 @@ struct Plugin::Impl {
     const std::vector<const TechniqueRow*> rows = activeRows(config);
     const uint32_t storage = storageOf(config, rows);
     const bool needMsaa = storage & kStorageMsaaGBuffer;
-    if (rebuildAll || !needMsaa || (msaa && msaa->requestedSamples() != config.samples)) {
+    if (rebuildAll || !needMsaa ||
+        (msaa &&
+         (msaa->requestedSamples() != config.samples || msaa->supersample() != std::max(config.supersample, 1)))) {
       if (rebuildAll || msaa) techniques.clear();  // techniques may hold the G-buffer's or the slices' objects
       slices.reset();
       resolvePass.reset();
@@ -269,7 +280,7 @@ struct Plugin::Impl {
     techniques.clear();  // what is not kept is freed before anything new is allocated
 
     if (needMsaa && !msaa) {
-      auto created = MsaaGBuffer::create(context, config.samples);
+      auto created = MsaaGBuffer::create(context, config.samples, config.supersample);
       if (!created) return created.error();
       msaa = std::move(created.value());
     }
@@ -357,6 +368,8 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   impl->configureBudget(Config{});
   return std::unique_ptr<Plugin>(new Plugin(std::move(impl)));
 }
+
+int Plugin::geometryScale() const { return impl_->msaa ? impl_->msaa->supersample() : 1; }
 
 GLuintHandle Plugin::prepassFramebuffer() const {
   for (const ActiveTechnique& active : impl_->techniques)

@@ -6,7 +6,11 @@
 #include "common/depth_buffer.glsl"
 #include "common/normal.glsl"
 
-#if MULTISAMPLED
+#if SUPERSAMPLE > 1  // an m×m window of a supersampled G-buffer per pixel, sub-position s at (s mod m, s div m)
+#define GBUFFER_SAMPLER sampler2D
+#define FETCH(textureName, pixel, s) \
+  texelFetch(textureName, (pixel) * SUPERSAMPLE + ivec2((s) % SUPERSAMPLE, (s) / SUPERSAMPLE), 0)
+#elif MULTISAMPLED
 #define GBUFFER_SAMPLER sampler2DMS
 #define FETCH(textureName, pixel, s) texelFetch(textureName, pixel, s)
 #else  // N = 1 uses plain textures

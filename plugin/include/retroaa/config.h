@@ -27,6 +27,7 @@ enum class Method : uint8_t {
                 // neighbouring shaded pixels after tonemapping (1)
   Smaa,         // Jimenez et al.: SMAA 1x after tonemapping (FreeSpace Open's -post_process_aa, -aa_preset 3..6) (1)
   SmaaS2x,      // SMAA S2x: SMAA 1x on two single-sample slices of the MSAA G-buffer, blended 50/50 (2)
+  Ssaa,         // ordered-grid supersampling: an m×m supersampled G-buffer, every sub-position lit (m²)
 };
 
 // How `edge` decides that a pixel's samples see more than one surface.
@@ -76,6 +77,10 @@ struct Config {
   // MSAA samples of the G-buffer for multi-sample methods: 1, 2, 4, 8 or 16. Clamped to the
   // context's GL_MAX_SAMPLES with a warning naming both counts. Changing it reallocates.
   int samples = 4;
+  // The G-buffer's source: 0 multisampled (`samples`); m = 2, 3 or 4 supersampled — an m·W × m·H
+  // G-buffer, each pixel's m×m window of sub-positions lit like samples (Holländer et al. 2013). The
+  // host's model pass then renders at Plugin::geometryScale() × its viewport. Changing it reallocates.
+  int supersample = 0;
   // How `resolve` weights a pixel's samples. Free to change every frame.
   ResolveWeighting resolveWeighting = ResolveWeighting::Median;
   // c of Eq. 1: samples within min(d1,d2)·tan(hfov/width)·c of the reference depth count as one

@@ -46,6 +46,9 @@ class RETROAA_API Plugin {
   // The framebuffer the host's model pass renders into: the plugin's MSAA G-buffer for
   // multi-sample methods, the host's own otherwise.
   GLuintHandle geometryFramebuffer() const;
+  // How many times the layout's width and height the model pass renders at into geometryFramebuffer():
+  // m with `supersample` = m for a G-buffer method, else 1. Set the viewport to it; projection unchanged.
+  int geometryScale() const;
   // The multisampled texture behind the first attachment with `role` (GL_TEXTURE_2D_MULTISAMPLE, the
   // host's format, stats().samples samples), for a host that draws into the G-buffer between the model
   // pass and resolve() (decals) through a framebuffer of its own. 0 when the method has no MSAA G-buffer

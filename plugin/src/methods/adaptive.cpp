@@ -37,6 +37,26 @@ std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY) {
   return order;
 }
 
+std::vector<int> bayerSampleOrder(int m) {
+  static const int kBayer2[4] = {0, 2, 3, 1};
+  static const int kBayer4[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
+  const int* matrix = m == 2 ? kBayer2 : m == 4 ? kBayer4 : nullptr;
+  if (!matrix) {
+    std::vector<float> centres;
+    for (int s = 0; s < m * m; ++s)
+      centres.insert(centres.end(), {(float(s % m) + 0.5f) / float(m), (float(s / m) + 0.5f) / float(m)});
+    return spreadingSampleOrder(centres);
+  }
+  std::vector<int> order(size_t(m) * m);
+  for (int s = 0; s < m * m; ++s) order[size_t(matrix[s])] = s;
+  return order;
+}
+
+std::vector<int> sampleOrder(const MsaaGBuffer& source) {
+  return source.supersample() > 1 ? bayerSampleOrder(source.supersample())
+                                  : spreadingSampleOrder(source.samplePositions());
+}
+
 namespace {
 
 class AdaptiveTechnique : public Technique {
@@ -64,10 +84,8 @@ class AdaptiveTechnique : public Technique {
     if (Status status = checkFramebuffer(t.geometryTarget_.get(), "adaptive.geometry_k"); !status)
       return status.error();
 
-    // The driver's own sample positions decide the order (queried, not assumed).
-    std::vector<float> positions(size_t(source.samples()) * 2, 0.5f);
-    if (source.multisampled()) readSamplePositions(source.framebuffer(), positions);
-    t.order_ = spreadingSampleOrder(positions);
+    // The driver's own sample positions decide the order (queried, not assumed); Bayer's on a grid.
+    t.order_ = sampleOrder(source);
     return std::unique_ptr<Technique>(std::move(technique));
   }
 

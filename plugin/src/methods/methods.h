@@ -28,12 +28,14 @@ std::string depthEncodingDefines(const GBufferLayout& layout);
 
 class MsaaGBuffer {
  public:
-  static Result<std::unique_ptr<MsaaGBuffer>> create(PluginContext& context, int samples);
+  // `supersample` = m ≥ 2: an m·W × m·H single-sample G-buffer instead, m² sub-positions per pixel.
+  static Result<std::unique_ptr<MsaaGBuffer>> create(PluginContext& context, int samples, int supersample = 0);
   GLuint framebuffer() const { return framebuffer_.get(); }
   GLuint attachment(size_t i) const { return attachments_[i].get(); }
   GLuint depthStencil() const { return depthStencil_.get(); }
   int samples() const { return samples_; }  // as allocated by the driver (may exceed the request)
   int requestedSamples() const { return requested_; }
+  int supersample() const { return supersample_; }  // m, or 1 for a multisampled G-buffer
   bool multisampled() const { return samples_ > 1 || multisampledStorage_; }
   // The driver's sample positions, x and y per allocated sample in [0, 1)²; the centre for single-sample
   // storage. Binds the G-buffer's framebuffer.
@@ -54,6 +56,7 @@ class MsaaGBuffer {
   GlFramebuffer framebuffer_;
   int samples_ = 1;
   int requested_ = 1;
+  int supersample_ = 1;
   bool multisampledStorage_ = false;
   uint64_t bytes_ = 0;
 };
@@ -155,6 +158,14 @@ class SliceRenderer {
 // The order that spreads the first k of N samples over the pixel for every k: the sample nearest the
 // centre first, then each time the one farthest from those already taken. `positions` in [0, 1)².
 std::vector<int> spreadingSampleOrder(const std::vector<float>& positionsXY);
+// Holländer et al.'s order over a supersampled pixel's m×m window (sub-position s = m·row + column): the
+// Bayer index matrices for m = 2 ([0 2; 3 1]) and m = 4 ([0 8 2 10; 12 4 14 6; 3 11 1 9; 15 7 13 5]),
+// entry v naming the v-th sub-position taken; for m = 3 (no Bayer matrix) the spreading order of the
+// grid's cell centres: the centre, then each time the cell farthest from those taken.
+std::vector<int> bayerSampleOrder(int m);
+// The order a G-buffer's samples are lit in: Bayer's for a supersampled one, the spreading order of the
+// driver's sample positions for a multisampled one.
+std::vector<int> sampleOrder(const MsaaGBuffer& source);
 
 // SMAA's subsample indices for a sample at (x, y) in its pixel ([0, 1)², the driver's position): the
 // area-texture rows of its orthogonal offsets along x and y and of its diagonal offset (smaa.cpp).

@@ -8,17 +8,21 @@
 
 namespace retroaa {
 
-Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context, int samples) {
+Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context, int samples, int supersample) {
   auto gbuffer = std::make_unique<MsaaGBuffer>();
   const GBufferLayout& layout = context.layout;
-  const int storageSamples = samples > 1 ? samples : 0;
+  // Supersampled: plain textures m× the layout's size, pixel p's sub-position s at m·p + (s mod m, s div m).
+  const int scale = supersample > 1 ? supersample : 1;
+  const int storageSamples = scale == 1 && samples > 1 ? samples : 0;
+  const int width = layout.width * scale, height = layout.height * scale;
   gbuffer->requested_ = samples;
+  gbuffer->supersample_ = scale;
   gbuffer->framebuffer_ = makeFramebuffer(context, "msaa_gbuffer");
   std::vector<GLenum> drawBuffers;
   for (size_t i = 0; i < layout.attachments.size(); ++i) {
     const std::string label = "msaa_gbuffer." + std::to_string(i);
-    gbuffer->attachments_.push_back(makeTexture(context, layout.attachments[i].internalFormat, layout.width,
-                                                layout.height, storageSamples, label.c_str(), gbuffer->bytes_));
+    gbuffer->attachments_.push_back(makeTexture(context, layout.attachments[i].internalFormat, width, height,
+                                                storageSamples, label.c_str(), gbuffer->bytes_));
     glNamedFramebufferTexture(gbuffer->framebuffer(), GLenum(GL_COLOR_ATTACHMENT0 + i),
                               gbuffer->attachments_.back().get(), 0);
     drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
@@ -26,17 +30,17 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   glNamedFramebufferDrawBuffers(gbuffer->framebuffer(), GLsizei(drawBuffers.size()), drawBuffers.data());
   // The host's depth format: its model pass (depth function, reversed-Z, clear value) runs unchanged.
   const GLenum depthFormat = sizedDepthFormat(layout.depthStencilTexture);
-  gbuffer->depthStencil_ = makeTexture(context, depthFormat, layout.width, layout.height, storageSamples,
-                                       "msaa_gbuffer.depth_stencil", gbuffer->bytes_);
+  gbuffer->depthStencil_ =
+      makeTexture(context, depthFormat, width, height, storageSamples, "msaa_gbuffer.depth_stencil", gbuffer->bytes_);
   glNamedFramebufferTexture(gbuffer->framebuffer(),
                             hasStencil(depthFormat) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                             gbuffer->depthStencil(), 0);
   if (Status status = checkFramebuffer(gbuffer->framebuffer(), "msaa_gbuffer"); !status) return status.error();
   GLint allocated = 1;
   if (storageSamples > 0) glGetTextureLevelParameteriv(gbuffer->depthStencil(), 0, GL_TEXTURE_SAMPLES, &allocated);
-  gbuffer->samples_ = std::max(allocated, 1);
+  gbuffer->samples_ = scale > 1 ? scale * scale : std::max(allocated, 1);
   gbuffer->multisampledStorage_ = storageSamples > 0;
-  if (gbuffer->samples_ != samples)
+  if (scale == 1 && gbuffer->samples_ != samples)
     context.warn("samples=" + std::to_string(samples) + " requested, the driver allocated " +
                  std::to_string(gbuffer->samples_) + " per pixel; resolving all " + std::to_string(gbuffer->samples_));
   return gbuffer;
@@ -44,7 +48,14 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
 
 std::vector<float> MsaaGBuffer::samplePositions() const {
   std::vector<float> positions(size_t(samples_) * 2, 0.5f);
-  if (multisampled()) readSamplePositions(framebuffer(), positions);
+  if (supersample_ > 1) {
+    for (int s = 0; s < samples_; ++s) {  // the ordered grid's cell centres
+      positions[size_t(s) * 2] = (float(s % supersample_) + 0.5f) / float(supersample_);
+      positions[size_t(s) * 2 + 1] = (float(s / supersample_) + 0.5f) / float(supersample_);
+    }
+  } else if (multisampled()) {
+    readSamplePositions(framebuffer(), positions);
+  }
   return positions;
 }
 
@@ -74,7 +85,7 @@ std::string depthEncodingDefines(const GBufferLayout& layout) {
 std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOutputs) const {
   const size_t count = layout.attachments.size();
   std::string d = defineLine("SAMPLES", samples_) + defineLine("MULTISAMPLED", multisampled()) +
-                  defineLine("ATTACHMENT_COUNT", int(count)) +
+                  defineLine("SUPERSAMPLE", supersample_) + defineLine("ATTACHMENT_COUNT", int(count)) +
                   defineLine("POSITION_ATTACHMENT", findRole(layout, AttachmentRole::ViewPosition)) +
                   defineLine("NORMAL_ATTACHMENT", findRole(layout, AttachmentRole::NormalGloss)) +
                   defineLine("ALBEDO_ATTACHMENT", findRole(layout, AttachmentRole::Albedo)) +
