@@ -70,7 +70,7 @@ class ResolvePass {
   Status run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
   // The same resolve into the host's attachments only (its depth holds the resolved depth already),
   // where `slices` overwrote them: after the slices, so that the host's G-buffer holds the resolved
-  // surface again.
+  // surface again. Where the slices wrote the host's depth too (writesHostDepth), the whole resolve again.
   Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
                  const SliceRenderer& slices);
 
