@@ -34,6 +34,13 @@ void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+void PluginContext::beginDepthWritingPass(GLuint framebuffer) const {
+  beginFullscreenPass(framebuffer);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+}
+
 ScopedPass::ScopedPass(PluginContext& context, const char* name, uint64_t minimumBytes) : context_(context) {
   const std::string label = std::string("retroaa.") + name;
   glPushDebugGroup(GL_DEBUG_SOURCE_THIRD_PARTY, 0, -1, label.c_str());

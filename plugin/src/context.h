@@ -43,6 +43,9 @@ struct PluginContext {
   // Binds `framebuffer` (0: leave the binding) with the layout's viewport and plain state: no blend,
   // depth or stencil test, culling or scissor; all colour channels written.
   void beginFullscreenPass(GLuint framebuffer) const;
+  // The same, for a pass that writes gl_FragDepth at every pixel it draws (the depth test enabled with
+  // GL_ALWAYS: GL writes depth only with the test on).
+  void beginDepthWritingPass(GLuint framebuffer) const;
 };
 
 // Measures one pass into the frame's statistics when the config asks for it (GPU time, fragment

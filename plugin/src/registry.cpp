@@ -15,7 +15,6 @@ Result<std::unique_ptr<Technique>> createCoverageTechnique(PluginContext&, Share
 Result<std::unique_ptr<Technique>> createReconstructTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createSmaaTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createSmaaS2xTechnique(PluginContext&, SharedTargets&);
-Result<std::unique_ptr<Technique>> createSsaaTechnique(PluginContext&, SharedTargets&);
 
 namespace {
 
@@ -83,12 +82,13 @@ std::vector<TechniqueRow>& rows() {
         "per-sample", "per-sample", "per-sample@samples=2,per-sample,per-sample@samples=8"},
        kSliced,
        createEdgeTechnique},
-      // Regression runs and the tuner leave it out: at m² lights per pixel it is a reference, not a setting.
+      // per-sample's technique in Bayer order (edge.cpp). Regression runs and the tuner leave it out: at m²
+      // lights per pixel it is a reference, not a setting.
       {{Method::Ssaa, "ssaa",
         "ordered-grid supersampling: an m x m supersampled G-buffer (supersample=m), every sub-position lit", false, 1,
         "ssaa@supersample=2", "", ""},
        kSliced,
-       createSsaaTechnique},
+       createEdgeTechnique},
   };
   return table;
 }

@@ -41,12 +41,7 @@ std::vector<int> bayerSampleOrder(int m) {
   static const int kBayer2[4] = {0, 2, 3, 1};
   static const int kBayer4[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
   const int* matrix = m == 2 ? kBayer2 : m == 4 ? kBayer4 : nullptr;
-  if (!matrix) {
-    std::vector<float> centres;
-    for (int s = 0; s < m * m; ++s)
-      centres.insert(centres.end(), {(float(s % m) + 0.5f) / float(m), (float(s / m) + 0.5f) / float(m)});
-    return spreadingSampleOrder(centres);
-  }
+  if (!matrix) return spreadingSampleOrder(orderedGridPositions(m));
   std::vector<int> order(size_t(m) * m);
   for (int s = 0; s < m * m; ++s) order[size_t(matrix[s])] = s;
   return order;

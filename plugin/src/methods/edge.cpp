@@ -1,5 +1,9 @@
-// `edge` (Thibieroz) and `per-sample`: the per-pixel slice count from an edge detector; per-sample's
-// detector marks every pixel. The slices light N samples where the count is N, with weights 1 / N.
+// `edge` (Thibieroz), `per-sample` and `ssaa`: the per-pixel slice count from an edge detector; per-sample's
+// and ssaa's detector marks every pixel. The slices light N samples where the count is N, with weights 1 / N.
+// `ssaa` is ordered-grid supersampling, the reference of Holländer et al.'s Table 1: every sub-position of
+// an m×m supersampled G-buffer (the grant raises `supersample` 0 to 2), lit in the Bayer order `adaptive`
+// takes them in, so that `adaptive` forced to m² samples composites the same lights in the same order and
+// equals it bit for bit.
 #include <cmath>
 #include <string>
 
@@ -11,7 +15,8 @@ namespace retroaa {
 namespace {
 
 EdgeDetector detectorFor(const Config& config) {
-  return config.method == Method::PerSample ? EdgeDetector::EveryPixel : config.edgeDetector;
+  return config.method == Method::PerSample || config.method == Method::Ssaa ? EdgeDetector::EveryPixel
+                                                                              : config.edgeDetector;
 }
 
 class EdgeTechnique : public Technique {
@@ -27,6 +32,7 @@ class EdgeTechnique : public Technique {
                                             {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthCloseness", "uNormalCosine"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
+    if (context.config.method == Method::Ssaa) technique->order_ = sampleOrder(*shared.msaa);
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
@@ -39,6 +45,13 @@ class EdgeTechnique : public Technique {
     return shared.slices->writeMask(context, program_.get(), stencilExport_);
   }
 
+  SliceRenderer::Plan slicePlan(PluginContext&, SharedTargets&) override {
+    SliceRenderer::Plan plan;
+    plan.sampleOrder = order_;
+    plan.firstSliceEverywhere = !order_.empty();  // ssaa: as adaptive writes its first slice
+    return plan;
+  }
+
   // The depth detector's closeness trades time for quality continuously.
   bool followsBudget(const Config& config) const override {
     return config.method == Method::Edge && config.edgeDetector == EdgeDetector::Depth;
@@ -48,6 +61,7 @@ class EdgeTechnique : public Technique {
  private:
   ShaderProgram program_;
   EdgeDetector detector_ = EdgeDetector::Coverage;
+  std::vector<int> order_;  // ssaa's Bayer order; empty: samples in index order
   bool stencilExport_ = false;
 };
 

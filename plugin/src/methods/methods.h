@@ -20,6 +20,9 @@ namespace retroaa {
 // The uniform a slice writer's depth variant declares (common/gbuffer.glsl, WRITE_DEPTH).
 #define RETROAA_SLICE_DEPTH_UNIFORMS "uMinCount"
 
+// The cell centres of an m×m grid over the pixel, x and y per cell in [0, 1)², cell s = m·row + column:
+// a supersampled G-buffer's sub-positions.
+std::vector<float> orderedGridPositions(int m);
 // The index of the layout's first attachment with `role`; -1 where it has none.
 int findRole(const GBufferLayout& layout, AttachmentRole role);
 // The #defines common/depth.glsl, depth_buffer.glsl and normal.glsl need for the layout's depth source and

@@ -46,16 +46,17 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   return gbuffer;
 }
 
+std::vector<float> orderedGridPositions(int m) {
+  std::vector<float> positions;
+  for (int s = 0; s < m * m; ++s)
+    positions.insert(positions.end(), {(float(s % m) + 0.5f) / float(m), (float(s / m) + 0.5f) / float(m)});
+  return positions;
+}
+
 std::vector<float> MsaaGBuffer::samplePositions() const {
+  if (supersample_ > 1) return orderedGridPositions(supersample_);
   std::vector<float> positions(size_t(samples_) * 2, 0.5f);
-  if (supersample_ > 1) {
-    for (int s = 0; s < samples_; ++s) {  // the ordered grid's cell centres
-      positions[size_t(s) * 2] = (float(s % supersample_) + 0.5f) / float(supersample_);
-      positions[size_t(s) * 2 + 1] = (float(s / supersample_) + 0.5f) / float(supersample_);
-    }
-  } else if (multisampled()) {
-    readSamplePositions(framebuffer(), positions);
-  }
+  if (multisampled()) readSamplePositions(framebuffer(), positions);
   return positions;
 }
 

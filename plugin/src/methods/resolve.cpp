@@ -59,10 +59,7 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
     uint64_t written = bytesPerTexel(sizedDepthFormat(context.layout.depthStencilTexture));
     for (const Attachment& attachment : context.layout.attachments) written += bytesPerTexel(attachment.internalFormat);
     ScopedPass timed(context, "resolve", source.bytes() + written * context.pixelCount());
-    context.beginFullscreenPass(hostTarget_.get());
-    glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
+    context.beginDepthWritingPass(hostTarget_.get());
     drawResolve(context, program_, source, frame);
   }
   checkLayout(context, source);
@@ -138,10 +135,7 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
                             const SliceRenderer& slices) {
   ScopedPass timed(context, "resolve.restore");
   if (slices.writesHostDepth()) {  // the slices wrote the host's depth as well: the whole resolve again
-    context.beginFullscreenPass(hostTarget_.get());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
+    context.beginDepthWritingPass(hostTarget_.get());
     drawResolve(context, program_, source, frame);
     return Status::ok();
   }

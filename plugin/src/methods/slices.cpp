@@ -171,10 +171,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       else
         context.statistics->addEvaluations(context.pixelCount());
       if (writesHostDepth()) {  // the same pixels' depth, selected by the counts instead of the stencil
-        context.beginFullscreenPass(depthWriter_.get());
-        glEnable(GL_DEPTH_TEST);  // depth writes need the test enabled; ALWAYS passes every pixel
-        glDepthFunc(GL_ALWAYS);
-        glDepthMask(GL_TRUE);
+        context.beginDepthWritingPass(depthWriter_.get());
         const ShaderProgram* program = useWriter(plan.writeDepthProgram, writeSliceDepth_);
         const int minCount = slice > 0 ? slice + 1 : plan.firstSliceEverywhere ? 0 : 2;
         program->set("uMinCount", minCount);
