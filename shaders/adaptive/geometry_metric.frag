@@ -4,15 +4,40 @@
 //   k_d = c_d · variance of the samples' depths, measured in pixel footprints at the mean depth
 //         (d / (d̄ · tan(hfov / width))): scale-invariant, so a ship at 10 km and one at 10 m behave alike;
 //   k_n = c_n · sqrt(1 − min_i |n̄ · n_i|), the opening of the pixel's normal cone;
-// geometry beside background refines fully; background alone needs one sample.
+// geometry beside background refines fully; background alone needs one sample, unless its stored
+// radiance varies over the window.
+// Not the paper's: k_e, the shading metric's rule applied to the emissive attachment across the
+// pixel's own samples. Emission is radiance the G-buffer already holds, so its sub-pixel detail (stars
+// in a supersampled sky, glow-map lines) is shading the first lit sample usually misses.
 #include "common/gbuffer.glsl"
 uniform float uFootprintTan;
 uniform float uDepthScale;
 uniform float uNormalScale;
+uniform float uShadingScale;  // the shading metric's c_s, t_min and t_edge
+uniform float uThresholdMin;
+uniform float uThresholdEdge;
 layout(location = 0) out float outGeometryK;
+
+float emissiveK(ivec2 pixel) {
+#if EMISSIVE_ATTACHMENT >= 0
+  float lMin = 1.0, lMax = 0.0;
+  for (int s = 0; s < SAMPLES; ++s) {
+    vec3 c = FETCH(uAttachments[EMISSIVE_ATTACHMENT], pixel, s).rgb;
+    float l = dot(max(c, vec3(0.0)), vec3(0.2126, 0.7152, 0.0722));
+    l = isnan(l) || isinf(l) ? 1.0 : l / (1.0 + l);  // the shading metric's display-like scale
+    lMin = min(lMin, l);
+    lMax = max(lMax, l);
+  }
+  float range = lMax - lMin;
+  return range < max(uThresholdMin, lMax * uThresholdEdge) ? 0.0 : uShadingScale * float(SAMPLES) * range;
+#else
+  return 0.0;
+#endif
+}
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float kEmissive = emissiveK(pixel);
   int background = 0;
   float sum = 0.0;
   vec3 normalSum = vec3(0.0);
@@ -25,7 +50,7 @@ void main() {
     normalSum += dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
 #endif
   }
-  if (background == SAMPLES) { outGeometryK = 0.0; return; }
+  if (background == SAMPLES) { outGeometryK = min(kEmissive, float(SAMPLES)); return; }
   if (background > 0) { outGeometryK = float(SAMPLES); return; }
   float mean = sum / float(SAMPLES);
   float footprint = mean * uFootprintTan;
@@ -44,6 +69,6 @@ void main() {
   float variance = max(sumSquares / float(SAMPLES) - pow(sumFootprints / float(SAMPLES), 2.0), 0.0);
   float kDepth = uDepthScale * variance;
   float kNormal = uNormalScale * sqrt(max(1.0 - minCosine, 0.0));
-  float k = max(kDepth, kNormal);
+  float k = max(max(kDepth, kNormal), kEmissive);
   outGeometryK = isnan(k) ? float(SAMPLES) : min(k, float(SAMPLES));
 }

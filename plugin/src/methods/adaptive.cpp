@@ -64,7 +64,8 @@ class AdaptiveTechnique : public Technique {
     t.stencilExport_ = context.capabilities.stencilExport;
     auto geometry = context.shaders->program("common/fullscreen.vert", "adaptive/geometry_metric.frag",
                                              source.shaderDefines(layout, false),
-                                             {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthScale", "uNormalScale"});
+                                             {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthScale", "uNormalScale", "uShadingScale", "uThresholdMin",
+                                              "uThresholdEdge"});
     if (!geometry) return geometry.error();
     t.geometryProgram_ = std::move(geometry.value());
     auto shading = context.shaders->program(
@@ -92,6 +93,9 @@ class AdaptiveTechnique : public Technique {
     const float budget = float(context.budgetScale);  // 1 without a budget
     geometryProgram_.set("uDepthScale", context.config.adaptiveDepthScale * budget);
     geometryProgram_.set("uNormalScale", context.config.adaptiveNormalScale * budget);
+    geometryProgram_.set("uShadingScale", context.config.adaptiveShadingScale * budget);
+    geometryProgram_.set("uThresholdMin", context.config.adaptiveThresholdMin);
+    geometryProgram_.set("uThresholdEdge", context.config.adaptiveThresholdEdge);
     context.drawFullscreen();
     return Status::ok();
   }

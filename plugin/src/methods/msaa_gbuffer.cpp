@@ -91,6 +91,7 @@ std::string MsaaGBuffer::shaderDefines(const GBufferLayout& layout, bool withOut
                   defineLine("NORMAL_ATTACHMENT", findRole(layout, AttachmentRole::NormalGloss)) +
                   defineLine("ALBEDO_ATTACHMENT", findRole(layout, AttachmentRole::Albedo)) +
                   defineLine("SPECULAR_ATTACHMENT", findRole(layout, AttachmentRole::Specular)) +
+                  defineLine("EMISSIVE_ATTACHMENT", findRole(layout, AttachmentRole::Emissive)) +
                   depthEncodingDefines(layout);
   std::string store = "#define STORE_OUTPUTS(v)";
   for (size_t i = 0; i < count && withOutputs; ++i) {
