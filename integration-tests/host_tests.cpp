@@ -127,9 +127,9 @@ TEST(SceneFile, ErrorsNameFileFieldAndExpectation) {
 }
 
 TEST(ModelLoading, ReadsObjAndGltf) {
-  const host::Mesh obj = host::loadModel(testDataPath("fixtures/quad.obj"));
+  const host::Mesh obj = host::mergeParts(host::loadModel(testDataPath("fixtures/quad.obj")));
   EXPECT_EQ(obj.triangleCount(), 2u);
-  const host::Mesh gltf = host::loadModel(testDataPath("fixtures/triangle.gltf"));
+  const host::Mesh gltf = host::mergeParts(host::loadModel(testDataPath("fixtures/triangle.gltf")));
   EXPECT_EQ(gltf.triangleCount(), 1u);
   for (const host::Vertex& v : gltf.vertices) EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
   EXPECT_THROW(host::loadModel(testDataPath("fixtures/not_a_model.obj")), host::ModelLoadError);
@@ -226,7 +226,7 @@ TEST(ModelLoading, NonFiniteVerticesAreRefusedOrLeftOutWithAWord) {
     EXPECT_NE(message.find("nothing of the model is usable"), std::string::npos) << message;
   }
   std::vector<std::string> warnings;
-  const host::Mesh half = host::loadModel(testDataPath("fixtures/half_non_finite.obj"), &warnings);
+  const host::Mesh half = host::mergeParts(host::loadModel(testDataPath("fixtures/half_non_finite.obj"), &warnings));
   EXPECT_EQ(half.indices.size(), 3u);
   for (const host::Vertex& v : half.vertices) EXPECT_TRUE(std::isfinite(v.position.x + v.position.y + v.position.z));
   ASSERT_EQ(warnings.size(), 1u);

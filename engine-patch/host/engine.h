@@ -4,11 +4,13 @@
 // SecondSeams) and its own patch in engine-patch/patch/.
 #pragma once
 
+#include "material_textures.h"
 #include "scene.h"
 
 #include <epoxy/gl.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,9 +49,13 @@ class Engine {
 
   bool measureTime = false;  // timer queries around each pass (waits for the GPU)
   const HostTimings& timings() const { return timings_; }
+  // The material textures' LOD bias (0 by default); the ground truth sets −log2 of its samples per axis.
+  void setTextureLodBias(float bias) { materialTextures_->setLodBias(bias); }
+  const MaterialTextures& materialTextures() const { return *materialTextures_; }
 
  protected:
   HostTimings timings_;
+  std::unique_ptr<MaterialTextures> materialTextures_;  // created with the scene's meshes
 };
 
 }  // namespace host

@@ -112,12 +112,18 @@ GpuMesh uploadMesh(const Mesh& mesh) {
   gpu.vertexArray = VertexArray(vao);
   glVertexArrayVertexBuffer(vao, 0, gpu.vertices, 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao, gpu.indices);
-  glEnableVertexArrayAttrib(vao, 0);
-  glEnableVertexArrayAttrib(vao, 1);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
-  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
-  glVertexArrayAttribBinding(vao, 0, 0);
-  glVertexArrayAttribBinding(vao, 1, 0);
+  const struct {
+    GLint components;
+    size_t offset;
+  } attributes[] = {{3, offsetof(Vertex, position)},
+                    {3, offsetof(Vertex, normal)},
+                    {2, offsetof(Vertex, uv)},
+                    {4, offsetof(Vertex, tangent)}};
+  for (GLuint a = 0; a < 4; ++a) {
+    glEnableVertexArrayAttrib(vao, a);
+    glVertexArrayAttribFormat(vao, a, attributes[a].components, GL_FLOAT, GL_FALSE, GLuint(attributes[a].offset));
+    glVertexArrayAttribBinding(vao, a, 0);
+  }
   gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
   return gpu;
 }

@@ -53,11 +53,13 @@ inline void deleteBuffers(GLsizei n, const GLuint* names) { glDeleteBuffers(n, n
 inline void deleteFramebuffers(GLsizei n, const GLuint* names) { glDeleteFramebuffers(n, names); }
 inline void deleteVertexArrays(GLsizei n, const GLuint* names) { glDeleteVertexArrays(n, names); }
 inline void deleteQueries(GLsizei n, const GLuint* names) { glDeleteQueries(n, names); }
+inline void deleteSamplers(GLsizei n, const GLuint* names) { glDeleteSamplers(n, names); }
 using Texture = GlName<deleteTextures>;
 using Buffer = GlName<deleteBuffers>;
 using Framebuffer = GlName<deleteFramebuffers>;
 using VertexArray = GlName<deleteVertexArrays>;
 using Query = GlName<deleteQueries>;
+using Sampler = GlName<deleteSamplers>;
 
 class Program {
  public:
@@ -104,7 +106,8 @@ std::vector<T> readTopDown(GLuint texture, int width, int height, GLenum type) {
   return pixels;
 }
 
-// A mesh in GPU buffers: positions at attribute 0, normals at 1, indexed triangles.
+// A mesh in GPU buffers: positions at attribute 0, normals at 1, texture coordinates at 2, tangents
+// at 3; indexed triangles.
 struct GpuMesh {
   VertexArray vertexArray;
   Buffer vertices, indices;

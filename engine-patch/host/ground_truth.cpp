@@ -30,6 +30,8 @@ GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int sample
   glCreateVertexArrays(1, &vao);
   VertexArray emptyVertexArray(vao);
   const float weight = 1.0f / float(samplesPerAxis * samplesPerAxis);
+  // Each supersample filters textures over its own footprint, 1/s of a pixel: as an s× larger render.
+  renderer.setTextureLodBias(-std::log2(float(samplesPerAxis)));
   for (int sy = 0; sy < samplesPerAxis; ++sy)
     for (int sx = 0; sx < samplesPerAxis; ++sx) {
       const glm::vec2 jitter((sx + 0.5f) / samplesPerAxis - 0.5f, (sy + 0.5f) / samplesPerAxis - 0.5f);
@@ -68,6 +70,7 @@ GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int sample
     }
   }
   truth.radiance = std::move(flipped);
+  renderer.setTextureLodBias(0.0f);
   renderer.setStockPath(false);
   return truth;
 }

@@ -31,6 +31,7 @@ Renderer::Renderer(const Scene& scene, int width, int height)
       emissiveProgram_("shaders/fullscreen.vert", "shaders/emissive.frag", positionDepthDefines(scene)),
       tonemapProgram_("shaders/fullscreen.vert", "shaders/tonemap.frag") {
   for (const Object& object : scene_.objects) meshes_.push_back(uploadMesh(object.mesh));
+  materialTextures_ = std::make_unique<MaterialTextures>(scene_.materials);
   // Light volumes must contain their sphere: a 16-segment sphere's faces sit inside radius 1, so
   // the volume is scaled up by 1/cos(pi/16)^2 when drawn.
   sphereVolume_ = uploadMesh(generate::sphere(1.0f, 3));
@@ -213,9 +214,13 @@ void Renderer::drawModels(const Camera& camera, const glm::mat4& projection) {
     setUniform(modelProgram_.uniform("uSpecular"), material.specular);
     setUniform(modelProgram_.uniform("uGloss"), material.gloss);
     setUniform(modelProgram_.uniform("uEmissive"), material.emissive);
+    setUniform(modelProgram_.uniform("uUvScale"), material.maps.uvScale);
+    setUniform(modelProgram_.uniform("uNormalMapped"), material.maps.normal ? 1 : 0);
+    materialTextures_->bind(size_t(object.material));
     glBindVertexArray(meshes_[i].vertexArray);
     glDrawElements(GL_TRIANGLES, meshes_[i].indexCount, GL_UNSIGNED_INT, nullptr);
   }
+  materialTextures_->unbind();
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
 }

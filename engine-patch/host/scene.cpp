@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include "procedural.h"
+
 #include "gl_objects.h"
 
 #include <nlohmann/json.hpp>
@@ -97,6 +99,45 @@ class Reader {
   const json& node_;
   std::string path_;
 };
+
+// A material's maps: "procedural" generates a set, the *_map keys name image files (relative to the
+// scene) and replace the generated map of their role.
+MaterialMaps readMaps(const Reader& m, const std::string& baseDirectory) {
+  MaterialMaps maps;
+  if (m.has("procedural")) {
+    const Reader p = m.child("procedural");
+    p.expectObject({"pattern", "texels", "seed", "glow"});
+    ProceduralPattern pattern;
+    if (p.has("pattern")) pattern.pattern = p.child("pattern").string();
+    if (p.has("texels")) pattern.texels = p.child("texels").integer(16, 2048);
+    if (pattern.texels & (pattern.texels - 1)) p.child("texels").fail("expected a power of two");
+    if (p.has("seed")) pattern.seed = uint32_t(p.child("seed").integer(0, 1 << 30));
+    pattern.glow = p.numberOr("glow", 0.0f, 0.0f, 1.0f);
+    try {
+      maps = generateMaps(pattern);
+    } catch (const TextureError& e) {
+      p.child("pattern").fail(e.what());
+    }
+  }
+  const std::pair<const char*, SharedTextureImage MaterialMaps::*> files[] = {
+      {"albedo_map", &MaterialMaps::albedo},
+      {"normal_map", &MaterialMaps::normal},
+      {"specular_map", &MaterialMaps::specular},
+      {"emissive_map", &MaterialMaps::emissive}};
+  for (const auto& [key, role] : files) {
+    if (!m.has(key)) continue;
+    const std::filesystem::path file = m.child(key).string();
+    const std::string resolved =
+        file.is_absolute() ? file.string() : (std::filesystem::path(baseDirectory) / file).string();
+    try {
+      maps.*role = readTextureFile(resolved);
+    } catch (const TextureError& e) {
+      m.child(key).fail(e.what());
+    }
+  }
+  maps.uvScale = m.numberOr("uv_scale", 1.0f, 1e-4f, 1e4f);
+  return maps;
+}
 
 glm::mat4 readTransform(const Reader& r) {
   r.expectObject({"translate", "rotate_deg", "scale"});
@@ -304,13 +345,15 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   const Reader materials = root.child("materials");
   for (size_t i = 0; i < materials.arraySize(); ++i) {
     const Reader m = materials.element(i);
-    m.expectObject({"name", "albedo", "specular", "gloss", "emissive"});
+    m.expectObject({"name", "albedo", "specular", "gloss", "emissive", "procedural", "albedo_map", "normal_map",
+                    "specular_map", "emissive_map", "uv_scale"});
     Material material;
     material.name = m.child("name").string();
     material.albedo = m.vec3Or("albedo", material.albedo, 0.0f, 1.0f);
     material.specular = m.vec3Or("specular", material.specular, 0.0f, 1.0f);
     material.gloss = m.numberOr("gloss", material.gloss, 0.0f, 1.0f);
     material.emissive = m.vec3Or("emissive", material.emissive, 0.0f, 1e4f);
+    material.maps = readMaps(m, baseDirectory);
     scene.materials.push_back(material);
   }
   if (scene.materials.empty()) materials.fail("at least one material is required");
@@ -324,8 +367,10 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
     Object object;
     object.name = o.has("name") ? o.child("name").string() : "object" + std::to_string(i);
     if (o.has("generator") == o.has("model")) o.fail("needs exactly one of 'generator' or 'model'");
+    std::vector<ModelPart> parts;  // a model's own materials, unless "material" overrides them
     if (o.has("generator")) {
       object.mesh = readGenerator(o.child("generator"));
+      if (!o.has("material")) o.fail("missing required key 'material'");
     } else {
       const std::filesystem::path model = o.child("model").string();
       const std::string resolved =
@@ -335,16 +380,19 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
       if (!std::filesystem::is_regular_file(resolved, error))
         o.child("model").fail("'" + resolved + "' is not a regular file");
       try {
-        object.mesh = loadModel(resolved);
+        parts = loadModel(resolved);
       } catch (const ModelLoadError& e) {
         o.child("model").fail(e.what());
       }
+      if (o.has("material")) object.mesh = mergeParts(parts), parts.clear();
     }
-    const std::string materialName = o.child("material").string();
-    object.material = -1;
-    for (size_t m = 0; m < scene.materials.size(); ++m)
-      if (scene.materials[m].name == materialName) object.material = static_cast<int>(m);
-    if (object.material < 0) o.child("material").fail("no material named '" + materialName + "'");
+    if (o.has("material")) {
+      const std::string materialName = o.child("material").string();
+      object.material = -1;
+      for (size_t m = 0; m < scene.materials.size(); ++m)
+        if (scene.materials[m].name == materialName) object.material = static_cast<int>(m);
+      if (object.material < 0) o.child("material").fail("no material named '" + materialName + "'");
+    }
     if (o.has("transform")) object.transform = readTransform(o.child("transform"));
     // "repeat": {"count": n, "offset": [x,y,z]} places n copies, each shifted by offset.
     int count = 1;
@@ -355,15 +403,33 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
       count = rep.child("count").integer(1, 10000);
       offset = rep.child("offset").vec3();
     }
-    triangles += object.mesh.triangleCount() * size_t(count);
-    if (triangles > kMaxSceneTriangles)
-      o.fail("the scene exceeds " + std::to_string(kMaxSceneTriangles) + " triangles (this object brings it to " +
-             std::to_string(triangles) + ")");
-    for (int c = 0; c < count; ++c) {
-      Object copy = object;
-      copy.transform = glm::translate(glm::mat4(1.0f), offset * float(c)) * object.transform;
-      if (count > 1) copy.name += "#" + std::to_string(c);
-      scene.objects.push_back(std::move(copy));
+    // Without "material", each of the model's materials becomes a scene material ("<object>/<name>") and
+    // each part an object of its own.
+    std::vector<Object> pieces;
+    for (ModelPart& part : parts) {
+      Material material;
+      material.name = object.name + "/" + part.materialName;
+      material.albedo = part.albedo;
+      material.emissive = part.emissive;
+      material.maps = part.maps;
+      scene.materials.push_back(material);
+      Object piece = object;
+      piece.mesh = std::move(part.mesh);
+      piece.material = int(scene.materials.size() - 1);
+      pieces.push_back(std::move(piece));
+    }
+    if (parts.empty()) pieces.push_back(std::move(object));
+    for (const Object& piece : pieces) {
+      triangles += piece.mesh.triangleCount() * size_t(count);
+      if (triangles > kMaxSceneTriangles)
+        o.fail("the scene exceeds " + std::to_string(kMaxSceneTriangles) + " triangles (this object brings it to " +
+               std::to_string(triangles) + ")");
+      for (int c = 0; c < count; ++c) {
+        Object copy = piece;
+        copy.transform = glm::translate(glm::mat4(1.0f), offset * float(c)) * piece.transform;
+        if (count > 1) copy.name += "#" + std::to_string(c);
+        scene.objects.push_back(std::move(copy));
+      }
     }
   }
 

@@ -46,6 +46,8 @@ struct Material {
   glm::vec3 specular{0.04f};
   float gloss = 0.5f;  // 0 rough … 1 mirror-like
   glm::vec3 emissive{0.0f};
+  // Maps multiply the constants above (docs/scenes.md); none: the constants alone.
+  MaterialMaps maps;
 };
 
 struct Object {

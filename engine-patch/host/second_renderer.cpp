@@ -8,7 +8,7 @@
 namespace host {
 
 namespace {
-bool isEmissive(const Material& material) { return glm::dot(material.emissive, glm::vec3(1.0f)) > 0.0f; }
+bool emits(const Material& material) { return glm::dot(material.emissive, glm::vec3(1.0f)) > 0.0f; }
 }  // namespace
 
 SecondRenderer::SecondRenderer(const Scene& scene, int width, int height, bool worldPositionTarget)
@@ -20,6 +20,7 @@ SecondRenderer::SecondRenderer(const Scene& scene, int width, int height, bool w
       forwardProgram_("shaders/second/geometry.vert", "shaders/second/forward.frag"),
       presentProgram_("shaders/fullscreen.vert", "shaders/second/present.frag") {
   for (const Object& object : scene_.objects) meshes_.push_back(uploadMesh(object.mesh));
+  materialTextures_ = std::make_unique<MaterialTextures>(scene_.materials);
   sphere_ = uploadMesh(generate::sphere(1.0f, 3));
   GLuint vao = 0;
   glCreateVertexArrays(1, &vao);
@@ -81,22 +82,30 @@ glm::mat4 SecondRenderer::projection(const Camera& camera, glm::vec2 jitterPixel
   return p;
 }
 
-void SecondRenderer::drawObjects(const Program& program, const glm::mat4& viewProjection, bool emissive) const {
+void SecondRenderer::drawObjects(const Program& program, const glm::mat4& viewProjection, ObjectPass pass) const {
   glUseProgram(program.get());
   setUniform(program.uniform("uViewProjection"), viewProjection);
   setUniform(program.uniform("uExposure"), scene_.exposure);
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
     const Object& object = scene_.objects[i];
     const Material& material = scene_.materials[object.material];
-    if (isEmissive(material) != emissive) continue;
+    const bool glows = emits(material) && material.maps.emissive;
+    const bool drawn = pass == ObjectPass::Geometry   ? !emits(material) || glows
+                       : pass == ObjectPass::Emissive ? emits(material) && !glows
+                                                      : glows;
+    if (!drawn) continue;
     setUniform(program.uniform("uModel"), object.transform);
     setUniform(program.uniform("uNormalToWorld"), glm::transpose(glm::inverse(glm::mat3(object.transform))));
     setUniform(program.uniform("uAlbedo"), material.albedo);
     setUniform(program.uniform("uSpecular"), glm::dot(material.specular, glm::vec3(1.0f / 3.0f)));
     setUniform(program.uniform("uEmissive"), material.emissive);
+    setUniform(program.uniform("uUvScale"), material.maps.uvScale);
+    setUniform(program.uniform("uNormalMapped"), material.maps.normal ? 1 : 0);
+    materialTextures_->bind(size_t(object.material));
     glBindVertexArray(meshes_[i].vertexArray);
     glDrawElements(GL_TRIANGLES, meshes_[i].indexCount, GL_UNSIGNED_INT, nullptr);
   }
+  materialTextures_->unbind();
 }
 
 void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
@@ -127,7 +136,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
     glEnable(GL_CULL_FACE);
-    drawObjects(geometryProgram_, viewProjection, false);
+    drawObjects(geometryProgram_, viewProjection, ObjectPass::Geometry);
     glDisable(GL_CULL_FACE);
   };
   geometryInto(seams_->geometryTarget(gbufferFramebuffer_), seams_->geometryScale());
@@ -155,7 +164,13 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_FALSE);
   glEnable(GL_CULL_FACE);
-  drawObjects(forwardProgram_, viewProjection, true);
+  drawObjects(forwardProgram_, viewProjection, ObjectPass::Emissive);
+  // Glow maps over their own lit surfaces: the same depth passes, the light adds.
+  glDepthFunc(GL_GEQUAL);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  drawObjects(forwardProgram_, viewProjection, ObjectPass::Glow);
+  glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);

@@ -1,7 +1,8 @@
 #version 450 core
-// The forward pass after lighting: emissive objects, depth-tested against the lit scene.
-in vec3 vWorldNormal;
+// The forward pass after lighting: emissive objects, and glow maps, depth-tested against the lit scene.
+#include "material.glsl"
+in vec2 vUv;
 uniform vec3 uEmissive;
 uniform float uExposure;
 out vec4 outColour;
-void main() { outColour = vec4(uEmissive * uExposure, 1.0); }
+void main() { outColour = vec4(uEmissive * emissiveAt(vUv) * uExposure, 1.0); }

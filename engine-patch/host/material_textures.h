@@ -1,0 +1,36 @@
+// The scene's material maps on the GPU, shared by both hosts' model passes: one mipmapped texture per
+// map (sRGB for albedo and emissive), 1×1 neutral textures where a material has none, and one sampler
+// with trilinear filtering, anisotropic where the context has it, and a LOD bias the ground truth sets.
+#pragma once
+
+#include "gl_objects.h"
+#include "scene.h"
+
+#include <vector>
+
+namespace host {
+
+class MaterialTextures {
+ public:
+  // Texture units the model shaders read: albedo, normal, specular, emissive.
+  static constexpr GLuint kFirstUnit = 0;
+  explicit MaterialTextures(const std::vector<Material>& materials);
+  void bind(size_t material) const;  // the four maps and the sampler on units kFirstUnit … +3
+  void unbind() const;  // the sampler off those units again: the host's own passes sample them unfiltered
+  // A ground truth at s×s samples per pixel sets −log2 s, so every supersample filters its own
+  // footprint as an s× larger render would.
+  void setLodBias(float bias);
+  float maxAnisotropy() const { return maxAnisotropy_; }  // 1: the context has no anisotropic filtering
+
+ private:
+  struct Maps {
+    GLuint albedo, normal, specular, emissive;  // names in textures_
+  };
+  GLuint upload(const SharedTextureImage& image, bool srgb, const uint8_t neutral[4]);
+  std::vector<Texture> textures_;
+  std::vector<Maps> maps_;
+  Sampler sampler_;
+  float maxAnisotropy_ = 1.0f;
+};
+
+}  // namespace host
