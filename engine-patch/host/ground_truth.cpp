@@ -7,7 +7,7 @@
 
 namespace host {
 
-GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int samplesPerAxis) {
+GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int samplesPerAxis, TextureFootprint footprint) {
   const int width = renderer.width(), height = renderer.height();
   renderer.setStockPath(true);
 
@@ -30,8 +30,7 @@ GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int sample
   glCreateVertexArrays(1, &vao);
   VertexArray emptyVertexArray(vao);
   const float weight = 1.0f / float(samplesPerAxis * samplesPerAxis);
-  // Each supersample filters textures over its own footprint, 1/s of a pixel: as an s× larger render.
-  renderer.setTextureLodBias(-std::log2(float(samplesPerAxis)));
+  if (footprint == TextureFootprint::Supersample) renderer.setTextureLodBias(-std::log2(float(samplesPerAxis)));
   for (int sy = 0; sy < samplesPerAxis; ++sy)
     for (int sx = 0; sx < samplesPerAxis; ++sx) {
       const glm::vec2 jitter((sx + 0.5f) / samplesPerAxis - 0.5f, (sy + 0.5f) / samplesPerAxis - 0.5f);

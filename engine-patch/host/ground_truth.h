@@ -22,8 +22,14 @@ struct GroundTruth {
   std::vector<float> lumaStdDev;   // per pixel: std. deviation of the supersamples' display luma
 };
 
+// How each supersample filters the material textures: over its own footprint, 1/s of a pixel (a
+// texture LOD bias of −log2 s, as a render s× larger would), or over the whole pixel's (no bias: the
+// textures come out over-blurred; kept to show what the bias is for).
+enum class TextureFootprint { Supersample, Pixel };
+
 // Renders with the host's stock path (the caller takes its AA hooks off first, or the ground truth
 // holds the AA's images).
-GroundTruth renderGroundTruth(Engine& engine, const Camera& camera, int samplesPerAxis);
+GroundTruth renderGroundTruth(Engine& engine, const Camera& camera, int samplesPerAxis,
+                              TextureFootprint footprint = TextureFootprint::Supersample);
 
 }  // namespace host

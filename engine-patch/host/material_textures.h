@@ -1,6 +1,7 @@
 // The scene's material maps on the GPU, shared by both hosts' model passes: one mipmapped texture per
 // map (sRGB for albedo and emissive), 1×1 neutral textures where a material has none, and one sampler
-// with trilinear filtering, anisotropic where the context has it, and a LOD bias the ground truth sets.
+// with trilinear filtering, anisotropic (16x) where the context has it and is no software rasteriser,
+// and a LOD bias the ground truth sets.
 #pragma once
 
 #include "gl_objects.h"
