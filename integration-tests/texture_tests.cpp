@@ -93,6 +93,22 @@ TEST(Textures, AMissingTextureFileIsAClearSceneError) {
   }
 }
 
+TEST(Textures, TheScenesTexturesTogetherStayBounded) {
+  // Nine 2048² procedural sets would hold 576 MiB: the ninth is refused before it is generated.
+  std::string materials;
+  for (int i = 0; i < 9; ++i)
+    materials += std::string(i ? ", " : "") + R"({"name": "m)" + std::to_string(i) +
+                 R"(", "procedural": {"pattern": "checker", "texels": 2048}})";
+  try {
+    host::loadScene(writeScene("texture_budget", R"({"camera": "fit", "materials": [)" + materials + R"(],
+      "objects": [{"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m0"}]})"));
+    FAIL() << "576 MiB of textures loaded";
+  } catch (const host::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("$.materials[8].procedural"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("512 MiB"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Textures, ProceduralMapsAreDeterministicAndDifferBySeed) {
   auto scene = [](int seed) {
     return host::loadScene(writeScene("procedural_" + std::to_string(seed), R"({"camera": "fit",

@@ -257,6 +257,10 @@ SharedTextureImage readMaterialTexture(const aiScene& scene, const aiMaterial& m
   } else {
     image = readTextureFile((modelDirectory / key).string());
   }
+  size_t bytes = image->rgba.size();
+  for (const auto& [other, held] : cache) bytes += held->rgba.size();
+  if (bytes > kMaxSceneTextureBytes)
+    throw TextureError("the model's textures exceed " + std::to_string(kMaxSceneTextureBytes >> 20) + " MiB");
   return cache[key] = image;
 }
 

@@ -102,7 +102,20 @@ class Reader {
 
 // A material's maps: "procedural" generates a set, the *_map keys name image files (relative to the
 // scene) and replace the generated map of their role.
-MaterialMaps readMaps(const Reader& m, const std::string& baseDirectory) {
+size_t textureBytes(const MaterialMaps& maps) {
+  size_t bytes = 0;
+  for (const SharedTextureImage* image : {&maps.albedo, &maps.normal, &maps.specular, &maps.emissive})
+    if (*image) bytes += (*image)->rgba.size();
+  return bytes;
+}
+
+// `budget`: what the scene's textures may still hold (kMaxSceneTextureBytes in all).
+MaterialMaps readMaps(const Reader& m, const std::string& baseDirectory, size_t& budget) {
+  auto spend = [&budget](const Reader& field, size_t bytes) {
+    if (bytes > budget)
+      field.fail("the scene's textures would exceed " + std::to_string(kMaxSceneTextureBytes >> 20) + " MiB");
+    budget -= bytes;
+  };
   MaterialMaps maps;
   if (m.has("procedural")) {
     const Reader p = m.child("procedural");
@@ -113,6 +126,8 @@ MaterialMaps readMaps(const Reader& m, const std::string& baseDirectory) {
     if (pattern.texels & (pattern.texels - 1)) p.child("texels").fail("expected a power of two");
     if (p.has("seed")) pattern.seed = uint32_t(p.child("seed").integer(0, 1 << 30));
     pattern.glow = p.numberOr("glow", 0.0f, 0.0f, 1.0f);
+    // Generating holds ~36 bytes a texel besides the maps' 16: checked before, not after.
+    spend(p, size_t(pattern.texels) * size_t(pattern.texels) * 16);
     try {
       maps = generateMaps(pattern);
     } catch (const TextureError& e) {
@@ -134,6 +149,7 @@ MaterialMaps readMaps(const Reader& m, const std::string& baseDirectory) {
     } catch (const TextureError& e) {
       m.child(key).fail(e.what());
     }
+    spend(m.child(key), (maps.*role)->rgba.size());
   }
   maps.uvScale = m.numberOr("uv_scale", 1.0f, 1e-4f, 1e4f);
   return maps;
@@ -343,6 +359,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   }
   if (!root.has("materials")) root.fail("missing required key 'materials'");
   const Reader materials = root.child("materials");
+  size_t textureBudget = kMaxSceneTextureBytes;
   for (size_t i = 0; i < materials.arraySize(); ++i) {
     const Reader m = materials.element(i);
     m.expectObject({"name", "albedo", "specular", "gloss", "emissive", "procedural", "albedo_map", "normal_map",
@@ -353,7 +370,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
     material.specular = m.vec3Or("specular", material.specular, 0.0f, 1.0f);
     material.gloss = m.numberOr("gloss", material.gloss, 0.0f, 1.0f);
     material.emissive = m.vec3Or("emissive", material.emissive, 0.0f, 1e4f);
-    material.maps = readMaps(m, baseDirectory);
+    material.maps = readMaps(m, baseDirectory, textureBudget);
     scene.materials.push_back(material);
   }
   if (scene.materials.empty()) materials.fail("at least one material is required");
@@ -407,6 +424,11 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
     // each part an object of its own.
     std::vector<Object> pieces;
     for (ModelPart& part : parts) {
+      const size_t bytes = textureBytes(part.maps);
+      if (bytes > textureBudget)
+        o.child("model").fail("the scene's textures would exceed " + std::to_string(kMaxSceneTextureBytes >> 20) +
+                              " MiB");
+      textureBudget -= bytes;
       Material material;
       material.name = object.name + "/" + part.materialName;
       material.albedo = part.albedo;

@@ -32,9 +32,11 @@ class TextureError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Images larger than this on a side are refused before their texels are read (memory stays bounded
-// whatever file a scene names).
+// Images larger than this on a side are refused before their texels are read, and a scene's textures
+// together (files, embedded and generated) may hold at most kMaxSceneTextureBytes: memory stays bounded
+// whatever file a scene names.
 constexpr int kMaxTextureSide = 8192;
+constexpr size_t kMaxSceneTextureBytes = size_t(512) << 20;
 
 // Reads an image file (any format OpenImageIO reads) as RGBA8: grey and RGB gain opaque alpha, wider
 // types are converted. Throws TextureError naming the file; so does a build without OpenImageIO.
