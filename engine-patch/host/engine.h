@@ -51,6 +51,7 @@ class Engine {
   const HostTimings& timings() const { return timings_; }
   // The material textures' LOD bias (0 by default); the ground truth sets −log2 of its samples per axis.
   void setTextureLodBias(float bias) { materialTextures_->setLodBias(bias); }
+  void setMaterialMapsOn(bool on) { materialTextures_->setMapsOn(on); }
   const MaterialTextures& materialTextures() const { return *materialTextures_; }
 
  protected:

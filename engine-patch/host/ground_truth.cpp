@@ -31,22 +31,40 @@ GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int sample
   VertexArray emptyVertexArray(vao);
   const float weight = 1.0f / float(samplesPerAxis * samplesPerAxis);
   if (footprint == TextureFootprint::Supersample) renderer.setTextureLodBias(-std::log2(float(samplesPerAxis)));
-  for (int sy = 0; sy < samplesPerAxis; ++sy)
-    for (int sx = 0; sx < samplesPerAxis; ++sx) {
-      const glm::vec2 jitter((sx + 0.5f) / samplesPerAxis - 0.5f, (sy + 0.5f) / samplesPerAxis - 0.5f);
-      renderer.renderFrame(camera, jitter);
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-      glViewport(0, 0, width, height);
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);
-      glUseProgram(accumulate.get());
-      glUniform1f(accumulate.uniform("uWeight"), weight);
-      glUniform1f(accumulate.uniform("uExposure"), renderer.exposure());
-      glBindTextureUnit(0, renderer.radianceTexture());
-      glBindVertexArray(emptyVertexArray);
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      glDisable(GL_BLEND);
-    }
+  // The edge mask (the luma spread) comes from the scene without its material maps: it marks geometry
+  // and lighting edges, and texture detail stays interior, where blurring it shows as a cost. With no
+  // maps in the scene one pass writes both.
+  bool anyMaps = false;
+  for (const Material& material : renderer.scene().materials) anyMaps = anyMaps || material.maps.any();
+  auto accumulatePass = [&](bool radianceOut, bool spreadOut) {
+    const GLenum buffers[] = {radianceOut ? GLenum(GL_COLOR_ATTACHMENT0) : GLenum(GL_NONE),
+                              spreadOut ? GLenum(GL_COLOR_ATTACHMENT1) : GLenum(GL_NONE)};
+    for (int sy = 0; sy < samplesPerAxis; ++sy)
+      for (int sx = 0; sx < samplesPerAxis; ++sx) {
+        const glm::vec2 jitter((sx + 0.5f) / samplesPerAxis - 0.5f, (sy + 0.5f) / samplesPerAxis - 0.5f);
+        renderer.renderFrame(camera, jitter);
+        glNamedFramebufferDrawBuffers(fbo, 2, buffers);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glViewport(0, 0, width, height);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        glUseProgram(accumulate.get());
+        glUniform1f(accumulate.uniform("uWeight"), weight);
+        glUniform1f(accumulate.uniform("uExposure"), renderer.exposure());
+        glBindTextureUnit(0, renderer.radianceTexture());
+        glBindVertexArray(emptyVertexArray);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDisable(GL_BLEND);
+      }
+  };
+  if (anyMaps) {
+    renderer.setMaterialMapsOn(false);
+    accumulatePass(false, true);
+    renderer.setMaterialMapsOn(true);
+    accumulatePass(true, false);
+  } else {
+    accumulatePass(true, true);
+  }
 
   renderer.present(radiance);
   GroundTruth truth;

@@ -19,7 +19,8 @@ struct GroundTruth {
   int width = 0, height = 0, samplesPerAxis = 0;
   std::vector<uint8_t> display;    // RGBA8 top-down, tonemapped average radiance
   std::vector<float> radiance;     // RGBA32F top-down, average linear radiance
-  std::vector<float> lumaStdDev;   // per pixel: std. deviation of the supersamples' display luma
+  std::vector<float> lumaStdDev;   // per pixel: std. deviation of the supersamples' display luma (the scene without its
+                                   // material maps: geometry and lighting edges, not texture detail)
 };
 
 // How each supersample filters the material textures: over its own footprint, 1/s of a pixel (a

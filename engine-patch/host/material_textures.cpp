@@ -38,12 +38,13 @@ MaterialTextures::MaterialTextures(const std::vector<Material>& materials) {
   const GLuint neutralColour = upload(nullptr, true, kWhite);
   const GLuint neutralNormal = upload(nullptr, false, kFlatNormal);
   const GLuint neutralSpecular = upload(nullptr, false, kWhite);
+  neutral_ = {neutralColour, neutralNormal, neutralSpecular, neutralColour, false};
   for (const Material& material : materials) {
     const MaterialMaps& m = material.maps;
     maps_.push_back({m.albedo ? upload(m.albedo, true, kWhite) : neutralColour,
                      m.normal ? upload(m.normal, false, kFlatNormal) : neutralNormal,
                      m.specular ? upload(m.specular, false, kWhite) : neutralSpecular,
-                     m.emissive ? upload(m.emissive, true, kWhite) : neutralColour});
+                     m.emissive ? upload(m.emissive, true, kWhite) : neutralColour, bool(m.normal)});
   }
 }
 
@@ -64,7 +65,7 @@ GLuint MaterialTextures::upload(const SharedTextureImage& image, bool srgb, cons
 }
 
 void MaterialTextures::bind(size_t material) const {
-  const Maps& m = maps_[material];
+  const Maps& m = mapsOn_ ? maps_[material] : neutral_;
   const GLuint textures[4] = {m.albedo, m.normal, m.specular, m.emissive};
   glBindTextures(kFirstUnit, 4, textures);
   const GLuint samplers[4] = {sampler_, sampler_, sampler_, sampler_};

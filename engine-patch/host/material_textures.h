@@ -16,22 +16,30 @@ class MaterialTextures {
   // Texture units the model shaders read: albedo, normal, specular, emissive.
   static constexpr GLuint kFirstUnit = 0;
   explicit MaterialTextures(const std::vector<Material>& materials);
-  void bind(size_t material) const;  // the four maps and the sampler on units kFirstUnit … +3
+  // The four maps and the sampler on units kFirstUnit … +3; the neutral ones while maps are off.
+  void bind(size_t material) const;
+  bool normalMapped(size_t material) const { return mapsOn_ && maps_[material].normalMapped; }
   void unbind() const;  // the sampler off those units again: the host's own passes sample them unfiltered
   // A ground truth at s×s samples per pixel sets −log2 s, so every supersample filters its own
   // footprint as an s× larger render would.
   void setLodBias(float bias);
   float maxAnisotropy() const { return maxAnisotropy_; }  // 1: the context has no anisotropic filtering
+  // Off: every material renders with its constants alone, as before it had maps (the ground truth's
+  // edge mask, which must find geometry and lighting edges, not texture detail).
+  void setMapsOn(bool on) { mapsOn_ = on; }
 
  private:
   struct Maps {
     GLuint albedo, normal, specular, emissive;  // names in textures_
+    bool normalMapped;
   };
   GLuint upload(const SharedTextureImage& image, bool srgb, const uint8_t neutral[4]);
   std::vector<Texture> textures_;
   std::vector<Maps> maps_;
   Sampler sampler_;
   float maxAnisotropy_ = 1.0f;
+  bool mapsOn_ = true;
+  Maps neutral_{};
 };
 
 }  // namespace host

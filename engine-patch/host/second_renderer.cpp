@@ -100,7 +100,7 @@ void SecondRenderer::drawObjects(const Program& program, const glm::mat4& viewPr
     setUniform(program.uniform("uSpecular"), glm::dot(material.specular, glm::vec3(1.0f / 3.0f)));
     setUniform(program.uniform("uEmissive"), material.emissive);
     setUniform(program.uniform("uUvScale"), material.maps.uvScale);
-    setUniform(program.uniform("uNormalMapped"), material.maps.normal ? 1 : 0);
+    setUniform(program.uniform("uNormalMapped"), materialTextures_->normalMapped(size_t(object.material)) ? 1 : 0);
     materialTextures_->bind(size_t(object.material));
     glBindVertexArray(meshes_[i].vertexArray);
     glDrawElements(GL_TRIANGLES, meshes_[i].indexCount, GL_UNSIGNED_INT, nullptr);
