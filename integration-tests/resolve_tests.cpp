@@ -111,6 +111,25 @@ TEST(Plugin, Toggling100TimesLeaksNoGlObjectsAndRaisesNoGlError) {
   EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();
 }
 
+TEST(Plugin, SamplersTheHostLeavesBoundChangeNoImage) {
+  // A host that keeps sampler objects bound (mipmapped, repeating) on every unit between its draws.
+  PatchedHost host("default", 64, 48);
+  GLuint sampler = 0;
+  glCreateSamplers(1, &sampler);
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  for (const char* method : {"resolve+fxaa", "edge", "adaptive", "aggregate", "reconstruct", "smaa", "resolve+coverage"}) {
+    glBindSamplers(0, 16, nullptr);
+    const app::DisplayImage clean = host.render(method);
+    std::vector<GLuint> samplers(16, sampler);
+    glBindSamplers(0, 16, samplers.data());
+    const app::DisplayImage withSamplers = host.render(method);
+    EXPECT_EQ(withSamplers.rgb, clean.rgb) << method;
+  }
+  glBindSamplers(0, 16, nullptr);
+  glDeleteSamplers(1, &sampler);
+}
+
 TEST(Plugin, EveryCallRestoresTheHostsGlState) {
   PatchedHost host("default", 64, 48);
   host.render("off");  // leaves one of the host's (live) programs current

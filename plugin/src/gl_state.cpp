@@ -71,6 +71,10 @@ GlStateSnapshot GlStateSnapshot::capture() {
   return s;
 }
 
+GlStateGuard::GlStateGuard() : saved_(GlStateSnapshot::capture()) {
+  glBindSamplers(0, GlStateSnapshot::kUnits, nullptr);
+}
+
 void GlStateSnapshot::restore() const {
   // A host may leave a program (or framebuffer, VAO) current that it already deleted: GL keeps it
   // alive only while bound, so once a pass unbinds it the name is gone and binding it again would

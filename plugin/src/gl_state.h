@@ -31,10 +31,12 @@ struct GlStateSnapshot {
   bool operator==(const GlStateSnapshot& other) const;
 };
 
-// Captures on construction, restores on destruction.
+// Captures on construction, restores on destruction. In between, units 0–15 have no sampler object:
+// the plugin's passes read its textures with their own parameters, whatever sampler a host left bound
+// (one with mipmap filtering would make the plugin's single-level textures incomplete, reading zero).
 class GlStateGuard {
  public:
-  GlStateGuard() : saved_(GlStateSnapshot::capture()) {}
+  GlStateGuard();
   ~GlStateGuard() { saved_.restore(); }
   GlStateGuard(const GlStateGuard&) = delete;
   GlStateGuard& operator=(const GlStateGuard&) = delete;
