@@ -8,6 +8,7 @@ namespace host {
 
 namespace {
 constexpr uint8_t kWhite[4] = {255, 255, 255, 255};
+constexpr uint8_t kBlack[4] = {0, 0, 0, 255};
 constexpr uint8_t kFlatNormal[4] = {128, 128, 255, 255};
 
 int mipLevels(int width, int height) {
@@ -38,13 +39,15 @@ MaterialTextures::MaterialTextures(const std::vector<Material>& materials) {
   const GLuint neutralColour = upload(nullptr, true, kWhite);
   const GLuint neutralNormal = upload(nullptr, false, kFlatNormal);
   const GLuint neutralSpecular = upload(nullptr, false, kWhite);
-  neutral_ = {neutralColour, neutralNormal, neutralSpecular, neutralColour, false};
+  const GLuint noEmission = upload(nullptr, true, kBlack);
+  neutral_ = {neutralColour, neutralNormal, neutralSpecular, neutralColour, false, neutralColour};
   for (const Material& material : materials) {
     const MaterialMaps& m = material.maps;
     maps_.push_back({m.albedo ? upload(m.albedo, true, kWhite) : neutralColour,
                      m.normal ? upload(m.normal, false, kFlatNormal) : neutralNormal,
                      m.specular ? upload(m.specular, false, kWhite) : neutralSpecular,
-                     m.emissive ? upload(m.emissive, true, kWhite) : neutralColour, bool(m.normal)});
+                     m.emissive ? upload(m.emissive, true, kWhite) : neutralColour, bool(m.normal),
+                     m.emissive ? noEmission : neutralColour});
   }
 }
 
@@ -66,7 +69,8 @@ GLuint MaterialTextures::upload(const SharedTextureImage& image, bool srgb, cons
 
 void MaterialTextures::bind(size_t material) const {
   const Maps& m = mapsOn_ ? maps_[material] : neutral_;
-  const GLuint textures[4] = {m.albedo, m.normal, m.specular, m.emissive};
+  const GLuint textures[4] = {m.albedo, m.normal, m.specular,
+                              mapsOn_ ? m.emissive : maps_[material].emissiveWhileMapsOff};
   glBindTextures(kFirstUnit, 4, textures);
   const GLuint samplers[4] = {sampler_, sampler_, sampler_, sampler_};
   glBindSamplers(kFirstUnit, 4, samplers);

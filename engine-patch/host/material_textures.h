@@ -24,14 +24,16 @@ class MaterialTextures {
   // footprint as an s× larger render would.
   void setLodBias(float bias);
   float maxAnisotropy() const { return maxAnisotropy_; }  // 1: the context has no anisotropic filtering
-  // Off: every material renders with its constants alone, as before it had maps (the ground truth's
-  // edge mask, which must find geometry and lighting edges, not texture detail).
+  // Off: every material renders as before it had maps — its constants alone, and no emission where a
+  // glow map made it (the ground truth's edge mask, which must find geometry and lighting edges, not
+  // texture detail).
   void setMapsOn(bool on) { mapsOn_ = on; }
 
  private:
   struct Maps {
     GLuint albedo, normal, specular, emissive;  // names in textures_
     bool normalMapped;
+    GLuint emissiveWhileMapsOff;  // white (the constant alone), or black where a glow map sets the emission
   };
   GLuint upload(const SharedTextureImage& image, bool srgb, const uint8_t neutral[4]);
   std::vector<Texture> textures_;
