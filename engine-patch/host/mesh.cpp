@@ -201,8 +201,17 @@ void appendNode(std::vector<Mesh>& parts, const aiScene& scene, const aiNode& no
       glm::vec3 normal = normalMatrix * glm::vec3(n.x, n.y, n.z);
       const float length = glm::length(normal);
       const glm::vec3 position = glm::vec3(world * glm::vec4(p.x, p.y, p.z, 1.0f));
-      glm::vec2 uv(0.0f);
-      if (source.HasTextureCoords(0)) uv = {source.mTextureCoords[0][v].x, source.mTextureCoords[0][v].y};
+      glm::vec2 uv;
+      if (source.HasTextureCoords(0)) {
+        uv = {source.mTextureCoords[0][v].x, source.mTextureCoords[0][v].y};
+      } else {
+        // No coordinates in the file: a box projection of the position, on the plane the normal faces
+        // most (model units, as the generators' metres), so a scene's maps still land on the model.
+        const glm::vec3 a = glm::abs(normal);
+        uv = a.x >= a.y && a.x >= a.z ? glm::vec2(position.z, position.y)
+             : a.y >= a.z             ? glm::vec2(position.x, position.z)
+                                      : glm::vec2(position.x, position.y);
+      }
       usable[v] = isFinite(position) && isFinite(normal) && std::isfinite(uv.x) && std::isfinite(uv.y);
       // An unusable vertex stays (indices keep their meaning) but at the origin: no face draws it, and
       // nothing that sums vertices (bounds) sees a NaN.

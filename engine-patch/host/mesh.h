@@ -67,7 +67,8 @@ struct ModelPart {
 };
 
 // glTF 2.0, OBJ and the other formats assimp reads; meshes merged per material, node transforms
-// applied, texture coordinates top-down (row 0 of an image at v = 0). Faces with non-finite positions
+// applied, texture coordinates top-down (row 0 of an image at v = 0; a mesh without any gets a box
+// projection of its positions). Faces with non-finite positions
 // or normals, or indices out of range, are left out: with a warning naming file, mesh and counts (into
 // `warnings`, else to stderr), or ModelLoadError when nothing is left; so is a texture that cannot be
 // read (TextureError's message).
