@@ -39,11 +39,11 @@ GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int sample
   auto accumulatePass = [&](bool radianceOut, bool spreadOut) {
     const GLenum buffers[] = {radianceOut ? GLenum(GL_COLOR_ATTACHMENT0) : GLenum(GL_NONE),
                               spreadOut ? GLenum(GL_COLOR_ATTACHMENT1) : GLenum(GL_NONE)};
+    glNamedFramebufferDrawBuffers(fbo, 2, buffers);
     for (int sy = 0; sy < samplesPerAxis; ++sy)
       for (int sx = 0; sx < samplesPerAxis; ++sx) {
         const glm::vec2 jitter((sx + 0.5f) / samplesPerAxis - 0.5f, (sy + 0.5f) / samplesPerAxis - 0.5f);
         renderer.renderFrame(camera, jitter);
-        glNamedFramebufferDrawBuffers(fbo, 2, buffers);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         glViewport(0, 0, width, height);
         glEnable(GL_BLEND);

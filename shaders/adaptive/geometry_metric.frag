@@ -10,26 +10,21 @@
 // pixel's own samples. Emission is radiance the G-buffer already holds, so its sub-pixel detail (stars
 // in a supersampled sky, glow-map lines) is shading the first lit sample usually misses.
 #include "common/gbuffer.glsl"
+#include "adaptive/shading_rule.glsl"
 uniform float uFootprintTan;
 uniform float uDepthScale;
 uniform float uNormalScale;
-uniform float uShadingScale;  // the shading metric's c_s, t_min and t_edge
-uniform float uThresholdMin;
-uniform float uThresholdEdge;
 layout(location = 0) out float outGeometryK;
 
 float emissiveK(ivec2 pixel) {
 #if EMISSIVE_ATTACHMENT >= 0
   float lMin = 1.0, lMax = 0.0;
   for (int s = 0; s < SAMPLES; ++s) {
-    vec3 c = FETCH(uAttachments[EMISSIVE_ATTACHMENT], pixel, s).rgb;
-    float l = dot(max(c, vec3(0.0)), vec3(0.2126, 0.7152, 0.0722));
-    l = isnan(l) || isinf(l) ? 1.0 : l / (1.0 + l);  // the shading metric's display-like scale
+    float l = displayLuma(FETCH(uAttachments[EMISSIVE_ATTACHMENT], pixel, s).rgb);
     lMin = min(lMin, l);
     lMax = max(lMax, l);
   }
-  float range = lMax - lMin;
-  return range < max(uThresholdMin, lMax * uThresholdEdge) ? 0.0 : uShadingScale * float(SAMPLES) * range;
+  return shadingK(lMin, lMax);
 #else
   return 0.0;
 #endif

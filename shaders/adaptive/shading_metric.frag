@@ -6,19 +6,15 @@
 #if STENCIL_EXPORT
 #extension GL_ARB_shader_stencil_export : require
 #endif
+#include "adaptive/shading_rule.glsl"
 layout(binding = 0) uniform sampler2D uFirstLight;     // slice 0, lit by the host
 layout(binding = 2) uniform sampler2D uGeometryK;
-uniform float uShadingScale;
-uniform float uThresholdMin;
-uniform float uThresholdEdge;
 uniform int uMinSamples;
 layout(location = 0) out uint outCount;
 
 float luma(ivec2 pixel) {
   ivec2 size = textureSize(uFirstLight, 0);
-  vec3 c = texelFetch(uFirstLight, clamp(pixel, ivec2(0), size - 1), 0).rgb;
-  float l = dot(max(c, vec3(0.0)), vec3(0.2126, 0.7152, 0.0722));
-  return isnan(l) || isinf(l) ? 1.0 : l / (1.0 + l);
+  return displayLuma(texelFetch(uFirstLight, clamp(pixel, ivec2(0), size - 1), 0).rgb);
 }
 
 void main() {
@@ -26,8 +22,7 @@ void main() {
   float l0 = luma(pixel), lN = luma(pixel + ivec2(0, 1)), lS = luma(pixel - ivec2(0, 1));
   float lE = luma(pixel + ivec2(1, 0)), lW = luma(pixel - ivec2(1, 0));
   float lMax = max(l0, max(max(lN, lS), max(lE, lW)));
-  float range = lMax - min(l0, min(min(lN, lS), min(lE, lW)));
-  float kShading = range < max(uThresholdMin, lMax * uThresholdEdge) ? 0.0 : uShadingScale * float(SAMPLES) * range;
+  float kShading = shadingK(min(l0, min(min(lN, lS), min(lE, lW))), lMax);
   float k = max(texelFetch(uGeometryK, pixel, 0).r, kShading);
   int count = clamp(int(ceil(k)), max(uMinSamples, 1), SAMPLES);
   outCount = uint(count);
