@@ -13,11 +13,11 @@ constexpr int kWidth = 64, kHeight = 16;
 
 class AdaptiveMetrics : public ::testing::Test {
  protected:
-  // The per-pixel k of `adaptive` on `pixels` (bottom-up rows), lit with light = albedo.
-  std::vector<uint8_t> sampleCounts(const std::vector<std::vector<SyntheticSample>>& pixels) {
-    retroaa::Config config;
+  // The per-pixel k of `adaptive` on `pixels` (bottom-up rows), lit with light = albedo · irradiance.
+  std::vector<uint8_t> sampleCounts(const std::vector<std::vector<SyntheticSample>>& pixels,
+                                    retroaa::Config config = {}, const std::string& irradiance = "1.0") {
     config.method = retroaa::Method::Adaptive;
-    auto hooks = frame_.run(config, pixels);
+    auto hooks = frame_.run(config, pixels, irradiance);
     samples_ = frame_.samples;
     evaluations_ = hooks->plugin().waitForStats().lightingEvaluations;
     return hooks->plugin().readSliceCounts();
@@ -33,7 +33,8 @@ class AdaptiveMetrics : public ::testing::Test {
 }  // namespace
 
 TEST_F(AdaptiveMetrics, FlatPlaneNeedsOneSample) {
-  const auto counts = sampleCounts(uniform({surfaceSample(10), surfaceSample(10), surfaceSample(10), surfaceSample(10)}));
+  const auto counts =
+      sampleCounts(uniform({surfaceSample(10), surfaceSample(10), surfaceSample(10), surfaceSample(10)}));
   for (uint8_t k : counts) ASSERT_EQ(k, 1);
   EXPECT_EQ(evaluations_, uint64_t(kWidth * kHeight));
 }
@@ -41,7 +42,8 @@ TEST_F(AdaptiveMetrics, FlatPlaneNeedsOneSample) {
 TEST_F(AdaptiveMetrics, DepthStepNeedsEverySample) {
   // Far and near ships alike: the depth metric is measured in pixel footprints.
   for (float near : {10.0f, 10000.0f}) {
-    const auto counts = sampleCounts(uniform({surfaceSample(near), surfaceSample(near), surfaceSample(near * 2), surfaceSample(near * 2)}));
+    const auto counts = sampleCounts(
+        uniform({surfaceSample(near), surfaceSample(near), surfaceSample(near * 2), surfaceSample(near * 2)}));
     for (uint8_t k : counts) ASSERT_EQ(k, samples_) << "at " << near << " m";
   }
 }
@@ -51,8 +53,9 @@ TEST_F(AdaptiveMetrics, SmallDepthSlopeIsScaleInvariant) {
   std::vector<uint8_t> reference;
   for (float d : {10.0f, 1000.0f, 100000.0f}) {
     const float footprint = d * std::tan(1.0f / kWidth);
-    const auto counts = sampleCounts(uniform({surfaceSample(d), surfaceSample(d + 0.1f * footprint),
-                                              surfaceSample(d + 0.2f * footprint), surfaceSample(d + 0.3f * footprint)}));
+    const auto counts =
+        sampleCounts(uniform({surfaceSample(d), surfaceSample(d + 0.1f * footprint),
+                              surfaceSample(d + 0.2f * footprint), surfaceSample(d + 0.3f * footprint)}));
     if (reference.empty()) reference = counts;
     EXPECT_EQ(counts, reference) << "at " << d << " m";
     EXPECT_EQ(counts[0], 1);
@@ -61,20 +64,17 @@ TEST_F(AdaptiveMetrics, SmallDepthSlopeIsScaleInvariant) {
 
 TEST_F(AdaptiveMetrics, NormalCreaseRefines) {
   const glm::vec3 tilted = glm::normalize(glm::vec3(0.7f, 0.0f, 0.7f));
-  const auto counts = sampleCounts(uniform({surfaceSample(10), surfaceSample(10), surfaceSample(10, tilted), surfaceSample(10, tilted)}));
+  const auto counts = sampleCounts(
+      uniform({surfaceSample(10), surfaceSample(10), surfaceSample(10, tilted), surfaceSample(10, tilted)}));
   for (uint8_t k : counts) ASSERT_GT(k, 1);
 }
 
-TEST_F(AdaptiveMetrics, LuminanceEdgeOnAFlatPlaneRefinesOnlyThere) {
-  // One flat plane, dark left half and bright right half: geometry says 1, shading says more, and
-  // only at the columns beside the change.
-  std::vector<std::vector<SyntheticSample>> pixels(kWidth * kHeight);
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      const SyntheticSample s = surfaceSample(10, {0, 0, 1}, glm::vec3(x < kWidth / 2 ? 0.05f : 0.9f));
-      pixels[y * kWidth + x] = {s, s, s, s};
-    }
-  const auto counts = sampleCounts(pixels);
+TEST_F(AdaptiveMetrics, LightingStepOnAFlatPlaneRefinesOnlyBesideIt) {
+  // One flat plane of one albedo, lit dark on the left and bright on the right: geometry says 1, the
+  // shading metric more, and only in the two columns beside the change.
+  const SyntheticSample s = surfaceSample(10);
+  const auto counts =
+      sampleCounts(uniform({s, s, s, s}), {}, "gl_FragCoord.x < " + std::to_string(kWidth / 2) + ".0 ? 0.1 : 1.8");
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       const bool besideEdge = x == kWidth / 2 - 1 || x == kWidth / 2;
@@ -83,6 +83,83 @@ TEST_F(AdaptiveMetrics, LuminanceEdgeOnAFlatPlaneRefinesOnlyThere) {
       else
         EXPECT_EQ(counts[y * kWidth + x], 1) << x << "," << y;
     }
+}
+
+namespace {
+// A flat plane, dark albedo left of column `split` and bright from it on; the pixels of column
+// `inside` (if any) hold half dark, half bright samples.
+std::vector<std::vector<SyntheticSample>> albedoStep(int split, int inside) {
+  const SyntheticSample dark = surfaceSample(10, {0, 0, 1}, glm::vec3(0.05f)),
+                        bright = surfaceSample(10, {0, 0, 1}, glm::vec3(0.9f));
+  std::vector<std::vector<SyntheticSample>> pixels(kWidth * kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const SyntheticSample& s = x < split ? dark : bright;
+      pixels[y * kWidth + x] = x == inside ? std::vector<SyntheticSample>{dark, dark, bright, bright}
+                                           : std::vector<SyntheticSample>{s, s, s, s};
+    }
+  return pixels;
+}
+}  // namespace
+
+TEST_F(AdaptiveMetrics, TextureContrastBetweenPixelsNeedsNoSamples) {
+  // An albedo step on a pixel boundary: every pixel's samples hold one texel, so lighting more of them
+  // changes nothing. Neighbours are compared at the pixel's own albedo: no refinement anywhere.
+  const auto counts = sampleCounts(albedoStep(kWidth / 2, -1));
+  for (int i = 0; i < kWidth * kHeight; ++i) ASSERT_EQ(counts[i], 1) << i % kWidth << "," << i / kWidth;
+}
+
+TEST_F(AdaptiveMetrics, TextureInsideAPixelRefinesThatPixelOnly) {
+  // The step inside the pixels of one column: the texture term sees the albedo's range over the
+  // samples; without it (scale 0) nothing does, since the first lit sample matches its neighbours.
+  const int column = kWidth / 2;
+  const auto counts = sampleCounts(albedoStep(column, column));
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      if (x == column)
+        EXPECT_EQ(counts[y * kWidth + x], samples_) << x << "," << y;
+      else
+        EXPECT_EQ(counts[y * kWidth + x], 1) << x << "," << y;
+    }
+  retroaa::Config noTexture;
+  noTexture.adaptiveTextureScale = 0.0f;
+  for (uint8_t k : sampleCounts(albedoStep(column, column), noTexture)) ASSERT_EQ(k, 1);
+}
+
+TEST_F(AdaptiveMetrics, GrazingPlaneNeedsOneSampleADepthStepStillEvery) {
+  // A plane seen at a grazing angle, each sample at its own depth (inverse depth linear in screen x):
+  // from 10 m to 60 m across the image, several footprints of depth inside every pixel. Its spread
+  // about the mean is large, about the plane the neighbouring pixels continue nil: one sample.
+  retroaa::Config config;
+  config.method = retroaa::Method::Adaptive;
+  config.adaptiveDepthScale = 4.0f;  // the quality setting of docs/methods/adaptive.md
+  std::vector<float> positions;
+  {
+    auto hooks = frame_.attach(config);
+    ASSERT_TRUE(hooks);
+    GLint samples = 0;
+    glBindFramebuffer(GL_FRAMEBUFFER, hooks->plugin().geometryFramebuffer());  // sample positions are the bound one's
+    glGetIntegerv(GL_SAMPLES, &samples);
+    positions.assign(size_t(std::max(samples, 1)) * 2, 0.5f);
+    for (GLint s = 0; s < samples; ++s) glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(s), &positions[2 * s]);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+  const int n = int(positions.size() / 2);
+  ASSERT_GT(n, 1);
+  auto plane = [&](float step) {
+    std::vector<std::vector<SyntheticSample>> pixels(kWidth * kHeight);
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x)
+        for (int s = 0; s < n; ++s) {
+          const float screenX = float(x) + positions[2 * s];
+          const float depth = 1.0f / (0.1f - (0.1f - 1.0f / 60.0f) * screenX / float(kWidth));
+          pixels[y * kWidth + x].push_back(surfaceSample(positions[2 * s + 1] < 0.5f ? depth : depth * (1.0f + step)));
+        }
+    return pixels;
+  };
+  for (uint8_t k : sampleCounts(plane(0.0f), config)) ASSERT_EQ(k, 1);
+  // The same plane with a 20 % depth step through every pixel (its upper samples farther): every sample.
+  for (uint8_t k : sampleCounts(plane(0.2f), config)) ASSERT_EQ(k, samples_);
 }
 
 TEST(Adaptive, SampleOrderSpreadsOverThePixel) {
@@ -94,7 +171,8 @@ TEST(Adaptive, SampleOrderSpreadsOverThePixel) {
   std::sort(sorted.begin(), sorted.end());
   EXPECT_EQ(sorted, (std::vector<int>{0, 1, 2, 3}));
   // The first two are on opposite sides of the centre.
-  const glm::vec2 a(positions[2 * order[0]], positions[2 * order[0] + 1]), b(positions[2 * order[1]], positions[2 * order[1] + 1]);
+  const glm::vec2 a(positions[2 * order[0]], positions[2 * order[0] + 1]),
+      b(positions[2 * order[1]], positions[2 * order[1] + 1]);
   EXPECT_LT(glm::dot(a - glm::vec2(0.5f), b - glm::vec2(0.5f)), 0.0f);
 }
 
@@ -105,7 +183,8 @@ TEST(Adaptive, ForcedToEverySampleEqualsPerSample) {
   config.adaptiveMinSamples = 16;  // clamped to N in the shader: every pixel takes every sample
   const app::DisplayImage forced = host.render("adaptive", config);
   double worst = 0;
-  for (size_t i = 0; i < forced.rgb.size(); ++i) worst = std::max<double>(worst, std::fabs(forced.rgb[i] - perSample.rgb[i]));
+  for (size_t i = 0; i < forced.rgb.size(); ++i)
+    worst = std::max<double>(worst, std::fabs(forced.rgb[i] - perSample.rgb[i]));
   EXPECT_LE(worst, 1.0 / 255.0 + 1e-6);
   EXPECT_EQ(host.hooks->plugin().waitForStats().evaluationsPerPixel(), double(host.hooks->plugin().stats().samples));
 }

@@ -71,10 +71,10 @@ TEST(Cli, RenderWritesPngWithMetadataAndExr) {
 
 TEST(Cli, BenchWritesEveryRowWithTheFieldsReportsNeed) {
   const std::string json = temp("bench.json");
-  const CliRun r =
-      runCli("bench --methods off,fxaa,resolve,per-sample --width 64 --height 48 --gt-samples 4 --repeats 1 "
-             "--wall-frames 3 --json " +
-             json);
+  const CliRun r = runCli(
+      "bench --methods off,fxaa,resolve,per-sample --width 64 --height 48 --gt-samples 4 --repeats 1 "
+      "--wall-frames 3 --json " +
+      json);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::ifstream in(json);
   const nlohmann::json document = nlohmann::json::parse(in);
@@ -86,10 +86,9 @@ TEST(Cli, BenchWritesEveryRowWithTheFieldsReportsNeed) {
   EXPECT_GT(floor, 1.0);
   EXPECT_LT(floor, 4.0);
   for (const auto& row : document["rows"]) {
-    for (const char* field :
-         {"method", "samples", "evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel", "psnr_db",
-          "edge_psnr_db", "psnr_vs_per_sample_db", "max_abs_error", "time_vs_off", "passes_fragment_invocations",
-          "passes_minimum_bytes", "passes_traffic_bound_ms"})
+    for (const char* field : {"method", "samples", "evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel",
+                              "psnr_db", "edge_psnr_db", "psnr_vs_per_sample_db", "max_abs_error", "time_vs_off",
+                              "passes_fragment_invocations", "passes_minimum_bytes", "passes_traffic_bound_ms"})
       EXPECT_TRUE(row.contains(field)) << field;
     for (const char* figure : {"wall_ms", "wall_vs_off", "plugin_overhead_ms", "evals_vs_shading_floor"})
       EXPECT_TRUE(row[figure].is_number()) << figure << " of " << row.dump();
@@ -184,6 +183,13 @@ TEST(Cli, ShowingSliceCountsOfAMethodWithoutSlicesIsRefused) {
       << r.output;
   r = runCli("render --method edge --show edges --width 32 --height 24 --out " + temp("edges.png"));
   EXPECT_EQ(r.exitCode, 0) << r.output;
+  // The count it prints is the frame's (every pixel lit at least once), not an empty query ring's 0.
+  float evaluations = 0;
+  const size_t line = r.output.find("edges: ");
+  ASSERT_NE(line, std::string::npos) << r.output;
+  ASSERT_EQ(std::sscanf(r.output.c_str() + line, "edges: %f lighting evaluations per pixel", &evaluations), 1)
+      << r.output;
+  EXPECT_GE(evaluations, 1.0f) << r.output;
 }
 
 // A frame whose ground truth has no edge pixel has no edge error: null in JSON, n/a in the table.

@@ -189,15 +189,16 @@ void main() {  // reading gl_SampleID runs this once per sample
   return n;
 }
 
-void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height) {
+void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height, const std::string& irradiance) {
   glBindFramebuffer(GL_FRAMEBUFFER, target);
   glViewport(0, 0, width, height);
   glBindTextureUnit(0, colorTexture);
-  drawWithFragment(R"(#version 450 core
+  const std::string source = R"(#version 450 core
 layout(binding = 0) uniform sampler2D uColor;
 out vec4 outLight;
-void main() { outLight = vec4(texelFetch(uColor, ivec2(gl_FragCoord.xy), 0).rgb, 1.0); })",
-                   [](GLuint) {});
+void main() { outLight = vec4(texelFetch(uColor, ivec2(gl_FragCoord.xy), 0).rgb * ()" +
+                             irradiance + "), 1.0); }";
+  drawWithFragment(source.c_str(), [](GLuint) {});
 }
 
 SyntheticFrame::SyntheticFrame(int w, int h) : width(w), height(h) {
@@ -218,14 +219,15 @@ std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::attach(const retroaa::Confi
 }
 
 std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::run(const retroaa::Config& config,
-                                                         const std::vector<std::vector<SyntheticSample>>& pixels) {
+                                                         const std::vector<std::vector<SyntheticSample>>& pixels,
+                                                         const std::string& irradiance) {
   auto hooks = attach(config);
   if (!hooks) return nullptr;
   retroaa::Plugin& plugin = hooks->plugin();
   samples = fillGeometry(plugin, width, height, pixels);
   EXPECT_TRUE(plugin.resolve({1.0f}));
   const GLuint color = renderer->targets().color;
-  EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, width, height); }));
+  EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, width, height, irradiance); }));
   return hooks;
 }
 

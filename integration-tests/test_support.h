@@ -82,8 +82,9 @@ void writePerSample(GLuint target, int width, int height, const std::string& bod
 std::vector<uint8_t> runPrepassFilter(retroaa::Plugin& plugin, GLuint displayTexture, int width, int height,
                                       const std::string& body);
 
-// A stand-in for a host lighting pass: light = albedo, read from the host's colour attachment.
-void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height);
+// A stand-in for a host lighting pass: light = albedo (read from the host's colour attachment) times
+// `irradiance`, a GLSL float expression that may use gl_FragCoord.
+void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height, const std::string& irradiance = "1.0");
 
 // A host with no scene objects whose G-buffer the tests write by hand: runs one frame of a method on
 // hand-written samples, lit by `albedoAsLight`.
@@ -97,7 +98,8 @@ struct SyntheticFrame {
   std::unique_ptr<patch::RetroaaHooks> attach(const retroaa::Config& config);
   // Resolves and shades `pixels` (see fillGeometry) with `config`; the returned hooks own the plugin.
   std::unique_ptr<patch::RetroaaHooks> run(const retroaa::Config& config,
-                                           const std::vector<std::vector<SyntheticSample>>& pixels);
+                                           const std::vector<std::vector<SyntheticSample>>& pixels,
+                                           const std::string& irradiance = "1.0");
   std::vector<glm::vec4> read(GLuint texture) const;  // RGBA float, GL's bottom-up rows
 };
 

@@ -152,7 +152,7 @@ int runRender(const RenderOptions& options) {
   if (!options.show.empty()) {
     if (options.show != "edges" && options.show != "samples" && options.show != "aggregates")
       throw std::invalid_argument("--show must be edges, samples or aggregates, got '" + options.show + "'");
-    const retroaa::Stats stats = session.plugin().stats();
+    const retroaa::Stats stats = session.plugin().waitForStats();  // the CLI may wait: not a frame path
     if (stats.slices <= 1)  // every pixel lit once: there is nothing to show, only a blank picture
       throw std::invalid_argument("--show " + options.show +
                                   " needs a method that lights some pixels more than once; " + methodName +
@@ -193,7 +193,8 @@ std::string imageFileStem(std::string methodName) {
 std::string benchTable(const json& rows) {
   std::ostringstream table;
   table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | wall ms | wall vs off | plugin "
-           "overhead ms | plugin B/px | PSNR dB | edge PSNR dB | interior PSNR dB | SSIM | max err | PSNR vs per-sample |\n"
+           "overhead ms | plugin B/px | PSNR dB | edge PSNR dB | interior PSNR dB | SSIM | max err | PSNR vs "
+           "per-sample |\n"
         << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   // Null is "-" for a ratio whose baseline was not run, "n/a" for a figure with nothing to measure.
   auto twoDecimals = [](const json& value, const char* whenNull) {
@@ -212,9 +213,9 @@ std::string benchTable(const json& rows) {
           << " | " << ratio(row["plugin_overhead_ms"]) << " | " << std::setprecision(1)
           << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
           << row["psnr_db"].get<double>() << " | " << decibels(row["edge_psnr_db"]) << " | "
-          << decibels(row["interior_psnr_db"]) << " | " << std::setprecision(4)
-          << row["ssim"].get<double>() << " | " << std::setprecision(3) << row["max_abs_error"].get<double>() << " | "
-          << std::setprecision(2) << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
+          << decibels(row["interior_psnr_db"]) << " | " << std::setprecision(4) << row["ssim"].get<double>() << " | "
+          << std::setprecision(3) << row["max_abs_error"].get<double>() << " | " << std::setprecision(2)
+          << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
   }
   return table.str();
 }
@@ -425,8 +426,8 @@ int runSoak(const SoakOptions& options) {
       "soak: plugin GL objects %d at start, %d at end; GL errors %d; resident memory %.1f MiB after warm-up, peak %.1f "
       "MiB (growth %.1f, bound %.0f)\n",
       objectsAtStart, objectsAtEnd, glErrors, residentAfterWarmUp, residentPeak, growth, options.maxGrowthMiB);
-  const bool ok = objectsAtEnd == objectsAtStart && glErrors == 0 && growth <= options.maxGrowthMiB &&
-                  session.lastError().empty();
+  const bool ok =
+      objectsAtEnd == objectsAtStart && glErrors == 0 && growth <= options.maxGrowthMiB && session.lastError().empty();
   if (!session.lastError().empty()) std::printf("soak: plugin error: %s\n", session.lastError().c_str());
   std::printf("soak: %s\n", ok ? "passed" : "FAILED");
   return ok ? kExitOk : kExitCheckFailed;

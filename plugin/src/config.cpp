@@ -186,6 +186,13 @@ const std::vector<Setter>& setters() {
          return parseFloat("adaptive_shading_scale", v, 0.0f, 1000.0f, c.adaptiveShadingScale);
        },
        [](const Config& c) { return formatFloat(c.adaptiveShadingScale); }},
+      {{"adaptive_texture_scale", "16", "0 .. 1000",
+        "adaptive: k_t = scale * N * luma range of the first lit sample scaled by the albedo over the pixel "
+        "(texture detail inside it); larger refines more"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("adaptive_texture_scale", v, 0.0f, 1000.0f, c.adaptiveTextureScale);
+       },
+       [](const Config& c) { return formatFloat(c.adaptiveTextureScale); }},
       {{"adaptive_threshold_min", "0.0312", "0 .. 1",
         "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"},
        [](Config& c, const std::string& v) {

@@ -6,12 +6,12 @@ uniform float uShadingScale;
 uniform float uThresholdMin;
 uniform float uThresholdEdge;
 
-float displayLuma(vec3 c) {
-  float l = dot(max(c, vec3(0.0)), vec3(0.2126, 0.7152, 0.0722));
-  return isnan(l) || isinf(l) ? 1.0 : l / (1.0 + l);
-}
+float linearLuma(vec3 c) { return dot(max(c, vec3(0.0)), vec3(0.2126, 0.7152, 0.0722)); }
+float toDisplay(float l) { return isnan(l) || isinf(l) ? 1.0 : l / (1.0 + l); }
+float displayLuma(vec3 c) { return toDisplay(linearLuma(c)); }
 
-float shadingK(float lMin, float lMax) {
+float shadingK(float lMin, float lMax, float scale) {
   float range = lMax - lMin;
-  return range < max(uThresholdMin, lMax * uThresholdEdge) ? 0.0 : uShadingScale * float(SAMPLES) * range;
+  return range < max(uThresholdMin, lMax * uThresholdEdge) ? 0.0 : scale * float(SAMPLES) * range;
 }
+float shadingK(float lMin, float lMax) { return shadingK(lMin, lMax, uShadingScale); }

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Regenerates adaptive.md's Table 1: adaptive against ssaa at m = 2, 3, 4 on three scenes, 160x120.
+# Regenerates adaptive.md's Table 1: adaptive against ssaa at m = 2, 3, 4 on three scenes, 320x240.
 # Usage (from the repository root, after `make build`): sh docs/results/ssaa/table1.sh [OUT_DIR]
 # Writes one bench JSON per scene and settings here and prints one Markdown row per m; the PSNR and MSE
 # are over RGB of the two 8-bit images (idiff), wall times from the bench's own back-to-back frames.
@@ -7,7 +7,7 @@ set -eu
 retroaa=build/engine-patch/retroaa
 out=${1:-out/table1}
 here=$(dirname "$0")
-quality="@adaptive_shading_scale=16@adaptive_threshold_min=0.004@adaptive_threshold_edge=0.02@adaptive_depth_scale=4@adaptive_normal_scale=32"
+quality="@adaptive_shading_scale=4@adaptive_threshold_min=0.004@adaptive_threshold_edge=0.02@adaptive_depth_scale=4@adaptive_normal_scale=8"
 for scene in default fence space_battle; do
   file=$scene
   [ "$scene" = default ] || file=integration-tests/scenes/$scene.json
@@ -18,8 +18,8 @@ for scene in default fence space_battle; do
     for m in 2 3 4; do methods="$methods,ssaa@supersample=$m,adaptive@supersample=$m$extra"; done
     dir=$out/$scene-$settings
     rm -rf "$dir"
-    "$retroaa" bench --scene "$file" --width 160 --height 120 --methods "${methods#,}" --repeats 1 \
-      --wall-frames 10 --gt-samples 2 --images "$dir" --json "$here/llvmpipe-$scene-160x120-$settings.json" >/dev/null
+    "$retroaa" bench --scene "$file" --width 320 --height 240 --methods "${methods#,}" --repeats 1 \
+      --wall-frames 10 --gt-samples 2 --images "$dir" --json "$here/llvmpipe-$scene-320x240-$settings.json" >/dev/null
     for m in 2 3 4; do
       # oiiotool reads '@' and '=' in names as its own syntax: copy to plain names first.
       cp "$dir/ssaa@supersample=$m.png" "$dir/ssaa$m.png"
@@ -27,7 +27,7 @@ for scene in default fence space_battle; do
       oiiotool "$dir/ssaa$m.png" --ch R,G,B -o "$dir/ssaa${m}_rgb.png"
       oiiotool "$dir/adaptive$m.png" --ch R,G,B -o "$dir/adaptive${m}_rgb.png"
       idiff -a "$dir/ssaa${m}_rgb.png" "$dir/adaptive${m}_rgb.png" >"$dir/idiff$m.txt" || true
-      python3 - "$here/llvmpipe-$scene-160x120-$settings.json" "$m" "$extra" "$dir/idiff$m.txt" "$scene" "$settings" <<'PY'
+      python3 - "$here/llvmpipe-$scene-320x240-$settings.json" "$m" "$extra" "$dir/idiff$m.txt" "$scene" "$settings" <<'PY'
 import json, re, sys
 rows = {r["method"]: r for r in json.load(open(sys.argv[1]))["rows"]}
 m, extra, text = sys.argv[2], sys.argv[3], open(sys.argv[4]).read()

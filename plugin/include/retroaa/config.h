@@ -93,11 +93,12 @@ struct Config {
   float edgeDepthCloseness = 1.0f;
   // Angle of the `normal` detector in degrees, [0, 180]: smaller marks more pixels.
   float edgeNormalAngleDegrees = 25.0f;
-  // `adaptive` (Holländer et al. 2013): k = clamp(max(k_d, k_n, k_s), adaptive_min_samples, N).
+  // `adaptive` (Holländer et al. 2013): k = clamp(max(k_d, k_n, k_s, k_t), adaptive_min_samples, N).
   // Each scale multiplies its metric; larger refines more pixels (slower, closer to per-sample).
-  float adaptiveDepthScale = 0.5f;       // k_d = scale · variance of depth in pixel footprints, [0, 1000]
-  float adaptiveNormalScale = 8.0f;      // k_n = scale · sqrt(1 − min |n̄·n_i|), [0, 1000]
-  float adaptiveShadingScale = 2.0f;     // k_s = scale · N · luma range of the first lit sample, [0, 1000]
+  float adaptiveDepthScale = 0.5f;     // k_d = scale · variance of depth in pixel footprints, [0, 1000]
+  float adaptiveNormalScale = 8.0f;    // k_n = scale · sqrt(1 − min |n̄·n_i|), [0, 1000]
+  float adaptiveShadingScale = 2.0f;   // k_s = scale · N · luma range of the first lit sample, [0, 1000]
+  float adaptiveTextureScale = 16.0f;  // k_t = scale · N · that range scaled by the albedo's over the pixel, [0, 1000]
   float adaptiveThresholdMin = 0.0312f;  // k_s = 0 below this luma range (FXAA's), [0, 1]
   float adaptiveThresholdEdge = 0.125f;  // … or below this fraction of the local max luma, [0, 1]
   int adaptiveMinSamples = 1;            // floor of k, [1, 16]; N forces every sample (equals per-sample)

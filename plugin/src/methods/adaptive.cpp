@@ -62,19 +62,19 @@ class AdaptiveTechnique : public Technique {
     const GBufferLayout& layout = context.layout;
     const MsaaGBuffer& source = *shared.msaa;
     t.stencilExport_ = context.capabilities.stencilExport;
-    auto geometry = context.shaders->program("common/fullscreen.vert", "adaptive/geometry_metric.frag",
-                                             source.shaderDefines(layout, false),
-                                             {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthScale", "uNormalScale", "uShadingScale", "uThresholdMin",
-                                              "uThresholdEdge"});
+    auto geometry = context.shaders->program(
+        "common/fullscreen.vert", "adaptive/geometry_metric.frag", source.shaderDefines(layout, false),
+        {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthScale", "uNormalScale", "uShadingScale", "uThresholdMin",
+         "uThresholdEdge", "uFirstSample", "uSamplePositions", "uImageSize"});
     if (!geometry) return geometry.error();
     t.geometryProgram_ = std::move(geometry.value());
     auto shading = context.shaders->program(
         "common/fullscreen.vert", "adaptive/shading_metric.frag",
         defineLine("SAMPLES", source.samples()) + defineLine("STENCIL_EXPORT", t.stencilExport_),
-        {"uShadingScale", "uThresholdMin", "uThresholdEdge", "uMinSamples"});
+        {"uShadingScale", "uTextureScale", "uThresholdMin", "uThresholdEdge", "uMinSamples"});
     if (!shading) return shading.error();
     t.shadingProgram_ = std::move(shading.value());
-    t.geometryK_ = makeTexture(context, GL_R16F, layout.width, layout.height, 0, "adaptive.geometry_k", t.bytes_);
+    t.geometryK_ = makeTexture(context, GL_RGBA16F, layout.width, layout.height, 0, "adaptive.geometry_k", t.bytes_);
     t.geometryTarget_ = makeFramebuffer(context, "adaptive.geometry_k");
     glNamedFramebufferTexture(t.geometryTarget_.get(), GL_COLOR_ATTACHMENT0, t.geometryK_.get(), 0);
     if (Status status = checkFramebuffer(t.geometryTarget_.get(), "adaptive.geometry_k"); !status)
@@ -82,6 +82,7 @@ class AdaptiveTechnique : public Technique {
 
     // The driver's own sample positions decide the order (queried, not assumed); Bayer's on a grid.
     t.order_ = sampleOrder(source);
+    t.samplePositions_ = source.samplePositions();
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
@@ -96,6 +97,9 @@ class AdaptiveTechnique : public Technique {
     geometryProgram_.set("uShadingScale", context.config.adaptiveShadingScale * budget);
     geometryProgram_.set("uThresholdMin", context.config.adaptiveThresholdMin);
     geometryProgram_.set("uThresholdEdge", context.config.adaptiveThresholdEdge);
+    geometryProgram_.set("uFirstSample", order_.front());
+    geometryProgram_.setVec2Array("uSamplePositions", int(samplePositions_.size() / 2), samplePositions_.data());
+    geometryProgram_.set("uImageSize", float(context.layout.width), float(context.layout.height));
     context.drawFullscreen();
     return Status::ok();
   }
@@ -113,6 +117,7 @@ class AdaptiveTechnique : public Technique {
       glBindTextureUnit(0, slices.firstSliceLight());
       glBindTextureUnit(2, geometryK_.get());
       shadingProgram_.set("uShadingScale", context.config.adaptiveShadingScale * float(context.budgetScale));
+      shadingProgram_.set("uTextureScale", context.config.adaptiveTextureScale * float(context.budgetScale));
       shadingProgram_.set("uThresholdMin", context.config.adaptiveThresholdMin);
       shadingProgram_.set("uThresholdEdge", context.config.adaptiveThresholdEdge);
       shadingProgram_.set("uMinSamples", context.config.adaptiveMinSamples);
@@ -130,6 +135,7 @@ class AdaptiveTechnique : public Technique {
   GlTexture geometryK_;
   GlFramebuffer geometryTarget_;
   std::vector<int> order_;
+  std::vector<float> samplePositions_;
   bool stencilExport_ = false;
   uint64_t bytes_ = 0;
 };
