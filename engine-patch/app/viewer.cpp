@@ -397,6 +397,7 @@ class Viewer {
     changed |= settingCombo("edge detector", "edge_detector", config);
     changed |= ImGui::SliderFloat("closeness c", &config.closeness, 0.0f, 20.0f);
     changed |= ImGui::SliderFloat("adaptive shading scale", &config.adaptiveShadingScale, 0.0f, 16.0f);
+    changed |= ImGui::SliderFloat("adaptive texture scale", &config.adaptiveTextureScale, 0.0f, 32.0f);
     changed |= ImGui::SliderInt("aggregates c", &config.aggregateCount, 1, 4);
     changed |= ImGui::SliderFloat("coverage tolerance", &config.coverageTolerance, 0.0f, 8.0f);
     changed |= ImGui::Checkbox("fxaa on top", &config.fxaa);
