@@ -83,8 +83,8 @@ PRESET_RUN = $(RETROAA) tune --scenes default,integration-tests/scenes/fence.jso
 presets: build
 	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=16.0 --out presets/low.cfg
 	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=17.5 --out presets/medium.cfg
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=18.5 --out presets/high.cfg
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=18.7 --out presets/ultra.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=18.0 --out presets/high.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=18.16 --out presets/ultra.cfg
 	rm -f presets/*.cfg.json
 	cmake --build $(BUILD) -j$(JOBS)
 
