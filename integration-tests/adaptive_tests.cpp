@@ -138,10 +138,10 @@ TEST_F(AdaptiveMetrics, GrazingPlaneNeedsOneSampleADepthStepStillEvery) {
     auto hooks = frame_.attach(config);
     ASSERT_TRUE(hooks);
     GLint samples = 0;
-    glBindFramebuffer(GL_FRAMEBUFFER, hooks->plugin().geometryFramebuffer());  // sample positions are the bound one's
+    glBindFramebuffer(GL_FRAMEBUFFER, hooks->plugin().geometryFramebuffer());  // GL_SAMPLES is the bound one's
     glGetIntegerv(GL_SAMPLES, &samples);
     positions.assign(size_t(std::max(samples, 1)) * 2, 0.5f);
-    for (GLint s = 0; s < samples; ++s) glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(s), &positions[2 * s]);
+    retroaa::readSamplePositions(hooks->plugin().geometryFramebuffer(), positions);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
   const int n = int(positions.size() / 2);

@@ -22,7 +22,7 @@ uniform float uFootprintTan;
 uniform float uDepthScale;
 uniform float uNormalScale;
 uniform int uFirstSample;                // the sample the first slice lights
-uniform vec2 uSamplePositions[SAMPLES];  // within the pixel, [0, 1)²
+uniform vec2 uSampleOffsets[SAMPLES];    // positions within the pixel less their mean, in pixels
 uniform vec2 uImageSize;                  // in pixels
 layout(location = 0) out vec4 outGeometryK;  // r: k_geo; g, b: albedo luma range / a; a: first albedo luma
 
@@ -58,9 +58,9 @@ vec3 albedoRange(ivec2 pixel) {
 #endif
 }
 
-// A neighbouring pixel's mean inverse depth relative to `mean` (this pixel's mean depth); false where
-// it is off the image or shows background.
-bool neighbourLevel(ivec2 pixel, float mean, out float level) {
+// A pixel's mean inverse depth relative to `mean` (a depth in metres); false where the pixel is off the
+// image or shows background.
+bool relativeInverseDepth(ivec2 pixel, float mean, out float level) {
   level = 0.0;
   if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(vec2(pixel), uImageSize))) return false;
   for (int s = 0; s < SAMPLES; ++s) {
@@ -75,8 +75,8 @@ bool neighbourLevel(ivec2 pixel, float mean, out float level) {
 // Per axis the gentler of the two one-sided slopes (0 where neither neighbour is a surface).
 float gentlerSlope(ivec2 pixel, ivec2 axis, float mean, float level) {
   float forward, backward;
-  bool hasForward = neighbourLevel(pixel + axis, mean, forward);
-  bool hasBackward = neighbourLevel(pixel - axis, mean, backward);
+  bool hasForward = relativeInverseDepth(pixel + axis, mean, forward);
+  bool hasBackward = relativeInverseDepth(pixel - axis, mean, backward);
   float ahead = forward - level, behind = level - backward;
   if (hasForward && hasBackward) return abs(ahead) < abs(behind) ? ahead : behind;
   return hasForward ? ahead : hasBackward ? behind : 0.0;
@@ -87,9 +87,10 @@ void main() {
   float kEmissive = emissiveK(pixel);
   int background = 0;
   float sum = 0.0;
+  float distances[SAMPLES];  // fetched once: the loops below read each sample again
   vec3 normalSum = vec3(0.0);
   for (int s = 0; s < SAMPLES; ++s) {
-    float d = sampleDistance(pixel, s);
+    float d = distances[s] = sampleDistance(pixel, s);
     if (isinf(d) || !sampleIsFinite(pixel, s)) { ++background; continue; }
     sum += d;
 #if NORMAL_ATTACHMENT >= 0
@@ -103,10 +104,8 @@ void main() {
   // The plane the neighbours continue, in inverse depth relative to this pixel's mean (linear in screen
   // position for any plane, ≈ 1 here): per axis the gentler of the two one-sided slopes, so a step just
   // beyond a pixel that lies wholly on one surface does not count as its own.
-  vec2 sampleCentre = vec2(0.0);
   float level = 0.0;
-  for (int s = 0; s < SAMPLES; ++s) sampleCentre += uSamplePositions[s], level += mean / sampleDistance(pixel, s);
-  sampleCentre /= float(SAMPLES);
+  for (int s = 0; s < SAMPLES; ++s) level += mean / distances[s];
   level /= float(SAMPLES);
   vec2 slope = vec2(gentlerSlope(pixel, ivec2(1, 0), mean, level), gentlerSlope(pixel, ivec2(0, 1), mean, level));
   // Spread about the mean (the paper's) and about that plane: the smaller counts, since depth taken from
@@ -116,8 +115,8 @@ void main() {
   vec3 meanNormal = dot(normalSum, normalSum) > 0.0 ? normalize(normalSum) : vec3(0.0);
   for (int s = 0; s < SAMPLES; ++s) {
     // In pixel footprints: Δd ≈ −d̄ · Δ(d̄/d) near the mean. Centred first: no cancellation at 1e6 m.
-    float offMean = mean / sampleDistance(pixel, s) - level;
-    vec2 u = vec2(offMean, offMean - dot(slope, uSamplePositions[s] - sampleCentre)) / uFootprintTan;
+    float offMean = mean / distances[s] - level;
+    vec2 u = vec2(offMean, offMean - dot(slope, uSampleOffsets[s])) / uFootprintTan;
     sumFootprints += u;
     sumSquares += u * u;
 #if NORMAL_ATTACHMENT >= 0

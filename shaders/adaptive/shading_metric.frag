@@ -16,11 +16,10 @@ uniform float uTextureScale;
 uniform int uMinSamples;
 layout(location = 0) out uint outCount;
 
-float ownAlbedo;  // this pixel's first albedo luma; 0 where unknown
-
-// A neighbour's first lit luma as if it had this pixel's albedo (both known): texture contrast between
-// pixels is no shading to refine, the albedo term below sees texture inside the window.
-float luma(ivec2 pixel) {
+// A neighbour's first lit luma as if it had this pixel's albedo luma `ownAlbedo` (both known, else 0):
+// texture contrast between pixels is no shading to refine, the albedo term below sees texture inside
+// the window.
+float luma(ivec2 pixel, float ownAlbedo) {
   ivec2 at = clamp(pixel, ivec2(0), textureSize(uFirstLight, 0) - 1);
   float albedo = texelFetch(uGeometryK, at, 0).a;
   float scale = ownAlbedo > 0.0 && albedo > 0.0 ? clamp(ownAlbedo / albedo, 1.0 / 64.0, 64.0) : 1.0;
@@ -30,9 +29,10 @@ float luma(ivec2 pixel) {
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 geometry = texelFetch(uGeometryK, pixel, 0);
-  ownAlbedo = geometry.a;
-  float l0 = luma(pixel), lN = luma(pixel + ivec2(0, 1)), lS = luma(pixel - ivec2(0, 1));
-  float lE = luma(pixel + ivec2(1, 0)), lW = luma(pixel - ivec2(1, 0));
+  float ownAlbedo = geometry.a;
+  float l0 = luma(pixel, ownAlbedo), lN = luma(pixel + ivec2(0, 1), ownAlbedo);
+  float lS = luma(pixel - ivec2(0, 1), ownAlbedo), lE = luma(pixel + ivec2(1, 0), ownAlbedo);
+  float lW = luma(pixel - ivec2(1, 0), ownAlbedo);
   float lMax = max(l0, max(max(lN, lS), max(lE, lW)));
   float kShading = shadingK(min(l0, min(min(lN, lS), min(lE, lW))), lMax);
   float firstLuma = linearLuma(texelFetch(uFirstLight, pixel, 0).rgb);

@@ -65,7 +65,7 @@ class AdaptiveTechnique : public Technique {
     auto geometry = context.shaders->program(
         "common/fullscreen.vert", "adaptive/geometry_metric.frag", source.shaderDefines(layout, false),
         {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthScale", "uNormalScale", "uShadingScale", "uThresholdMin",
-         "uThresholdEdge", "uFirstSample", "uSamplePositions", "uImageSize"});
+         "uThresholdEdge", "uFirstSample", "uSampleOffsets", "uImageSize"});
     if (!geometry) return geometry.error();
     t.geometryProgram_ = std::move(geometry.value());
     auto shading = context.shaders->program(
@@ -82,7 +82,14 @@ class AdaptiveTechnique : public Technique {
 
     // The driver's own sample positions decide the order (queried, not assumed); Bayer's on a grid.
     t.order_ = sampleOrder(source);
-    t.samplePositions_ = source.samplePositions();
+    // The geometry metric's plane needs each sample's offset from the samples' mean position.
+    t.sampleOffsets_ = source.samplePositions();
+    const size_t count = t.sampleOffsets_.size() / 2;
+    for (int axis = 0; axis < 2; ++axis) {
+      float mean = 0.0f;
+      for (size_t s = 0; s < count; ++s) mean += t.sampleOffsets_[2 * s + axis] / float(count);
+      for (size_t s = 0; s < count; ++s) t.sampleOffsets_[2 * s + axis] -= mean;
+    }
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
@@ -98,7 +105,7 @@ class AdaptiveTechnique : public Technique {
     geometryProgram_.set("uThresholdMin", context.config.adaptiveThresholdMin);
     geometryProgram_.set("uThresholdEdge", context.config.adaptiveThresholdEdge);
     geometryProgram_.set("uFirstSample", order_.front());
-    geometryProgram_.setVec2Array("uSamplePositions", int(samplePositions_.size() / 2), samplePositions_.data());
+    geometryProgram_.setVec2Array("uSampleOffsets", int(sampleOffsets_.size() / 2), sampleOffsets_.data());
     geometryProgram_.set("uImageSize", float(context.layout.width), float(context.layout.height));
     context.drawFullscreen();
     return Status::ok();
@@ -135,7 +142,7 @@ class AdaptiveTechnique : public Technique {
   GlTexture geometryK_;
   GlFramebuffer geometryTarget_;
   std::vector<int> order_;
-  std::vector<float> samplePositions_;
+  std::vector<float> sampleOffsets_;
   bool stencilExport_ = false;
   uint64_t bytes_ = 0;
 };
