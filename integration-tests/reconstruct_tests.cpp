@@ -19,12 +19,13 @@ struct ReconstructFixture {
   SyntheticFrame frame{kWidth, kHeight};
   std::unique_ptr<patch::RetroaaHooks> hooks;
 
-  ReconstructFixture(const std::vector<uint8_t>& display, const std::vector<float>& pixelDepth,
-                     float tolerance = 2.0f) {
+  ReconstructFixture(const std::vector<uint8_t>& display, const std::vector<float>& pixelDepth, float tolerance = 2.0f,
+                     int searchRadius = 1) {
     retroaa::Config config;
     config.method = retroaa::Method::Reconstruct;
     config.samples = 4;
     config.reconstructTolerance = tolerance;
+    config.reconstructSearchRadius = searchRadius;
     hooks = frame.attach(config);
     if (!hooks) throw std::runtime_error("the patch did not attach");
     const host::HostTargets& t = frame.renderer->targets();
@@ -92,6 +93,33 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
     EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0) << "row " << y << ": half surface, half background";
     EXPECT_EQ(out[(y * kWidth + 6) * 4], 200) << "row " << y;
     EXPECT_EQ(out[(y * kWidth + 8) * 4], 30) << "row " << y;
+  }
+}
+
+TEST(Reconstruct, AWireNoNearbyPixelCentreHitsIsRebuiltFromOneAlongIt) {
+  // Background (display 30) everywhere; in row 3 a wire in front of it that only the sub-samples at
+  // y = 0.625 see, except in column 12, where it bends across the whole pixel and the host shaded it
+  // (display 200). With search radius 4 every wire sub-sample within 4 pixels of column 12 takes its
+  // colour, one of four sub-samples: a quarter of the wire, in linear light. Radius 1 reaches only the
+  // adjacent columns; beyond the radius the pixel stays as shaded.
+  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
+  std::vector<float> depth(kWidth * kHeight, 1.0f);
+  for (int x = 0; x < kWidth * kHeight; ++x)
+    for (int c = 0; c < 3; ++c) display[size_t(x) * 4 + c] = x == 3 * kWidth + 12 ? 200 : 30;
+  depth[3 * kWidth + 12] = 0.5f;
+  const char* body =
+      "bool wire = y == 3 && (abs(position.y - 0.625) < 0.05 || x == 12);"
+      " gl_FragDepth = wire ? 0.5 : 1.0; outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
+  const float quarter = toDisplay(0.25f * toLinear(200.0f / 255.0f) + 0.75f * toLinear(30.0f / 255.0f)) * 255.0f;
+  for (int radius : {1, 4}) {
+    ReconstructFixture fixture(display, depth, 2.0f, radius);
+    const std::vector<uint8_t> out = fixture.run(body);
+    for (int x = 0; x < kWidth; ++x) {
+      const int distance = std::abs(x - 12);
+      const float expected = distance == 0 ? 200.0f : distance <= radius ? quarter : 30.0f;
+      EXPECT_NEAR(out[size_t(3 * kWidth + x) * 4], expected, 1.0) << "radius " << radius << ", column " << x;
+    }
+    EXPECT_EQ(out[size_t(2 * kWidth + 5) * 4], 30) << "rows off the wire stay as shaded";
   }
 }
 

@@ -122,7 +122,7 @@ void writePerSample(GLuint target, int width, int height, const std::string& bod
   const std::string fragment =
       "#version 450 core\nlayout(location = 2) out vec4 outNormal;\n"
       "void main() {  // reading gl_SamplePosition runs this once per sample\n"
-      "  int x = int(gl_FragCoord.x);\n  vec2 position = gl_SamplePosition;\n" +
+      "  int x = int(gl_FragCoord.x), y = int(gl_FragCoord.y);\n  vec2 position = gl_SamplePosition;\n" +
       body + "\n}\n";
   glBindFramebuffer(GL_FRAMEBUFFER, target);
   glViewport(0, 0, width, height);

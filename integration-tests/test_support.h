@@ -71,8 +71,8 @@ int fillGeometry(retroaa::Plugin& plugin, int width, int height,
 // Draws one full-screen triangle with a separable fragment program into the bound framebuffer.
 void drawWithFragment(const char* fragmentSource, const std::function<void(GLuint program)>& setUniforms);
 
-// Writes every sample of `target` (depth test ALWAYS): `body` runs once per sample with `int x` (the
-// pixel column) and `vec2 position` (the sample's position in its pixel) and sets gl_FragDepth and, where
+// Writes every sample of `target` (depth test ALWAYS): `body` runs once per sample with `int x, y` (the
+// pixel) and `vec2 position` (the sample's position in its pixel) and sets gl_FragDepth and, where
 // the target keeps one, `outNormal` (location 2).
 void writePerSample(GLuint target, int width, int height, const std::string& body);
 

@@ -71,6 +71,16 @@ Status parseFloat(const std::string& key, const std::string& value, float minimu
   return Status::ok();
 }
 
+Status parseInt(const std::string& key, const std::string& value, int minimum, int maximum, int& out) {
+  float parsed = 0;
+  const Status number = parseFloat(key, value, float(minimum), float(maximum), parsed);
+  if (!number || parsed != std::floor(parsed))
+    return invalid("config key '" + key + "': value " + quoted(value) + " is not an integer in [" +
+                   std::to_string(minimum) + ", " + std::to_string(maximum) + "]");
+  out = int(parsed);
+  return Status::ok();
+}
+
 Status parseBool(const std::string& key, const std::string& value, bool& out) {
   if (value == "on" || value == "true" || value == "1") return out = true, Status::ok();
   if (value == "off" || value == "false" || value == "0") return out = false, Status::ok();
@@ -206,13 +216,7 @@ const std::vector<Setter>& setters() {
        },
        [](const Config& c) { return formatFloat(c.adaptiveThresholdEdge); }},
       {{"adaptive_min_samples", "1", "1 .. 16", "adaptive: floor of the per-pixel sample count; N lights every sample"},
-       [](Config& c, const std::string& v) -> Status {
-         float value = 0;
-         if (Status s = parseFloat("adaptive_min_samples", v, 1.0f, 16.0f, value); !s) return s;
-         if (value != std::floor(value))
-           return invalid("config key 'adaptive_min_samples': value " + quoted(v) + " is not an integer in [1, 16]");
-         return c.adaptiveMinSamples = int(value), Status::ok();
-       },
+       [](Config& c, const std::string& v) { return parseInt("adaptive_min_samples", v, 1, 16, c.adaptiveMinSamples); },
        [](const Config& c) { return std::to_string(c.adaptiveMinSamples); }},
       {{"aggregate_count", "2", "1 .. 4",
         "aggregate: at most this many aggregates per pixel (plus background); more is closer to per-sample"},
@@ -254,6 +258,13 @@ const std::vector<Setter>& setters() {
          return parseFloat("reconstruct_tolerance", v, 0.0f, 100.0f, c.reconstructTolerance);
        },
        [](const Config& c) { return formatFloat(c.reconstructTolerance); }},
+      {{"reconstruct_search_radius", "4", "1 .. 8",
+        "reconstruct: how many rings of pixels a sub-sample searches for its surface when no neighbour holds it "
+        "(sub-pixel wires: a pixel centre on the same wire lies a few pixels along it)"},
+       [](Config& c, const std::string& v) {
+         return parseInt("reconstruct_search_radius", v, 1, 8, c.reconstructSearchRadius);
+       },
+       [](const Config& c) { return std::to_string(c.reconstructSearchRadius); }},
       {{"reconstruct_before_tonemap", "off", "on, off",
         "reconstruct on the HDR light target before tonemapping (+8 B/px) instead of on the display"},
        [](Config& c, const std::string& v) {

@@ -6,11 +6,12 @@
 // texture detail pass through bit for bit. Any other sub-sample takes the colour of the neighbouring
 // shaded pixels whose geometry matches it, weighted by that match and by how near their centres lie
 // to the sub-sample: the silhouette pixel becomes the coverage-weighted mix of the surfaces it holds.
-// A sub-sample no neighbour matches (a wire thinner than a pixel that no pixel centre hit) cannot be
-// rebuilt and keeps the pixel's colour. Colours are mixed in linear light (the display holds sRGB-encoded
+// A sub-sample no neighbour matches that lies in front of or behind everything around it (a wire or a
+// gap thinner than a pixel) searches farther rings: a pixel centre hits the same wire a few pixels along
+// it. One that no pixel within SEARCH_RADIUS matches cannot be rebuilt and keeps the pixel's colour. Colours are mixed in linear light (the display holds sRGB-encoded
 // values): averaging the encoded values darkens every blended edge, 0.8 dB of edge PSNR on the demo.
-// The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING, HAS_NORMALS, PACKED_SAMPLE_NORMALS
-// and RADIANCE (run on the HDR light target before tonemapping instead of on the display).
+// The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING, HAS_NORMALS, PACKED_SAMPLE_NORMALS,
+// SEARCH_RADIUS (rings of pixels, 1: the 3×3 neighbourhood) and RADIANCE (run on the HDR light target before tonemapping instead of on the display).
 #include "common/depth_buffer.glsl"
 #include "common/normal.glsl"
 layout(binding = 0) uniform sampler2D uInput;           // the display image (or the light target)
@@ -83,36 +84,91 @@ float similarity(Geometry a, Geometry b) {
   return c * c;
 }
 
+// The depths of a pixel and its eight neighbours; background lies behind every depth.
+struct Range {
+  float nearest;   // metres, over the geometry among them
+  float farthest;
+  bool background;  // any of them is background
+};
+
+Range widen(Range r, Geometry g) {
+  if (g.background) {
+    r.background = true;
+  } else if (r.nearest > r.farthest) {  // no geometry yet
+    r.nearest = r.farthest = g.depth;
+  } else {
+    r.nearest = min(r.nearest, g.depth);
+    r.farthest = max(r.farthest, g.depth);
+  }
+  return r;
+}
+
+// Whether a sub-sample lies in front of or behind everything in the range, beyond the depth tolerance.
+bool outside(Geometry g, Range r) {
+  bool anyGeometry = r.nearest <= r.farthest;
+  if (g.background) return !r.background;
+  if (!anyGeometry) return true;
+  float tolerance = g.depth * uFootprintTan * uTolerance;
+  return g.depth + tolerance < r.nearest || (!r.background && g.depth - tolerance > r.farthest);
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   ivec2 last = textureSize(uInput, 0) - 1;
   vec4 centre = texelFetch(uInput, pixel, 0);
   vec3 centreLinear = toLinear(centre.rgb);
   Geometry own = pixelGeometry(pixel);
-  vec3 sum = vec3(0.0);
-  int rebuilt = 0;
+  Geometry samples[SAMPLES];
+  vec3 colour[SAMPLES];
+  float weightSum[SAMPLES];
+  int open = 0;  // bit s: sub-sample s is still looking for its surface
   for (int s = 0; s < SAMPLES; ++s) {
-    Geometry g = sampleGeometry(pixel, s);
-    if (similarity(g, own) >= 0.5) {
-      sum += centreLinear;
-      continue;
-    }
-    ++rebuilt;
-    vec2 at = vec2(pixel) + uSamplePositions[s];
-    vec3 colour = vec3(0.0);
-    float weightSum = 0.0;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), last);
-        if (q == pixel) continue;
-        float w = similarity(g, pixelGeometry(q));
-        if (w <= 0.0) continue;
-        vec2 offset = at - (vec2(q) + 0.5);
-        w *= exp(-dot(offset, offset) / (2.0 * kSpatialSigma * kSpatialSigma));
-        colour += w * toLinear(texelFetch(uInput, q, 0).rgb);
-        weightSum += w;
-      }
-    sum += weightSum > 1e-6 ? colour / weightSum : centreLinear;
+    samples[s] = sampleGeometry(pixel, s);
+    bool onOwnSurface = similarity(samples[s], own) >= 0.5;
+    colour[s] = onOwnSurface ? centreLinear : vec3(0.0);
+    weightSum[s] = onOwnSurface ? 1.0 : 0.0;
+    if (!onOwnSurface) open |= 1 << s;
   }
-  outColour = rebuilt == 0 ? centre : vec4(toDisplay(sum / float(SAMPLES)), centre.a);
+  if (open == 0) {
+    outColour = centre;
+    return;
+  }
+  // Search outwards ring by ring; each sub-sample stops at the first ring holding its surface. Every
+  // ring pixel's geometry is fetched once for all sub-samples still open. Past the first ring only a
+  // sub-sample that lies in front of (or behind) everything around it searches on: a wire or a gap
+  // thinner than a pixel, whose surface a pixel centre hits a few pixels along it. One that lies between
+  // its neighbours' depths (a grazing floor, a crease) has no farther pixel to find.
+  Range around = widen(Range(1.0, 0.0, false), own);  // nearest > farthest: no geometry yet
+  for (int ring = 1; ring <= SEARCH_RADIUS && open != 0; ++ring) {
+    float nearest = float(ring) - 0.5;  // no sub-sample lies nearer a ring pixel's centre than this
+    int found = 0;
+    for (int dy = -ring; dy <= ring; ++dy)
+      for (int dx = -ring; dx <= ring; dx += (abs(dy) == ring ? 1 : 2 * ring)) {
+        ivec2 q = pixel + ivec2(dx, dy);
+        if (any(lessThan(q, ivec2(0))) || any(greaterThan(q, last))) continue;
+        Geometry candidate = pixelGeometry(q);
+        if (ring == 1) around = widen(around, candidate);
+        vec3 candidateLinear = vec3(-1.0);
+        for (int s = 0; s < SAMPLES; ++s) {
+          if ((open & (1 << s)) == 0) continue;
+          float w = similarity(samples[s], candidate);
+          if (w <= 0.0) continue;
+          if (candidateLinear.r < 0.0) candidateLinear = toLinear(texelFetch(uInput, q, 0).rgb);
+          vec2 offset = vec2(pixel) + uSamplePositions[s] - (vec2(q) + 0.5);
+          // The Gaussian relative to the ring's nearest distance: within one ring only ratios matter,
+          // and far rings would otherwise underflow.
+          w *= exp(-(dot(offset, offset) - nearest * nearest) / (2.0 * kSpatialSigma * kSpatialSigma));
+          colour[s] += w * candidateLinear;
+          weightSum[s] += w;
+          found |= 1 << s;
+        }
+      }
+    open &= ~found;
+    if (ring == 1)
+      for (int s = 0; s < SAMPLES; ++s)
+        if (!outside(samples[s], around)) open &= ~(1 << s);
+  }
+  vec3 sum = vec3(0.0);
+  for (int s = 0; s < SAMPLES; ++s) sum += weightSum[s] > 0.0 ? colour[s] / weightSum[s] : centreLinear;
+  outColour = vec4(toDisplay(sum / float(SAMPLES)), centre.a);
 }

@@ -120,6 +120,11 @@ struct Config {
   // c of the reconstruction's depth test (Eq. 1 style), [0, 100]: a sub-sample belongs to a shaded pixel
   // whose depth is within min(d)·tan(hfov/width)·c of its own (and whose normal agrees).
   float reconstructTolerance = 2.0f;
+  // How far, in rings of pixels around its own, a sub-sample that no neighbour matches searches for a
+  // shaded pixel on its surface, [1, 8]. 1 is the 3×3 neighbourhood of the SRAA paper; a wire thinner
+  // than a pixel is hit by a pixel centre only every few pixels along it, so larger radii rebuild it.
+  // The search costs only at such sub-samples.
+  int reconstructSearchRadius = 4;
   // Reconstruct on the host's HDR light target between lighting and tonemapping (radiance mixes as the
   // ground truth's supersamples do; +8 B/px for a copy) instead of on the display after tonemapping.
   bool reconstructBeforeTonemap = false;

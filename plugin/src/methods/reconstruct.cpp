@@ -24,6 +24,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     if (const int normal = findRole(layout, AttachmentRole::NormalGloss); normal >= 0)
       t.pixelNormal_ = layout.attachments[size_t(normal)].texture;
     t.beforeTonemap_ = context.config.reconstructBeforeTonemap;
+    t.searchRadius_ = context.config.reconstructSearchRadius;
     if (t.beforeTonemap_ && !layout.lightTexture)
       return Error{ErrorCode::InvalidLayout,
                    "reconstruct_before_tonemap=on filters the light target: the layout names no lightTexture"};
@@ -37,7 +38,8 @@ class ReconstructTechnique : public SampleGeometryTechnique {
         "common/fullscreen.vert", "reconstruct/reconstruct.frag",
         defineLine("SAMPLES", t.geometry_.samples) + depthEncodingDefines(layout) +
             defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
-            defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) + defineLine("RADIANCE", t.beforeTonemap_),
+            defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) + defineLine("RADIANCE", t.beforeTonemap_) +
+            defineLine("SEARCH_RADIUS", context.config.reconstructSearchRadius),
         {"uSamplePositions", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
@@ -68,7 +70,8 @@ class ReconstructTechnique : public SampleGeometryTechnique {
   }
 
   bool keepsObjectsFor(const Config& config) const override {
-    return SampleGeometryTechnique::keepsObjectsFor(config) && config.reconstructBeforeTonemap == beforeTonemap_;
+    return SampleGeometryTechnique::keepsObjectsFor(config) && config.reconstructBeforeTonemap == beforeTonemap_ &&
+           config.reconstructSearchRadius == searchRadius_;
   }
 
  private:
@@ -91,6 +94,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
   GlTexture radiance_;      // before tonemapping: the light target as lit
   GLuint pixelNormal_ = 0;  // the host's single-sample normal attachment (0: the layout has none)
   bool beforeTonemap_ = false;
+  int searchRadius_ = 1;  // compiled into the program
 };
 
 }  // namespace
