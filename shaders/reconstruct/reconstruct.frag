@@ -25,6 +25,7 @@ uniform float uTolerance;     // c of the Eq. 1 style depth test
 out vec4 outColour;
 
 const float kSpatialSigma = 0.75;  // pixels: neighbours nearer the sub-sample weigh more
+const int kNearRings = 2;  // how far a sub-sample within its neighbours' depths searches
 
 #if RADIANCE  // the HDR light target: already linear
 vec3 toLinear(vec3 c) { return c; }
@@ -134,10 +135,12 @@ void main() {
     return;
   }
   // Search outwards ring by ring; each sub-sample stops at the first ring holding its surface. Every
-  // ring pixel's geometry is fetched once for all sub-samples still open. Past the first ring only a
-  // sub-sample that lies in front of (or behind) everything around it searches on: a wire or a gap
+  // ring pixel's geometry is fetched once for all sub-samples still open. Only a sub-sample in front of
+  // (or behind) everything in its 3×3 neighbourhood searches past the second ring: a wire or a gap
   // thinner than a pixel, whose surface a pixel centre hits a few pixels along it. One that lies between
-  // its neighbours' depths (a grazing floor, a crease) has no farther pixel to find.
+  // its neighbours' depths (a grazing floor, a crease, a bump) rarely has its surface farther out:
+  // letting it search on too made the demo's pass 1.4× as costly for 0.03–0.26 dB (llvmpipe).
+  int nearOnly = 0;  // bit s: sub-sample s lies within its neighbours' depths
   Range around = widen(Range(1.0, 0.0, false), own);  // nearest > farthest: no geometry yet
   for (int ring = 1; ring <= SEARCH_RADIUS && open != 0; ++ring) {
     float nearest = float(ring) - 0.5;  // no sub-sample lies nearer a ring pixel's centre than this
@@ -166,7 +169,8 @@ void main() {
     open &= ~found;
     if (ring == 1)
       for (int s = 0; s < SAMPLES; ++s)
-        if (!outside(samples[s], around)) open &= ~(1 << s);
+        if (!outside(samples[s], around)) nearOnly |= 1 << s;
+    if (ring == kNearRings) open &= ~nearOnly;
   }
   vec3 sum = vec3(0.0);
   for (int s = 0; s < SAMPLES; ++s) sum += weightSum[s] > 0.0 ? colour[s] / weightSum[s] : centreLinear;
