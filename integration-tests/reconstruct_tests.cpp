@@ -20,7 +20,7 @@ struct ReconstructFixture {
   std::unique_ptr<patch::RetroaaHooks> hooks;
 
   ReconstructFixture(const std::vector<uint8_t>& display, const std::vector<float>& pixelDepth, float tolerance = 2.0f,
-                     int searchRadius = 1) {
+                     int searchRadius = retroaa::Config{}.reconstructSearchRadius) {
     retroaa::Config config;
     config.method = retroaa::Method::Reconstruct;
     config.samples = 4;

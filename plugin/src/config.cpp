@@ -258,7 +258,7 @@ const std::vector<Setter>& setters() {
          return parseFloat("reconstruct_tolerance", v, 0.0f, 100.0f, c.reconstructTolerance);
        },
        [](const Config& c) { return formatFloat(c.reconstructTolerance); }},
-      {{"reconstruct_search_radius", "4", "1 .. 8",
+      {{"reconstruct_search_radius", "6", "1 .. 8",
         "reconstruct: how many rings of pixels a sub-sample searches for its surface when no neighbour holds it "
         "(sub-pixel wires: a pixel centre on the same wire lies a few pixels along it)"},
        [](Config& c, const std::string& v) {

@@ -124,7 +124,7 @@ struct Config {
   // shaded pixel on its surface, [1, 8]. 1 is the 3×3 neighbourhood of the SRAA paper; a wire thinner
   // than a pixel is hit by a pixel centre only every few pixels along it, so larger radii rebuild it.
   // The search costs only at such sub-samples.
-  int reconstructSearchRadius = 4;
+  int reconstructSearchRadius = 6;
   // Reconstruct on the host's HDR light target between lighting and tonemapping (radiance mixes as the
   // ground truth's supersamples do; +8 B/px for a copy) instead of on the display after tonemapping.
   bool reconstructBeforeTonemap = false;
