@@ -67,10 +67,9 @@ int main() {
 
   retroaa::Description description;
   description.layout = layout;
-  // The embedded presets: `low` is resolve with FXAA on top (presets/low.cfg).
+  // The embedded presets: `low` is reconstruct (presets/low.cfg), so the frame includes its prepass.
   if (!retroaa::applySetting(description.config, "preset", "low")) return fail("no embedded preset 'low'");
-  if (description.config.method != retroaa::Method::Resolve || !description.config.fxaa)
-    return fail("preset 'low' changed");
+  if (description.config.method != retroaa::Method::Reconstruct) return fail("preset 'low' changed");
   auto created = retroaa::Plugin::create(description);
   if (!created) return fail(created.error().message.c_str());
   retroaa::Plugin& plugin = *created.value();
@@ -80,6 +79,10 @@ int main() {
   const GLfloat albedo[] = {0.5f, 0.5f, 0.5f, 1}, position[] = {0, 0, 10, 1}, normal[] = {0, 0, 1, 0.5f};
   glClearBufferfv(GL_COLOR, 0, albedo);
   glClearBufferfv(GL_COLOR, 1, position);
+  glClearBufferfv(GL_COLOR, 2, normal);
+  glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  if (plugin.prepassFramebuffer() == 0) return fail("reconstruct hands out no prepass framebuffer");
+  glBindFramebuffer(GL_FRAMEBUFFER, plugin.prepassFramebuffer());  // the models again: depth and normal
   glClearBufferfv(GL_COLOR, 2, normal);
   glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
   if (!plugin.resolve({})) return fail("resolve");
@@ -95,7 +98,7 @@ int main() {
   if (stats.lightingEvaluations != uint64_t(width) * height) return fail("not one lighting evaluation per pixel");
   if (glGetError() != GL_NO_ERROR) return fail("a GL error");
   std::printf(
-      "consumer: retroaa %s, preset low (%s+fxaa) at %d samples, %.3f evaluations per pixel, %d GL objects, no GL "
+      "consumer: retroaa %s, preset low (%s) at %d samples, %.3f evaluations per pixel, %d GL objects, no GL "
       "error\n",
       retroaa::version(), retroaa::toString(stats.method), stats.samples, stats.evaluationsPerPixel(),
       stats.glObjectsHeld);
