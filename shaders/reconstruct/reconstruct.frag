@@ -8,10 +8,12 @@
 // to the sub-sample: the silhouette pixel becomes the coverage-weighted mix of the surfaces it holds.
 // A sub-sample no neighbour matches that lies in front of or behind everything around it (a wire or a
 // gap thinner than a pixel) searches farther rings: a pixel centre hits the same wire a few pixels along
-// it. One that no pixel within SEARCH_RADIUS matches cannot be rebuilt and keeps the pixel's colour. Colours are mixed in linear light (the display holds sRGB-encoded
-// values): averaging the encoded values darkens every blended edge, 0.8 dB of edge PSNR on the demo.
+// it. One that no pixel within SEARCH_RADIUS matches cannot be rebuilt and keeps the pixel's colour.
+// Colours are mixed in linear light (the display holds sRGB-encoded values): averaging the encoded
+// values darkens every blended edge, 0.8 dB of edge PSNR on the demo.
 // The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING, HAS_NORMALS, PACKED_SAMPLE_NORMALS,
-// SEARCH_RADIUS (rings of pixels, 1: the 3×3 neighbourhood) and RADIANCE (run on the HDR light target before tonemapping instead of on the display).
+// SEARCH_RADIUS (rings of pixels, 1: the 3×3 neighbourhood) and RADIANCE (run on the HDR light target
+// before tonemapping instead of on the display).
 #include "common/depth_buffer.glsl"
 #include "common/normal.glsl"
 layout(binding = 0) uniform sampler2D uInput;           // the display image (or the light target)

@@ -39,7 +39,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
         defineLine("SAMPLES", t.geometry_.samples) + depthEncodingDefines(layout) +
             defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
             defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) + defineLine("RADIANCE", t.beforeTonemap_) +
-            defineLine("SEARCH_RADIUS", context.config.reconstructSearchRadius),
+            defineLine("SEARCH_RADIUS", t.searchRadius_),
         {"uSamplePositions", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
