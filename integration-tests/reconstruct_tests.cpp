@@ -15,30 +15,50 @@ float toLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.05
 float toDisplay(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
 // The host's single-sample results by hand (display, depth, normal per pixel), then the plugin's pass.
+// The display is the host's RGBA8 texture, or one of `displayFormat` in its place.
 struct ReconstructFixture {
   SyntheticFrame frame{kWidth, kHeight};
-  std::unique_ptr<patch::RetroaaHooks> hooks;
+  GLuint display = 0, displayFramebuffer = 0;  // only for a display of another format
+  std::unique_ptr<retroaa::Plugin> plugin;
 
-  ReconstructFixture(const std::vector<uint8_t>& display, const std::vector<float>& pixelDepth, float tolerance = 2.0f,
-                     int searchRadius = retroaa::Config{}.reconstructSearchRadius) {
-    retroaa::Config config;
-    config.method = retroaa::Method::Reconstruct;
-    config.samples = 4;
-    config.reconstructTolerance = tolerance;
-    config.reconstructSearchRadius = searchRadius;
-    hooks = frame.attach(config);
-    if (!hooks) throw std::runtime_error("the patch did not attach");
+  ReconstructFixture(const std::vector<uint8_t>& pixels, const std::vector<float>& pixelDepth, float tolerance = 2.0f,
+                     int searchRadius = retroaa::Config{}.reconstructSearchRadius, GLenum displayFormat = GL_RGBA8) {
     const host::HostTargets& t = frame.renderer->targets();
-    glTextureSubImage2D(t.displayTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, display.data());
+    retroaa::Description description;
+    description.config.method = retroaa::Method::Reconstruct;
+    description.config.samples = 4;
+    description.config.reconstructTolerance = tolerance;
+    description.config.reconstructSearchRadius = searchRadius;
+    description.layout = patch::describeHostGBuffer(t);
+    display = t.displayTexture;
+    if (displayFormat != GL_RGBA8) {
+      glCreateTextures(GL_TEXTURE_2D, 1, &display);
+      glTextureStorage2D(display, 1, displayFormat, kWidth, kHeight);
+      glCreateFramebuffers(1, &displayFramebuffer);
+      glNamedFramebufferTexture(displayFramebuffer, GL_COLOR_ATTACHMENT0, display, 0);
+      description.layout.displayTexture = display;
+      description.layout.displayFramebuffer = displayFramebuffer;
+    }
+    auto created = retroaa::Plugin::create(description);
+    if (!created) throw std::runtime_error(created.error().message);
+    plugin = std::move(created.value());
+    glTextureSubImage2D(display, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
     std::vector<uint32_t> depth(kWidth * kHeight);
     for (size_t i = 0; i < depth.size(); ++i) depth[i] = uint32_t(double(pixelDepth[i]) * 0xFFFFFF) << 8;
     glTextureSubImage2D(t.depthStencil, 0, 0, 0, kWidth, kHeight, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, depth.data());
     const std::vector<glm::vec4> normals(kWidth * kHeight, glm::vec4(0, 0, 1, 0.5f));
     glTextureSubImage2D(t.normal, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, normals.data());
   }
+  ~ReconstructFixture() {
+    plugin.reset();
+    if (displayFramebuffer) {
+      glDeleteFramebuffers(1, &displayFramebuffer);
+      glDeleteTextures(1, &display);
+    }
+  }
   // `body` sets gl_FragDepth and outNormal of each sub-sample from x and position.
   std::vector<uint8_t> run(const std::string& body) {
-    return runPrepassFilter(hooks->plugin(), frame.renderer->targets().displayTexture, kWidth, kHeight, body);
+    return runPrepassFilter(*plugin, display, kWidth, kHeight, body);
   }
 };
 
@@ -77,7 +97,9 @@ TEST(Reconstruct, ADepthStepBelowTheToleranceIsNoEdge) {
 TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
   // Left of x = 7.6 a surface (display 200), right of it background (display 30). Column 7's centre is on
   // the surface; its sub-samples right of 0.6 see the background: half of them at 4× (llvmpipe's and
-  // the standard pattern, x = 0.375, 0.875, 0.125, 0.625).
+  // the standard pattern, x = 0.375, 0.875, 0.125, 0.625). The mix is the same whether the texture unit
+  // decodes the display (RGBA8, read through its sRGB view; an sRGB display's RGBA8 stand-in) or the
+  // shader does (a half-float display has no sRGB twin).
   std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
   std::vector<float> depth(kWidth * kHeight);
   for (int y = 0; y < kHeight; ++y)
@@ -85,14 +107,18 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
       for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x < 8 ? 200 : 30;
       depth[y * kWidth + x] = x < 8 ? 0.5f : 1.0f;
     }
-  ReconstructFixture fixture(display, depth);
-  const std::vector<uint8_t> out =
-      fixture.run("gl_FragDepth = float(x) + position.x >= 7.6 ? 1.0 : 0.5; outNormal = vec4(0.0, 0.0, 1.0, 0.5);");
   const float mixed = toDisplay(0.5f * toLinear(200.0f / 255.0f) + 0.5f * toLinear(30.0f / 255.0f)) * 255.0f;
-  for (int y = 0; y < kHeight; ++y) {
-    EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0) << "row " << y << ": half surface, half background";
-    EXPECT_EQ(out[(y * kWidth + 6) * 4], 200) << "row " << y;
-    EXPECT_EQ(out[(y * kWidth + 8) * 4], 30) << "row " << y;
+  for (GLenum format : {GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F}) {
+    ReconstructFixture fixture(display, depth, 2.0f, retroaa::Config{}.reconstructSearchRadius, format);
+    const std::vector<uint8_t> out =
+        fixture.run("gl_FragDepth = float(x) + position.x >= 7.6 ? 1.0 : 0.5; outNormal = vec4(0.0, 0.0, 1.0, 0.5);");
+    for (int y = 0; y < kHeight; ++y) {
+      EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0)
+          << std::hex << format << std::dec << " row " << y << ": half surface, half background";
+      EXPECT_EQ(out[(y * kWidth + 6) * 4], 200) << "row " << y;
+      EXPECT_EQ(out[(y * kWidth + 8) * 4], 30) << "row " << y;
+    }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   }
 }
 

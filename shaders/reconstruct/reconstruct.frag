@@ -12,8 +12,8 @@
 // Colours are mixed in linear light (the display holds sRGB-encoded values): averaging the encoded
 // values darkens every blended edge, 0.8 dB of edge PSNR on the demo.
 // The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING, HAS_NORMALS, PACKED_SAMPLE_NORMALS,
-// SEARCH_RADIUS (rings of pixels, 1: the 3×3 neighbourhood) and RADIANCE (run on the HDR light target
-// before tonemapping instead of on the display).
+// SEARCH_RADIUS (rings of pixels, 1: the 3×3 neighbourhood), RADIANCE (run on the HDR light target
+// before tonemapping instead of on the display) and LINEAR_INPUT (the display arrives decoded to linear).
 #include "common/depth_buffer.glsl"
 #include "common/normal.glsl"
 layout(binding = 0) uniform sampler2D uInput;           // the display image (or the light target)
@@ -29,11 +29,14 @@ out vec4 outColour;
 const float kSpatialSigma = 0.75;  // pixels: neighbours nearer the sub-sample weigh more
 const int kNearRings = 2;  // how far a sub-sample within its neighbours' depths searches
 
-#if RADIANCE  // the HDR light target: already linear
+#if RADIANCE || LINEAR_INPUT  // the HDR light target, or the display read through its sRGB view
 vec3 toLinear(vec3 c) { return c; }
-vec3 toDisplay(vec3 c) { return c; }
 #else
 vec3 toLinear(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c)); }
+#endif
+#if RADIANCE
+vec3 toDisplay(vec3 c) { return c; }
+#else
 vec3 toDisplay(vec3 c) { return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c)); }
 #endif
 
@@ -132,10 +135,7 @@ void main() {
     weightSum[s] = onOwnSurface ? 1.0 : 0.0;
     if (!onOwnSurface) open |= 1 << s;
   }
-  if (open == 0) {
-    outColour = centre;
-    return;
-  }
+  if (open == 0) discard;  // the pass runs in place: the target already holds this pixel
   // Search outwards ring by ring; each sub-sample stops at the first ring holding its surface. Every
   // ring pixel's geometry is fetched once for all sub-samples still open. Only a sub-sample in front of
   // (or behind) everything in its 3×3 neighbourhood searches past the second ring: a wire or a gap

@@ -193,12 +193,21 @@ class PostTarget {
   void bindAsOutput(const PluginContext& context) const;           // framebuffer, viewport, plain state
   void bindInput(const GBufferLayout& layout, GLuint unit) const;  // input(), bilinear
   void copyBack(const GBufferLayout& layout) const;                // the output into input()
+  // A pass that rewrites only some pixels and discards the rest renders into input() itself and reads
+  // the frame from a copy: one copy, as with copyBack, and nothing written where nothing changes.
+  void beginInPlace(const PluginContext& context) const;  // input() copied aside and bound as the output
+  GLuint copyOfInput() const { return output_.get(); }
+  // The copy read as linear light: its sRGB view, which the texture unit decodes (cheaper than pow in a
+  // shader); 0 where the display's format has no sRGB twin.
+  GLuint linearCopyOfInput() const { return linearView_.get(); }
   uint64_t bytes() const { return bytes_; }
 
  private:
   GlTexture output_;
   GlTexture encodedCopy_;  // RGBA8 stand-in for an sRGB display; empty otherwise
   GlFramebuffer framebuffer_;
+  GlFramebuffer inPlaceFramebuffer_;  // input() as the colour attachment
+  GlTexture linearView_;              // output_ as GL_SRGB8_ALPHA8; empty unless output_ is GL_RGBA8
   GlSampler linear_;
   uint64_t bytes_ = 0;
 };

@@ -23,6 +23,17 @@ Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
   target->framebuffer_ = makeFramebuffer(context, "post.output");
   glNamedFramebufferTexture(target->framebuffer_.get(), GL_COLOR_ATTACHMENT0, target->output_.get(), 0);
   if (Status status = checkFramebuffer(target->framebuffer_.get(), "post.output"); !status) return status.error();
+  target->inPlaceFramebuffer_ = makeFramebuffer(context, "post.in_place");
+  glNamedFramebufferTexture(target->inPlaceFramebuffer_.get(), GL_COLOR_ATTACHMENT0, target->input(layout), 0);
+  if (Status status = checkFramebuffer(target->inPlaceFramebuffer_.get(), "post.in_place"); !status)
+    return status.error();
+  if (workFormat == GL_RGBA8) {
+    GLuint view = 0;
+    glGenTextures(1, &view);  // a view needs a name that was never bound
+    glTextureView(view, GL_TEXTURE_2D, target->output_.get(), GL_SRGB8_ALPHA8, 0, 1, 0, 1);
+    glObjectLabel(GL_TEXTURE, view, -1, "retroaa.post.output_as_linear");
+    target->linearView_ = GlTexture(context.objects, view);
+  }
   GLuint sampler = 0;
   glCreateSamplers(1, &sampler);
   glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -55,5 +66,10 @@ void PostTarget::bindInput(const GBufferLayout& layout, GLuint unit) const {
 }
 
 void PostTarget::copyBack(const GBufferLayout& layout) const { copyImage(output_.get(), input(layout), layout); }
+
+void PostTarget::beginInPlace(const PluginContext& context) const {
+  copyImage(input(context.layout), output_.get(), context.layout);
+  context.beginFullscreenPass(inPlaceFramebuffer_.get());
+}
 
 }  // namespace retroaa

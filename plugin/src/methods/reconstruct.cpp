@@ -25,6 +25,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
       t.pixelNormal_ = layout.attachments[size_t(normal)].texture;
     t.beforeTonemap_ = context.config.reconstructBeforeTonemap;
     t.searchRadius_ = context.config.reconstructSearchRadius;
+    t.linearInput_ = !t.beforeTonemap_ && shared.post->linearCopyOfInput() != 0;
     if (t.beforeTonemap_ && !layout.lightTexture)
       return Error{ErrorCode::InvalidLayout,
                    "reconstruct_before_tonemap=on filters the light target: the layout names no lightTexture"};
@@ -39,7 +40,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
         defineLine("SAMPLES", t.geometry_.samples) + depthEncodingDefines(layout) +
             defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
             defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) + defineLine("RADIANCE", t.beforeTonemap_) +
-            defineLine("SEARCH_RADIUS", t.searchRadius_),
+            defineLine("LINEAR_INPUT", t.linearInput_) + defineLine("SEARCH_RADIUS", t.searchRadius_),
         {"uSamplePositions", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
@@ -61,11 +62,9 @@ class ReconstructTechnique : public SampleGeometryTechnique {
   Status post(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     if (beforeTonemap_) return Status::ok();
     ScopedPass timed(context, "reconstruct");
-    const GBufferLayout& layout = context.layout;
-    shared.post->bindAsOutput(context);
-    shared.post->bindInput(layout, 0);
+    shared.post->beginInPlace(context);
+    glBindTextureUnit(0, linearInput_ ? shared.post->linearCopyOfInput() : shared.post->copyOfInput());
     draw(context, frame);
-    shared.post->copyBack(layout);
     return Status::ok();
   }
 
@@ -94,7 +93,8 @@ class ReconstructTechnique : public SampleGeometryTechnique {
   GlTexture radiance_;      // before tonemapping: the light target as lit
   GLuint pixelNormal_ = 0;  // the host's single-sample normal attachment (0: the layout has none)
   bool beforeTonemap_ = false;
-  int searchRadius_ = 1;  // compiled into the program
+  bool linearInput_ = false;  // the display is read through its sRGB view, decoded by the texture unit
+  int searchRadius_ = 1;      // compiled into the program
 };
 
 }  // namespace
