@@ -56,6 +56,9 @@ struct ReconstructFixture {
       glDeleteTextures(1, &display);
     }
   }
+  void setPixelNormals(const std::vector<glm::vec4>& normals) {  // the host's, (x, y, z, gloss) per pixel
+    glTextureSubImage2D(frame.renderer->targets().normal, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, normals.data());
+  }
   // `body` sets gl_FragDepth and outNormal of each sub-sample from x and position.
   std::vector<uint8_t> run(const std::string& body) {
     return runPrepassFilter(*plugin, display, kWidth, kHeight, body);
@@ -119,6 +122,33 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
       EXPECT_EQ(out[(y * kWidth + 8) * 4], 30) << "row " << y;
     }
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
+}
+
+TEST(Reconstruct, ASubSampleOnTheOtherFaceOfAnEdgeSkipsTheFaceItIsPerpendicularTo) {
+  // A box edge at one depth: columns up to 8 are face A (normal facing the camera, display 200), columns
+  // from 9 face B (normal 87° from A's, display 30), and column 7's sub-samples right of 0.6 lie on B.
+  // Ring 1 around column 7 holds only A; B's normal agrees with A's to cos⁸ 87° ≈ 4e-11, a faint
+  // match, so those sub-samples look one ring farther and take B's colour from column 9: column 7
+  // becomes the half-and-half mix. (Taking the faint match made column 7 all A, 200.)
+  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
+  std::vector<glm::vec4> normals(kWidth * kHeight);
+  const glm::vec3 faceB = glm::normalize(glm::vec3(1.0f, 0.0f, 0.05f));
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x <= 8 ? 200 : 30;
+      normals[y * kWidth + x] = x <= 8 ? glm::vec4(0, 0, 1, 0.5f) : glm::vec4(faceB, 0.5f);
+    }
+  ReconstructFixture fixture(display, std::vector<float>(kWidth * kHeight, 0.5f));
+  fixture.setPixelNormals(normals);
+  const std::vector<uint8_t> out = fixture.run(
+      "bool onB = x >= 9 || (x == 7 && position.x > 0.6); gl_FragDepth = 0.5;"
+      " outNormal = onB ? vec4(normalize(vec3(1.0, 0.0, 0.05)), 0.5) : vec4(0.0, 0.0, 1.0, 0.5);");
+  const float mixed = toDisplay(0.5f * toLinear(200.0f / 255.0f) + 0.5f * toLinear(30.0f / 255.0f)) * 255.0f;
+  for (int y = 0; y < kHeight; ++y) {
+    EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0) << "row " << y << ": half A, half B";
+    EXPECT_EQ(out[(y * kWidth + 8) * 4], 200) << "row " << y;
+    EXPECT_EQ(out[(y * kWidth + 9) * 4], 30) << "row " << y;
   }
 }
 

@@ -28,6 +28,7 @@ out vec4 outColour;
 
 const float kSpatialSigma = 0.75;  // pixels: neighbours nearer the sub-sample weigh more
 const int kNearRings = 2;  // how far a sub-sample within its neighbours' depths searches
+const float kClearMatch = 0.01;  // similarity below this (normals ~56° apart) only if nothing better
 
 #if RADIANCE || LINEAR_INPUT  // the HDR light target, or the display read through its sRGB view
 vec3 toLinear(vec3 c) { return c; }
@@ -142,7 +143,8 @@ void main() {
   // thinner than a pixel, whose surface a pixel centre hits a few pixels along it. One that lies between
   // its neighbours' depths (a grazing floor, a crease, a bump) rarely has its surface farther out:
   // letting it search on too made the demo's pass 1.4× as costly for 0.03–0.26 dB (llvmpipe).
-  int nearOnly = 0;  // bit s: sub-sample s lies within its neighbours' depths
+  int nearOnly = 0;    // bit s: sub-sample s lies within its neighbours' depths
+  int clearMatch = 0;  // bit s: sub-sample s holds matches of at least kClearMatch
   Range around = widen(Range(1.0, 0.0, false), own);  // nearest > farthest: no geometry yet
   for (int ring = 1; ring <= SEARCH_RADIUS && open != 0; ++ring) {
     float nearest = float(ring) - 0.5;  // no sub-sample lies nearer a ring pixel's centre than this
@@ -158,6 +160,18 @@ void main() {
           if ((open & (1 << s)) == 0) continue;
           float w = similarity(samples[s], candidate);
           if (w <= 0.0) continue;
+          // A faint match (normals nearly perpendicular: the other face of a box edge) stands in only
+          // if ring 1 holds nothing clearer and, for a sub-sample between its neighbours' depths,
+          // ring 2 neither. A wire's sub-sample takes any match in any ring: around a thin cylinder
+          // the normals turn through 180°.
+          bool clear = w >= kClearMatch || (ring > 1 && ((nearOnly >> s) & 1) == 0);
+          bool holdsClear = ((clearMatch >> s) & 1) != 0;
+          if (!clear && (holdsClear || ring > 1)) continue;
+          if (clear && !holdsClear) {  // what a faint match left gives way
+            colour[s] = vec3(0.0);
+            weightSum[s] = 0.0;
+            clearMatch |= 1 << s;
+          }
           if (candidateLinear.r < 0.0) candidateLinear = toLinear(texelFetch(uInput, q, 0).rgb);
           vec2 offset = vec2(pixel) + uSamplePositions[s] - (vec2(q) + 0.5);
           // The Gaussian relative to the ring's nearest distance: within one ring only ratios matter,
@@ -165,13 +179,14 @@ void main() {
           w *= exp(-(dot(offset, offset) - nearest * nearest) / (2.0 * kSpatialSigma * kSpatialSigma));
           colour[s] += w * candidateLinear;
           weightSum[s] += w;
-          found |= 1 << s;
+          if (clear) found |= 1 << s;
         }
       }
-    open &= ~found;
     if (ring == 1)
       for (int s = 0; s < SAMPLES; ++s)
         if (!outside(samples[s], around)) nearOnly |= 1 << s;
+        else if (weightSum[s] > 0.0) found |= 1 << s;  // a wire takes even a faint match
+    open &= ~found;
     if (ring == kNearRings) open &= ~nearOnly;
   }
   vec3 sum = vec3(0.0);
