@@ -13,6 +13,10 @@ constexpr int kWidth = 16, kHeight = 8;
 
 float toLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 float toDisplay(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
+// The display byte of two display bytes mixed half and half in linear light.
+float linearHalfAndHalf(float a, float b) {
+  return toDisplay(0.5f * toLinear(a / 255.0f) + 0.5f * toLinear(b / 255.0f)) * 255.0f;
+}
 
 // The host's single-sample results by hand (display, depth, normal per pixel), then the plugin's pass.
 // The display is the host's RGBA8 texture, or one of `displayFormat` in its place.
@@ -110,7 +114,7 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
       for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x < 8 ? 200 : 30;
       depth[y * kWidth + x] = x < 8 ? 0.5f : 1.0f;
     }
-  const float mixed = toDisplay(0.5f * toLinear(200.0f / 255.0f) + 0.5f * toLinear(30.0f / 255.0f)) * 255.0f;
+  const float mixed = linearHalfAndHalf(200.0f, 30.0f);
   for (GLenum format : {GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F}) {
     ReconstructFixture fixture(display, depth, 2.0f, retroaa::Config{}.reconstructSearchRadius, format);
     const std::vector<uint8_t> out =
@@ -144,7 +148,7 @@ TEST(Reconstruct, ASubSampleOnTheOtherFaceOfAnEdgeSkipsTheFaceItIsPerpendicularT
   const std::vector<uint8_t> out = fixture.run(
       "bool onB = x >= 9 || (x == 7 && position.x > 0.6); gl_FragDepth = 0.5;"
       " outNormal = onB ? vec4(normalize(vec3(1.0, 0.0, 0.05)), 0.5) : vec4(0.0, 0.0, 1.0, 0.5);");
-  const float mixed = toDisplay(0.5f * toLinear(200.0f / 255.0f) + 0.5f * toLinear(30.0f / 255.0f)) * 255.0f;
+  const float mixed = linearHalfAndHalf(200.0f, 30.0f);
   for (int y = 0; y < kHeight; ++y) {
     EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0) << "row " << y << ": half A, half B";
     EXPECT_EQ(out[(y * kWidth + 8) * 4], 200) << "row " << y;
