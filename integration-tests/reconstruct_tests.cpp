@@ -183,6 +183,31 @@ TEST(Reconstruct, AWireNoNearbyPixelCentreHitsIsRebuiltFromOneAlongIt) {
   }
 }
 
+TEST(Reconstruct, AWireRecedingFromTheCameraIsRebuiltFromAPixelCentreRingsAlongIt) {
+  // The wire of the test above, now receding to the left: each column 7 % deeper than the next (depth
+  // buffer 0.01 apart, log depth, near 0.1, far 100). One pixel's footprint is 5 % of the depth here
+  // (hfov 0.8 over 16 columns), so c = 2 holds the adjacent column (7 %) but not the one two away
+  // (15 %): beyond ring 1 the tolerance is wider, and every wire sub-sample within the radius takes
+  // column 12's colour, as on a wire facing the camera.
+  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
+  std::vector<float> depth(kWidth * kHeight, 1.0f);
+  for (int x = 0; x < kWidth * kHeight; ++x)
+    for (int c = 0; c < 3; ++c) display[size_t(x) * 4 + c] = x == 3 * kWidth + 12 ? 200 : 30;
+  depth[3 * kWidth + 12] = 0.5f;
+  const char* body =
+      "bool wire = y == 3 && (abs(position.y - 0.625) < 0.05 || x == 12);"
+      " gl_FragDepth = wire ? 0.5 + 0.01 * float(12 - x) : 1.0; outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
+  const float quarter = toDisplay(0.25f * toLinear(200.0f / 255.0f) + 0.75f * toLinear(30.0f / 255.0f)) * 255.0f;
+  const int radius = 4;
+  ReconstructFixture fixture(display, depth, 2.0f, radius);
+  const std::vector<uint8_t> out = fixture.run(body);
+  for (int x = 0; x < kWidth; ++x) {
+    const int distance = std::abs(x - 12);
+    const float expected = distance == 0 ? 200.0f : distance <= radius ? quarter : 30.0f;
+    EXPECT_NEAR(out[size_t(3 * kWidth + x) * 4], expected, 1.0) << "column " << x;
+  }
+}
+
 TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
   PatchedHost host("default", 64, 48);
   const app::DisplayImage off = host.render("off");

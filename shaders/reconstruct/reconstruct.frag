@@ -29,6 +29,13 @@ out vec4 outColour;
 const float kSpatialSigma = 0.75;  // pixels: neighbours nearer the sub-sample weigh more
 const int kNearRings = 2;  // how far a sub-sample within its neighbours' depths searches
 const float kClearMatch = 0.01;  // similarity below this (normals ~56° apart) only if nothing better
+// The depth tolerance beyond ring 1, as a multiple of Eq. 1's. A pixel centre two or more pixels from
+// the sub-sample lies on a tilted face (or along a wire receding from the camera) at a depth that grows
+// with tan(tilt) × distance: Eq. 1's tolerance (c = 2) holds faces up to 63° at one pixel, this up to
+// 86° at two. What searches there is already narrowed by the normals and by lying in or out of its
+// neighbours' depths; with no depth test at all a far surface of the same normal stands in (demo
+// −0.2 dB, heavy lighting −0.3 dB against this).
+const float kFarRingTolerance = 16.0;
 
 #if RADIANCE || LINEAR_INPUT  // the HDR light target, or the display read through its sRGB view
 vec3 toLinear(vec3 c) { return c; }
@@ -80,11 +87,12 @@ Geometry sampleGeometry(ivec2 pixel, int s) {
   return g;
 }
 
-// How well a shaded pixel stands for a sub-sample: 0 across a depth step (or between geometry and
-// background), cos⁸ of the angle between their normals otherwise (0.5 at 24°).
-float similarity(Geometry a, Geometry b) {
+// How well a shaded pixel stands for a sub-sample: 0 across a depth step of more than `tolerance`
+// pixel footprints (or between geometry and background), cos⁸ of the angle between their normals
+// otherwise (0.5 at 24°).
+float similarity(Geometry a, Geometry b, float tolerance) {
   if (a.background || b.background) return a.background && b.background ? 1.0 : 0.0;
-  if (!(abs(a.depth - b.depth) <= min(a.depth, b.depth) * uFootprintTan * uTolerance)) return 0.0;
+  if (!(abs(a.depth - b.depth) <= min(a.depth, b.depth) * uFootprintTan * tolerance)) return 0.0;
   float c = max(dot(a.normal, b.normal), 0.0);
   c *= c;
   c *= c;
@@ -131,7 +139,7 @@ void main() {
   int open = 0;  // bit s: sub-sample s is still looking for its surface
   for (int s = 0; s < SAMPLES; ++s) {
     samples[s] = sampleGeometry(pixel, s);
-    bool onOwnSurface = similarity(samples[s], own) >= 0.5;
+    bool onOwnSurface = similarity(samples[s], own, uTolerance) >= 0.5;
     colour[s] = onOwnSurface ? centreLinear : vec3(0.0);
     weightSum[s] = onOwnSurface ? 1.0 : 0.0;
     if (!onOwnSurface) open |= 1 << s;
@@ -148,6 +156,7 @@ void main() {
   Range around = widen(Range(1.0, 0.0, false), own);  // nearest > farthest: no geometry yet
   for (int ring = 1; ring <= SEARCH_RADIUS && open != 0; ++ring) {
     float nearest = float(ring) - 0.5;  // no sub-sample lies nearer a ring pixel's centre than this
+    float tolerance = ring == 1 ? uTolerance : uTolerance * kFarRingTolerance;
     int found = 0;
     for (int dy = -ring; dy <= ring; ++dy)
       for (int dx = -ring; dx <= ring; dx += (abs(dy) == ring ? 1 : 2 * ring)) {
@@ -158,7 +167,7 @@ void main() {
         vec3 candidateLinear = vec3(-1.0);
         for (int s = 0; s < SAMPLES; ++s) {
           if ((open & (1 << s)) == 0) continue;
-          float w = similarity(samples[s], candidate);
+          float w = similarity(samples[s], candidate, tolerance);
           if (w <= 0.0) continue;
           // A faint match (normals nearly perpendicular: the other face of a box edge) stands in only
           // if ring 1 holds nothing clearer and, for a sub-sample between its neighbours' depths,
