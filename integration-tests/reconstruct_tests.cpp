@@ -208,6 +208,25 @@ TEST(Reconstruct, AWireRecedingFromTheCameraIsRebuiltFromAPixelCentreRingsAlongI
   }
 }
 
+TEST(Reconstruct, AWireTakesNoColourFromASurfaceFarBehindItHoweverFarItSearches) {
+  // The wire of the tests above at depth buffer 0.5, but the one pixel centre in its row that is not
+  // background, column 12, shows another surface of the same normal 7.9 times as deep (depth buffer
+  // 0.8). The wider tolerance beyond ring 1 (16 × Eq. 1's, 2.6 times as deep here) still tells them
+  // apart: no wire sub-sample takes its colour, and every pixel keeps its own.
+  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
+  std::vector<float> depth(kWidth * kHeight, 1.0f);
+  for (int x = 0; x < kWidth * kHeight; ++x)
+    for (int c = 0; c < 3; ++c) display[size_t(x) * 4 + c] = x == 3 * kWidth + 12 ? 200 : 30;
+  depth[3 * kWidth + 12] = 0.8f;
+  const char* body =
+      "bool far = y == 3 && x == 12, wire = y == 3 && abs(position.y - 0.625) < 0.05;"
+      " gl_FragDepth = far ? 0.8 : wire ? 0.5 : 1.0; outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
+  ReconstructFixture fixture(display, depth, 2.0f, 4);
+  const std::vector<uint8_t> out = fixture.run(body);
+  for (int x = 0; x < kWidth; ++x)
+    EXPECT_EQ(out[size_t(3 * kWidth + x) * 4], x == 12 ? 200 : 30) << "column " << x;
+}
+
 TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
   PatchedHost host("default", 64, 48);
   const app::DisplayImage off = host.render("off");
