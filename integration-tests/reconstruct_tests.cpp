@@ -223,8 +223,7 @@ TEST(Reconstruct, AWireTakesNoColourFromASurfaceFarBehindItHoweverFarItSearches)
       " gl_FragDepth = far ? 0.8 : wire ? 0.5 : 1.0; outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
   ReconstructFixture fixture(display, depth, 2.0f, 4);
   const std::vector<uint8_t> out = fixture.run(body);
-  for (int x = 0; x < kWidth; ++x)
-    EXPECT_EQ(out[size_t(3 * kWidth + x) * 4], x == 12 ? 200 : 30) << "column " << x;
+  for (int x = 0; x < kWidth; ++x) EXPECT_EQ(out[size_t(3 * kWidth + x) * 4], x == 12 ? 200 : 30) << "column " << x;
 }
 
 TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
