@@ -56,18 +56,25 @@ struct Geometry {
 
 vec3 unitOrFacing(vec3 n) { return dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0); }
 
-Geometry pixelGeometry(ivec2 pixel) {
+// A shaded pixel's depth alone, and then its normal: the search reads the normal only where a
+// sub-sample still searching matches the depth.
+Geometry pixelDepth(ivec2 pixel) {
   float z = texelFetch(uPixelDepth, pixel, 0).r;
   Geometry g;
   g.background = depthBufferIsFar(z);
   g.depth = depthBufferToMetres(z);
+  g.normal = vec3(0.0, 0.0, 1.0);
+  return g;
+}
+
+Geometry withNormal(Geometry g, ivec2 pixel) {
 #if HAS_NORMALS
   g.normal = unitOrFacing(decodeNormal(texelFetch(uPixelNormal, pixel, 0)));
-#else
-  g.normal = vec3(0.0, 0.0, 1.0);
 #endif
   return g;
 }
+
+Geometry pixelGeometry(ivec2 pixel) { return withNormal(pixelDepth(pixel), pixel); }
 
 Geometry sampleGeometry(ivec2 pixel, int s) {
   float z = texelFetch(uSampleDepth, pixel, s).r;
@@ -87,12 +94,18 @@ Geometry sampleGeometry(ivec2 pixel, int s) {
   return g;
 }
 
-// How well a shaded pixel stands for a sub-sample: 0 across a depth step of more than `tolerance`
-// pixel footprints (or between geometry and background), cos⁸ of the angle between their normals
-// otherwise (0.5 at 24°).
+// Whether a and b may be one surface by depth alone: both background, or both geometry within
+// `tolerance` pixel footprints.
+bool sameDepth(Geometry a, Geometry b, float tolerance) {
+  if (a.background || b.background) return a.background && b.background;
+  return abs(a.depth - b.depth) <= min(a.depth, b.depth) * uFootprintTan * tolerance;
+}
+
+// How well a shaded pixel stands for a sub-sample: 0 unless sameDepth, cos⁸ of the angle between
+// their normals otherwise (0.5 at 24°; 1 between background and background).
 float similarity(Geometry a, Geometry b, float tolerance) {
-  if (a.background || b.background) return a.background && b.background ? 1.0 : 0.0;
-  if (!(abs(a.depth - b.depth) <= min(a.depth, b.depth) * uFootprintTan * tolerance)) return 0.0;
+  if (!sameDepth(a, b, tolerance)) return 0.0;
+  if (a.background) return 1.0;
   float c = max(dot(a.normal, b.normal), 0.0);
   c *= c;
   c *= c;
@@ -130,8 +143,6 @@ bool outside(Geometry g, Range r) {
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   ivec2 last = textureSize(uInput, 0) - 1;
-  vec4 centre = texelFetch(uInput, pixel, 0);
-  vec3 centreLinear = toLinear(centre.rgb);
   Geometry own = pixelGeometry(pixel);
   Geometry samples[SAMPLES];
   vec3 colour[SAMPLES];
@@ -139,14 +150,20 @@ void main() {
   int open = 0;  // bit s: sub-sample s is still looking for its surface
   for (int s = 0; s < SAMPLES; ++s) {
     samples[s] = sampleGeometry(pixel, s);
-    bool onOwnSurface = similarity(samples[s], own, uTolerance) >= 0.5;
-    colour[s] = onOwnSurface ? centreLinear : vec3(0.0);
-    weightSum[s] = onOwnSurface ? 1.0 : 0.0;
-    if (!onOwnSurface) open |= 1 << s;
+    if (similarity(samples[s], own, uTolerance) < 0.5) open |= 1 << s;
   }
   if (open == 0) discard;  // the pass runs in place: the target already holds this pixel
+  // Only now the pixel's own colour: most pixels never need it.
+  vec4 centre = texelFetch(uInput, pixel, 0);
+  vec3 centreLinear = toLinear(centre.rgb);
+  for (int s = 0; s < SAMPLES; ++s) {
+    bool onOwnSurface = ((open >> s) & 1) == 0;
+    colour[s] = onOwnSurface ? centreLinear : vec3(0.0);
+    weightSum[s] = onOwnSurface ? 1.0 : 0.0;
+  }
   // Search outwards ring by ring; each sub-sample stops at the first ring holding its surface. Every
-  // ring pixel's geometry is fetched once for all sub-samples still open. Only a sub-sample in front of
+  // ring pixel's depth is fetched once for all sub-samples still open, its normal only where one of
+  // them matches that depth (around a wire most ring pixels are background). Only a sub-sample in front of
   // (or behind) everything in its 3×3 neighbourhood searches past the second ring: a wire or a gap
   // thinner than a pixel, whose surface a pixel centre hits a few pixels along it. One that lies between
   // its neighbours' depths (a grazing floor, a crease, a bump) rarely has its surface farther out:
@@ -162,8 +179,13 @@ void main() {
       for (int dx = -ring; dx <= ring; dx += (abs(dy) == ring ? 1 : 2 * ring)) {
         ivec2 q = pixel + ivec2(dx, dy);
         if (any(lessThan(q, ivec2(0))) || any(greaterThan(q, last))) continue;
-        Geometry candidate = pixelGeometry(q);
+        Geometry candidate = pixelDepth(q);
         if (ring == 1) around = widen(around, candidate);
+        bool depthMatch = false;
+        for (int s = 0; s < SAMPLES; ++s)
+          depthMatch = depthMatch || ((open >> s) & 1) != 0 && sameDepth(samples[s], candidate, tolerance);
+        if (!depthMatch) continue;
+        candidate = withNormal(candidate, q);
         vec3 candidateLinear = vec3(-1.0);
         for (int s = 0; s < SAMPLES; ++s) {
           if ((open & (1 << s)) == 0) continue;
