@@ -13,9 +13,9 @@ constexpr int kWidth = 16, kHeight = 8;
 
 float toLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 float toDisplay(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
-// The display byte of two display bytes mixed half and half in linear light.
-float linearHalfAndHalf(float a, float b) {
-  return toDisplay(0.5f * toLinear(a / 255.0f) + 0.5f * toLinear(b / 255.0f)) * 255.0f;
+// The display byte of display bytes a and b mixed in linear light, `shareOfA` of a.
+float linearMix(float a, float b, float shareOfA) {
+  return toDisplay(shareOfA * toLinear(a / 255.0f) + (1.0f - shareOfA) * toLinear(b / 255.0f)) * 255.0f;
 }
 
 // The host's single-sample results by hand (display, depth, normal per pixel), then the plugin's pass.
@@ -75,6 +75,33 @@ std::vector<uint8_t> noise() {
   return pixels;
 }
 
+// The wire tests' frame: background (display 30, depth 1) everywhere but one pixel of the wire's row,
+// which the host shaded (display 200) at `shadedDepth`.
+constexpr int kWireRow = 3, kWireColumn = 12;
+struct WireFrame {
+  std::vector<uint8_t> display = std::vector<uint8_t>(kWidth * kHeight * 4, 255);
+  std::vector<float> depth = std::vector<float>(kWidth * kHeight, 1.0f);
+};
+WireFrame wireFrame(float shadedDepth) {
+  WireFrame frame;
+  const int shaded = kWireRow * kWidth + kWireColumn;
+  for (int i = 0; i < kWidth * kHeight; ++i)
+    for (int c = 0; c < 3; ++c) frame.display[size_t(i) * 4 + c] = i == shaded ? 200 : 30;
+  frame.depth[shaded] = shadedDepth;
+  return frame;
+}
+
+// The wire's row rebuilt from its shaded pixel: that pixel as shaded, every pixel within `radius`
+// columns of it a quarter of its colour (one sub-sample in four, in linear light), the rest background.
+void expectWireRebuiltWithin(const std::vector<uint8_t>& out, int radius) {
+  const float quarter = linearMix(200.0f, 30.0f, 0.25f);
+  for (int x = 0; x < kWidth; ++x) {
+    const int distance = std::abs(x - kWireColumn);
+    const float expected = distance == 0 ? 200.0f : distance <= radius ? quarter : 30.0f;
+    EXPECT_NEAR(out[size_t(kWireRow * kWidth + x) * 4], expected, 1.0) << "radius " << radius << ", column " << x;
+  }
+}
+
 }  // namespace
 
 TEST(Reconstruct, AFlatInteriorIsReturnedExactly) {
@@ -114,7 +141,7 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
       for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x < 8 ? 200 : 30;
       depth[y * kWidth + x] = x < 8 ? 0.5f : 1.0f;
     }
-  const float mixed = linearHalfAndHalf(200.0f, 30.0f);
+  const float mixed = linearMix(200.0f, 30.0f, 0.5f);
   for (GLenum format : {GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F}) {
     ReconstructFixture fixture(display, depth, 2.0f, retroaa::Config{}.reconstructSearchRadius, format);
     const std::vector<uint8_t> out =
@@ -148,7 +175,7 @@ TEST(Reconstruct, ASubSampleOnTheOtherFaceOfAnEdgeSkipsTheFaceItIsPerpendicularT
   const std::vector<uint8_t> out = fixture.run(
       "bool onB = x >= 9 || (x == 7 && position.x > 0.6); gl_FragDepth = 0.5;"
       " outNormal = onB ? vec4(normalize(vec3(1.0, 0.0, 0.05)), 0.5) : vec4(0.0, 0.0, 1.0, 0.5);");
-  const float mixed = linearHalfAndHalf(200.0f, 30.0f);
+  const float mixed = linearMix(200.0f, 30.0f, 0.5f);
   for (int y = 0; y < kHeight; ++y) {
     EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0) << "row " << y << ": half A, half B";
     EXPECT_EQ(out[(y * kWidth + 8) * 4], 200) << "row " << y;
@@ -162,23 +189,14 @@ TEST(Reconstruct, AWireNoNearbyPixelCentreHitsIsRebuiltFromOneAlongIt) {
   // (display 200). With search radius 4 every wire sub-sample within 4 pixels of column 12 takes its
   // colour, one of four sub-samples: a quarter of the wire, in linear light. Radius 1 reaches only the
   // adjacent columns; beyond the radius the pixel stays as shaded.
-  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
-  std::vector<float> depth(kWidth * kHeight, 1.0f);
-  for (int x = 0; x < kWidth * kHeight; ++x)
-    for (int c = 0; c < 3; ++c) display[size_t(x) * 4 + c] = x == 3 * kWidth + 12 ? 200 : 30;
-  depth[3 * kWidth + 12] = 0.5f;
+  const WireFrame frame = wireFrame(0.5f);
   const char* body =
       "bool wire = y == 3 && (abs(position.y - 0.625) < 0.05 || x == 12);"
       " gl_FragDepth = wire ? 0.5 : 1.0; outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
-  const float quarter = toDisplay(0.25f * toLinear(200.0f / 255.0f) + 0.75f * toLinear(30.0f / 255.0f)) * 255.0f;
   for (int radius : {1, 4}) {
-    ReconstructFixture fixture(display, depth, 2.0f, radius);
+    ReconstructFixture fixture(frame.display, frame.depth, 2.0f, radius);
     const std::vector<uint8_t> out = fixture.run(body);
-    for (int x = 0; x < kWidth; ++x) {
-      const int distance = std::abs(x - 12);
-      const float expected = distance == 0 ? 200.0f : distance <= radius ? quarter : 30.0f;
-      EXPECT_NEAR(out[size_t(3 * kWidth + x) * 4], expected, 1.0) << "radius " << radius << ", column " << x;
-    }
+    expectWireRebuiltWithin(out, radius);
     EXPECT_EQ(out[size_t(2 * kWidth + 5) * 4], 30) << "rows off the wire stay as shaded";
   }
 }
@@ -189,23 +207,12 @@ TEST(Reconstruct, AWireRecedingFromTheCameraIsRebuiltFromAPixelCentreRingsAlongI
   // (hfov 0.8 over 16 columns), so c = 2 holds the adjacent column (7 %) but not the one two away
   // (15 %): beyond ring 1 the tolerance is wider, and every wire sub-sample within the radius takes
   // column 12's colour, as on a wire facing the camera.
-  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
-  std::vector<float> depth(kWidth * kHeight, 1.0f);
-  for (int x = 0; x < kWidth * kHeight; ++x)
-    for (int c = 0; c < 3; ++c) display[size_t(x) * 4 + c] = x == 3 * kWidth + 12 ? 200 : 30;
-  depth[3 * kWidth + 12] = 0.5f;
+  const WireFrame frame = wireFrame(0.5f);
   const char* body =
       "bool wire = y == 3 && (abs(position.y - 0.625) < 0.05 || x == 12);"
       " gl_FragDepth = wire ? 0.5 + 0.01 * float(12 - x) : 1.0; outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
-  const float quarter = toDisplay(0.25f * toLinear(200.0f / 255.0f) + 0.75f * toLinear(30.0f / 255.0f)) * 255.0f;
-  const int radius = 4;
-  ReconstructFixture fixture(display, depth, 2.0f, radius);
-  const std::vector<uint8_t> out = fixture.run(body);
-  for (int x = 0; x < kWidth; ++x) {
-    const int distance = std::abs(x - 12);
-    const float expected = distance == 0 ? 200.0f : distance <= radius ? quarter : 30.0f;
-    EXPECT_NEAR(out[size_t(3 * kWidth + x) * 4], expected, 1.0) << "column " << x;
-  }
+  ReconstructFixture fixture(frame.display, frame.depth, 2.0f, 4);
+  expectWireRebuiltWithin(fixture.run(body), 4);
 }
 
 TEST(Reconstruct, AWireTakesNoColourFromASurfaceFarBehindItHoweverFarItSearches) {
@@ -213,17 +220,14 @@ TEST(Reconstruct, AWireTakesNoColourFromASurfaceFarBehindItHoweverFarItSearches)
   // background, column 12, shows another surface of the same normal 7.9 times as deep (depth buffer
   // 0.8). The wider tolerance beyond ring 1 (16 × Eq. 1's, 2.6 times as deep here) still tells them
   // apart: no wire sub-sample takes its colour, and every pixel keeps its own.
-  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
-  std::vector<float> depth(kWidth * kHeight, 1.0f);
-  for (int x = 0; x < kWidth * kHeight; ++x)
-    for (int c = 0; c < 3; ++c) display[size_t(x) * 4 + c] = x == 3 * kWidth + 12 ? 200 : 30;
-  depth[3 * kWidth + 12] = 0.8f;
+  const WireFrame frame = wireFrame(0.8f);
   const char* body =
       "bool far = y == 3 && x == 12, wire = y == 3 && abs(position.y - 0.625) < 0.05;"
       " gl_FragDepth = far ? 0.8 : wire ? 0.5 : 1.0; outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
-  ReconstructFixture fixture(display, depth, 2.0f, 4);
+  ReconstructFixture fixture(frame.display, frame.depth, 2.0f, 4);
   const std::vector<uint8_t> out = fixture.run(body);
-  for (int x = 0; x < kWidth; ++x) EXPECT_EQ(out[size_t(3 * kWidth + x) * 4], x == 12 ? 200 : 30) << "column " << x;
+  for (int x = 0; x < kWidth; ++x)
+    EXPECT_EQ(out[size_t(kWireRow * kWidth + x) * 4], x == kWireColumn ? 200 : 30) << "column " << x;
 }
 
 TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
