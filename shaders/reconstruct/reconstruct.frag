@@ -101,15 +101,19 @@ bool sameDepth(Geometry a, Geometry b, float tolerance) {
   return abs(a.depth - b.depth) <= min(a.depth, b.depth) * uFootprintTan * tolerance;
 }
 
-// How well a shaded pixel stands for a sub-sample: 0 unless sameDepth, cos⁸ of the angle between
-// their normals otherwise (0.5 at 24°; 1 between background and background).
-float similarity(Geometry a, Geometry b, float tolerance) {
-  if (!sameDepth(a, b, tolerance)) return 0.0;
+// How well two geometries of the same depth agree: cos⁸ of the angle between their normals (0.5 at
+// 24°); 1 between background and background.
+float normalAgreement(Geometry a, Geometry b) {
   if (a.background) return 1.0;
   float c = max(dot(a.normal, b.normal), 0.0);
   c *= c;
   c *= c;
   return c * c;
+}
+
+// How well a shaded pixel stands for a sub-sample: 0 unless sameDepth, normalAgreement otherwise.
+float similarity(Geometry a, Geometry b, float tolerance) {
+  return sameDepth(a, b, tolerance) ? normalAgreement(a, b) : 0.0;
 }
 
 // The depths of a pixel and its eight neighbours; background lies behind every depth.
@@ -181,15 +185,15 @@ void main() {
         if (any(lessThan(q, ivec2(0))) || any(greaterThan(q, last))) continue;
         Geometry candidate = pixelDepth(q);
         if (ring == 1) around = widen(around, candidate);
-        bool depthMatch = false;
+        int depthMatch = 0;  // bit s: open sub-sample s lies at the candidate's depth
         for (int s = 0; s < SAMPLES; ++s)
-          depthMatch = depthMatch || ((open >> s) & 1) != 0 && sameDepth(samples[s], candidate, tolerance);
-        if (!depthMatch) continue;
+          if (((open >> s) & 1) != 0 && sameDepth(samples[s], candidate, tolerance)) depthMatch |= 1 << s;
+        if (depthMatch == 0) continue;
         candidate = withNormal(candidate, q);
         vec3 candidateLinear = vec3(-1.0);
         for (int s = 0; s < SAMPLES; ++s) {
-          if ((open & (1 << s)) == 0) continue;
-          float w = similarity(samples[s], candidate, tolerance);
+          if (((depthMatch >> s) & 1) == 0) continue;
+          float w = normalAgreement(samples[s], candidate);
           if (w <= 0.0) continue;
           // A faint match (normals nearly perpendicular: the other face of a box edge) stands in only
           // if ring 1 holds nothing clearer and, for a sub-sample between its neighbours' depths,
