@@ -8,7 +8,8 @@
 #   issue 22: the resolve pass against its traffic bound, edge's lighting against its ideal, edge's
 #             plugin_overhead_ms against `off`'s frame (4×)
 # Environment: OUT (default out/device), WIDTH, HEIGHT, GT_SAMPLES, REPEATS, WALL_FRAMES, STEP_TIMEOUT;
-# DEVICE_SKIP_GL=1 leaves the machine's own GL loader alone (for a dry run on a machine that has one).
+# DEVICE_SKIP_GL=1 leaves the machine's own GL loader alone and RETROAA names another binary (a dry run
+# on a machine that has both: integration-tests/device_dry_run.sh).
 set -u
 cd "$(dirname "$0")/../.."
 if [ "${DEVICE_SKIP_GL:-0}" != 1 ]; then
@@ -20,7 +21,7 @@ fi
 export LD_LIBRARY_PATH=$PWD/.device/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 out=${OUT:-out/device}
 mkdir -p "$out"
-retroaa=.device/bin/retroaa
+retroaa=${RETROAA:-.device/bin/retroaa}
 nvidia-smi -L 2>/dev/null || true
 
 bench() {  # bench NAME ARGS...: one bench run into $out/NAME.json
