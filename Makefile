@@ -4,8 +4,9 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 RETROAA = $(BUILD)/engine-patch/retroaa
 
-# Debian 12 packages: toolchain, headless GL (EGL + Mesa's llvmpipe), and the chosen libraries.
-APT_PACKAGES = cmake g++ make pkg-config git assimp-testmodels xvfb xauth libimgui-dev \
+# Debian 12 packages: toolchain (python3 for tools/device/summary.py's dry run), headless GL (EGL +
+# Mesa's llvmpipe), and the chosen libraries.
+APT_PACKAGES = cmake g++ make pkg-config git python3 assimp-testmodels xvfb xauth libimgui-dev \
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev libglfw3-dev libglm-dev \
   libopenimageio-dev openimageio-tools nlohmann-json3-dev libcli11-dev libassimp-dev libgtest-dev
 
