@@ -166,12 +166,13 @@ void main() {
     weightSum[s] = onOwnSurface ? 1.0 : 0.0;
   }
   // Search outwards ring by ring; each sub-sample stops at the first ring holding its surface. Every
-  // ring pixel's depth is fetched once for all sub-samples still open, its normal only where one of
-  // them matches that depth (around a wire most ring pixels are background). Only a sub-sample in
-  // front of (or behind) everything in its 3×3 neighbourhood searches past the second ring: a wire or
-  // a gap thinner than a pixel, whose surface a pixel centre hits a few pixels along it. One that lies
-  // between its neighbours' depths (a grazing floor, a crease, a bump) rarely has its surface farther
-  // out: letting it search on too made the demo's pass 1.4× as costly for 0.03–0.26 dB (llvmpipe).
+  // ring pixel's depth is fetched once for all sub-samples still open, its normal and colour only
+  // where one of them matches that depth (around a wire most ring pixels are background). Only a
+  // sub-sample in front of (or behind) everything in its 3×3 neighbourhood searches past the second
+  // ring: a wire or a gap thinner than a pixel, whose surface a pixel centre hits a few pixels along
+  // it. One that lies between its neighbours' depths (a grazing floor, a crease, a bump) rarely has its
+  // surface farther out: letting it search on too made the demo's pass 1.4× as costly for 0.03–0.26 dB
+  // (llvmpipe).
   int nearOnly = 0;    // bit s: sub-sample s lies within its neighbours' depths
   int clearMatch = 0;  // bit s: sub-sample s holds matches of at least kClearMatch
   Range around = widen(Range(1.0, 0.0, false), own);  // nearest > farthest: no geometry yet
