@@ -11,7 +11,7 @@
 # DEVICE_SKIP_GL=1 leaves the machine's own GL loader alone and RETROAA names another binary (a dry run
 # on a machine that has both: integration-tests/device_dry_run.sh).
 set -u
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$0")/../.." || exit 2
 if [ "${DEVICE_SKIP_GL:-0}" != 1 ]; then
   for f in .device/gl/*.deb; do dpkg -x "$f" /; done
   ldconfig
