@@ -271,6 +271,12 @@ const std::vector<Setter>& setters() {
          return parseBool("reconstruct_before_tonemap", v, c.reconstructBeforeTonemap);
        },
        [](const Config& c) { return std::string(c.reconstructBeforeTonemap ? "on" : "off"); }},
+      {{"reconstruct_compute", "off", "on, off",
+        "reconstruct as a compute pass that packs each 8x8 tile's searching pixels onto adjacent invocations "
+        "instead of a full-screen pass (the same image; where the target's format takes no image stores, the "
+        "full-screen pass with a warning)"},
+       [](Config& c, const std::string& v) { return parseBool("reconstruct_compute", v, c.reconstructCompute); },
+       [](const Config& c) { return std::string(c.reconstructCompute ? "on" : "off"); }},
       {{"restore_gbuffer_after_shade", "on", "on, off",
         "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "
         "surface, not the last slice; off saves one resolve pass"},

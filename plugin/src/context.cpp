@@ -34,6 +34,15 @@ void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+void PluginContext::dispatchOverScreen(GLuint output, GLenum outputFormat, int tileSize) const {
+  glBindImageTexture(0, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, outputFormat);
+  glDispatchCompute(GLuint((layout.width + tileSize - 1) / tileSize), GLuint((layout.height + tileSize - 1) / tileSize),
+                    1);
+  // Whatever reads the output next (a texture fetch, a blend, a copy, the host's readback) sees the stores.
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, outputFormat);
+}
+
 void PluginContext::beginDepthWritingPass(GLuint framebuffer) const {
   beginFullscreenPass(framebuffer);
   glEnable(GL_DEPTH_TEST);
@@ -81,6 +90,32 @@ uint64_t bytesPerTexel(GLenum internalFormat) {
     case GL_R8: return 1;
     case GL_RG8: return 2;
     default: return 16;  // unknown formats: count generously rather than hide memory
+  }
+}
+
+bool takesImageStores(GLenum internalFormat) {
+  switch (internalFormat) {
+    case GL_RGBA32F:
+    case GL_RGBA16F:
+    case GL_RG32F:
+    case GL_RG16F:
+    case GL_R11F_G11F_B10F:
+    case GL_R32F:
+    case GL_R16F:
+    case GL_RGBA16:
+    case GL_RGB10_A2:
+    case GL_RGBA8:
+    case GL_RG16:
+    case GL_RG8:
+    case GL_R16:
+    case GL_R8:
+    case GL_RGBA16_SNORM:
+    case GL_RGBA8_SNORM:
+    case GL_RG16_SNORM:
+    case GL_RG8_SNORM:
+    case GL_R16_SNORM:
+    case GL_R8_SNORM: return true;
+    default: return false;
   }
 }
 

@@ -14,9 +14,9 @@
 namespace retroaa {
 
 struct ContextCapabilities {
-  int maxSamples = 1;          // min of GL_MAX_SAMPLES and the texture sample limits
-  bool timerQuery = false;     // GL_TIME_ELAPSED
-  bool stencilExport = false;  // ARB_shader_stencil_export
+  int maxSamples = 1;               // min of GL_MAX_SAMPLES and the texture sample limits
+  bool timerQuery = false;          // GL_TIME_ELAPSED
+  bool stencilExport = false;       // ARB_shader_stencil_export
   bool pipelineStatistics = false;  // ARB_pipeline_statistics_query (core in 4.6)
 };
 
@@ -29,11 +29,11 @@ struct PluginContext {
   LogCallback log;
   std::vector<std::string> warnings;
   std::unique_ptr<ShaderLibrary> shaders;
-  GlVertexArray emptyVertexArray;  // full-screen passes draw without vertex buffers
-  Stats frameStats;                // of the frame in flight: what the CPU knows of it (slice count)
+  GlVertexArray emptyVertexArray;               // full-screen passes draw without vertex buffers
+  Stats frameStats;                             // of the frame in flight: what the CPU knows of it (slice count)
   std::unique_ptr<FrameStatistics> statistics;  // what the GPU counts of it, read back frames later
-  bool timePasses = false;         // measure_gpu_time, or a budget that needs the times
-  double budgetScale = 1.0;        // multiplies the refinement of adaptive and edge/depth (budget mode)
+  bool timePasses = false;                      // measure_gpu_time, or a budget that needs the times
+  double budgetScale = 1.0;                     // multiplies the refinement of adaptive and edge/depth (budget mode)
 
   void warn(const std::string& message);
   uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }
@@ -46,6 +46,9 @@ struct PluginContext {
   // The same, for a pass that writes gl_FragDepth at every pixel it draws (the depth test enabled with
   // GL_ALWAYS: GL writes depth only with the test on).
   void beginDepthWritingPass(GLuint framebuffer) const;
+  // Runs the current compute program over the layout's pixels in tileSize × tileSize work groups, with
+  // `output` (level 0, of `outputFormat`, which takesImageStores) bound write-only as image unit 0.
+  void dispatchOverScreen(GLuint output, GLenum outputFormat, int tileSize) const;
 };
 
 // Measures one pass into the frame's statistics when the config asks for it (GPU time, fragment

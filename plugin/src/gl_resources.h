@@ -66,5 +66,9 @@ using GlSampler = GlObject<GlKind::Sampler>;
 
 // Bytes per texel of the formats the plugin allocates (for Stats::bytesHeld).
 uint64_t bytesPerTexel(GLenum internalFormat);
+// Whether a colour target of this format takes image stores (GL 4.5 core, table 8.27: float and
+// normalised formats with one, two or four channels, and R11F_G11F_B10F). sRGB and three-channel
+// formats do not.
+bool takesImageStores(GLenum internalFormat);
 
 }  // namespace retroaa

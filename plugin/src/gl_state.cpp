@@ -68,6 +68,12 @@ GlStateSnapshot GlStateSnapshot::capture() {
     s.samplerBindings[unit] = getInt(GL_SAMPLER_BINDING);
   }
   glActiveTexture(s.activeTexture);
+  glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &s.image0.texture);
+  glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, 0, &s.image0.level);
+  glGetIntegeri_v(GL_IMAGE_BINDING_LAYERED, 0, &s.image0.layered);
+  glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, 0, &s.image0.layer);
+  glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, 0, &s.image0.access);
+  glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, 0, &s.image0.format);
   return s;
 }
 
@@ -79,8 +85,10 @@ void GlStateSnapshot::restore() const {
   // A host may leave a program (or framebuffer, VAO) current that it already deleted: GL keeps it
   // alive only while bound, so once a pass unbinds it the name is gone and binding it again would
   // raise GL_INVALID_VALUE. Such names restore to 0.
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, drawFramebuffer == 0 || glIsFramebuffer(drawFramebuffer) ? drawFramebuffer : 0);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, readFramebuffer == 0 || glIsFramebuffer(readFramebuffer) ? readFramebuffer : 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER,
+                    drawFramebuffer == 0 || glIsFramebuffer(drawFramebuffer) ? drawFramebuffer : 0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER,
+                    readFramebuffer == 0 || glIsFramebuffer(readFramebuffer) ? readFramebuffer : 0);
   glUseProgram(program == 0 || glIsProgram(program) ? program : 0);
   glBindVertexArray(vertexArray == 0 || glIsVertexArray(vertexArray) ? vertexArray : 0);
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
@@ -113,28 +121,30 @@ void GlStateSnapshot::restore() const {
     glBindSampler(unit, samplerBindings[unit]);
   }
   glActiveTexture(activeTexture);
+  glBindImageTexture(0, image0.texture == 0 || glIsTexture(GLuint(image0.texture)) ? GLuint(image0.texture) : 0,
+                     image0.level, GLboolean(image0.layered), image0.layer, GLenum(image0.access),
+                     GLenum(image0.format));
 }
 
 bool GlStateSnapshot::operator==(const GlStateSnapshot& o) const {
   return drawFramebuffer == o.drawFramebuffer && readFramebuffer == o.readFramebuffer && program == o.program &&
          vertexArray == o.vertexArray && activeTexture == o.activeTexture && viewport == o.viewport &&
-         scissorBox == o.scissorBox && blend == o.blend && depthTest == o.depthTest &&
-         stencilTest == o.stencilTest && cullFace == o.cullFace && scissorTest == o.scissorTest &&
-         multisample == o.multisample && sampleShading == o.sampleShading &&
-         framebufferSrgb == o.framebufferSrgb && depthMask == o.depthMask && colorMask == o.colorMask &&
-         blendSrcRgb == o.blendSrcRgb && blendDstRgb == o.blendDstRgb && blendSrcAlpha == o.blendSrcAlpha &&
-         blendDstAlpha == o.blendDstAlpha && blendEquationRgb == o.blendEquationRgb &&
-         blendEquationAlpha == o.blendEquationAlpha && depthFunc == o.depthFunc &&
-         cullFaceMode == o.cullFaceMode && stencilFunc == o.stencilFunc && stencilRef == o.stencilRef &&
-         stencilValueMask == o.stencilValueMask && stencilWriteMask == o.stencilWriteMask &&
-         stencilFail == o.stencilFail && stencilPassDepthFail == o.stencilPassDepthFail &&
-         stencilPassDepthPass == o.stencilPassDepthPass && backStencilFunc == o.backStencilFunc &&
-         backStencilRef == o.backStencilRef && backStencilValueMask == o.backStencilValueMask &&
-         backStencilWriteMask == o.backStencilWriteMask && backStencilFail == o.backStencilFail &&
-         backStencilPassDepthFail == o.backStencilPassDepthFail &&
+         scissorBox == o.scissorBox && blend == o.blend && depthTest == o.depthTest && stencilTest == o.stencilTest &&
+         cullFace == o.cullFace && scissorTest == o.scissorTest && multisample == o.multisample &&
+         sampleShading == o.sampleShading && framebufferSrgb == o.framebufferSrgb && depthMask == o.depthMask &&
+         colorMask == o.colorMask && blendSrcRgb == o.blendSrcRgb && blendDstRgb == o.blendDstRgb &&
+         blendSrcAlpha == o.blendSrcAlpha && blendDstAlpha == o.blendDstAlpha &&
+         blendEquationRgb == o.blendEquationRgb && blendEquationAlpha == o.blendEquationAlpha &&
+         depthFunc == o.depthFunc && cullFaceMode == o.cullFaceMode && stencilFunc == o.stencilFunc &&
+         stencilRef == o.stencilRef && stencilValueMask == o.stencilValueMask &&
+         stencilWriteMask == o.stencilWriteMask && stencilFail == o.stencilFail &&
+         stencilPassDepthFail == o.stencilPassDepthFail && stencilPassDepthPass == o.stencilPassDepthPass &&
+         backStencilFunc == o.backStencilFunc && backStencilRef == o.backStencilRef &&
+         backStencilValueMask == o.backStencilValueMask && backStencilWriteMask == o.backStencilWriteMask &&
+         backStencilFail == o.backStencilFail && backStencilPassDepthFail == o.backStencilPassDepthFail &&
          backStencilPassDepthPass == o.backStencilPassDepthPass && minSampleShading == o.minSampleShading &&
          textureBindings2D == o.textureBindings2D && textureBindings2DMultisample == o.textureBindings2DMultisample &&
-         samplerBindings == o.samplerBindings;
+         samplerBindings == o.samplerBindings && image0 == o.image0;
 }
 
 }  // namespace retroaa

@@ -24,6 +24,14 @@ struct GlStateSnapshot {
         backStencilFail = 0, backStencilPassDepthFail = 0, backStencilPassDepthPass = 0;
   GLfloat minSampleShading = 0;
   std::vector<GLint> textureBindings2D, textureBindings2DMultisample, samplerBindings;  // per unit
+  // Image unit 0, which the plugin's compute passes write through.
+  struct ImageBinding {
+    GLint texture = 0, level = 0, layered = 0, layer = 0, access = GL_READ_ONLY, format = GL_R8;
+    bool operator==(const ImageBinding& o) const {
+      return texture == o.texture && level == o.level && layered == o.layered && layer == o.layer &&
+             access == o.access && format == o.format;
+    }
+  } image0;
 
   static constexpr int kUnits = 16;
   static GlStateSnapshot capture();

@@ -114,63 +114,76 @@ Result<std::string> ShaderLibrary::source(const std::string& path, bool allowOve
   return out;
 }
 
-Result<ShaderProgram> ShaderLibrary::link(const std::string& vertexPath, const std::string& fragmentPath,
-                                          const std::string& defines, const std::vector<std::string>& uniforms,
-                                          bool allowOverride, bool& usedOverride) {
-  const std::pair<GLenum, const std::string*> stages[] = {{GL_VERTEX_SHADER, &vertexPath},
-                                                          {GL_FRAGMENT_SHADER, &fragmentPath}};
-  GLuint shaders[2] = {};
-  std::string sources;  // both stages as compiled, for the uniform check
-  for (int i = 0; i < 2; ++i) {
-    Result<std::string> text = source(*stages[i].second, allowOverride, usedOverride);
+Result<ShaderProgram> ShaderLibrary::link(const std::vector<Stage>& stages, const std::string& defines,
+                                          const std::vector<std::string>& uniforms, bool allowOverride,
+                                          bool& usedOverride) {
+  const std::string& mainPath = stages.back().path;  // the stage the program is named after
+  std::vector<GLuint> shaders;
+  auto deleteShaders = [&shaders] {
+    for (GLuint shader : shaders) glDeleteShader(shader);
+  };
+  std::string sources;  // every stage as compiled, for the uniform check
+  for (const Stage& stage : stages) {
+    Result<std::string> text = source(stage.path, allowOverride, usedOverride);
     std::string log;
+    GLuint shader = 0;
     if (text) {
       const std::string compiled = withDefines(text.value(), sharedConstantDefines() + defines);
-      shaders[i] = compile(stages[i].first, compiled, log);
+      shader = compile(stage.type, compiled, log);
       sources += compiled;
     }
-    if (!shaders[i]) {
-      if (i == 1) glDeleteShader(shaders[0]);
-      return Error{ErrorCode::ShaderError,
-                   text ? *stages[i].second + " does not compile: " + log : text.error().message};
+    if (!shader) {
+      deleteShaders();
+      return Error{ErrorCode::ShaderError, text ? stage.path + " does not compile: " + log : text.error().message};
     }
+    shaders.push_back(shader);
   }
   const GLuint program = glCreateProgram();
-  glAttachShader(program, shaders[0]);
-  glAttachShader(program, shaders[1]);
+  for (GLuint shader : shaders) glAttachShader(program, shader);
   glLinkProgram(program);
-  glDeleteShader(shaders[0]);
-  glDeleteShader(shaders[1]);
+  deleteShaders();
   GLint ok = 0;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[4096] = {};
     glGetProgramInfoLog(program, sizeof log, nullptr, log);
     glDeleteProgram(program);
-    return Error{ErrorCode::ShaderError, vertexPath + " + " + fragmentPath + " do not link: " + log};
+    std::string names;
+    for (const Stage& stage : stages) names += (names.empty() ? "" : " + ") + stage.path;
+    return Error{ErrorCode::ShaderError, names + (stages.size() > 1 ? " do" : " does") + " not link: " + log};
   }
-  const std::string label = "retroaa." + fragmentPath;
+  const std::string label = "retroaa." + mainPath;
   glObjectLabel(GL_PROGRAM, program, -1, label.c_str());
   ShaderProgram built;
   built.program_ = GlProgram(counter_, program);
   for (const std::string& name : uniforms) {
     const GLint location = glGetUniformLocation(program, name.c_str());
     if (location < 0 && !declaresUniform(sources, name))
-      return Error{ErrorCode::ShaderError, fragmentPath + " declares no uniform '" + name + "', which the plugin sets"};
+      return Error{ErrorCode::ShaderError, mainPath + " declares no uniform '" + name + "', which the plugin sets"};
     built.uniforms_.emplace_back(name, location);
   }
   return built;
 }
 
-Result<ShaderProgram> ShaderLibrary::program(const std::string& vertexPath, const std::string& fragmentPath,
-                                             const std::string& defines, std::initializer_list<const char*> uniforms) {
+Result<ShaderProgram> ShaderLibrary::build(const std::vector<Stage>& stages, const std::string& defines,
+                                           std::initializer_list<const char*> uniforms) {
   const std::vector<std::string> names(uniforms.begin(), uniforms.end());
   bool usedOverride = false;
-  Result<ShaderProgram> program = link(vertexPath, fragmentPath, defines, names, true, usedOverride);
+  Result<ShaderProgram> program = link(stages, defines, names, true, usedOverride);
   if (program || !usedOverride) return program;
-  warn_("shader override in '" + overrideDirectory_ + "' failed, using the built-in " + fragmentPath +
+  warn_("shader override in '" + overrideDirectory_ + "' failed, using the built-in " + stages.back().path +
         " instead: " + program.error().message);
-  return link(vertexPath, fragmentPath, defines, names, false, usedOverride);
+  return link(stages, defines, names, false, usedOverride);
+}
+
+Result<ShaderProgram> ShaderLibrary::program(const std::string& vertexPath, const std::string& fragmentPath,
+                                             const std::string& defines, std::initializer_list<const char*> uniforms) {
+  return build({{GL_VERTEX_SHADER, vertexPath}, {GL_FRAGMENT_SHADER, fragmentPath}}, defines, uniforms);
+}
+
+Result<ShaderProgram> ShaderLibrary::computeProgram(const std::string& computePath, const std::string& defines,
+                                                    std::initializer_list<const char*> uniforms) {
+  return build({{GL_COMPUTE_SHADER, computePath}}, defines, uniforms);
 }
 
 }  // namespace retroaa

@@ -58,11 +58,20 @@ class ShaderLibrary {
   // sets; a shader that declares none of that name fails with ShaderError naming it.
   Result<ShaderProgram> program(const std::string& vertexPath, const std::string& fragmentPath,
                                 const std::string& defines = "", std::initializer_list<const char*> uniforms = {});
+  // The same for a compute shader alone.
+  Result<ShaderProgram> computeProgram(const std::string& computePath, const std::string& defines = "",
+                                       std::initializer_list<const char*> uniforms = {});
 
  private:
+  struct Stage {
+    GLenum type;
+    std::string path;
+  };
+  Result<ShaderProgram> build(const std::vector<Stage>& stages, const std::string& defines,
+                              std::initializer_list<const char*> uniforms);
   // Source with includes expanded; `fromOverride` says whether the override folder supplied it.
   Result<std::string> source(const std::string& path, bool allowOverride, bool& fromOverride, int depth = 0) const;
-  Result<ShaderProgram> link(const std::string& vertexPath, const std::string& fragmentPath, const std::string& defines,
+  Result<ShaderProgram> link(const std::vector<Stage>& stages, const std::string& defines,
                              const std::vector<std::string>& uniforms, bool allowOverride, bool& usedOverride);
 
   ObjectCounter& counter_;

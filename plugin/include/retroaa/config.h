@@ -128,6 +128,11 @@ struct Config {
   // Reconstruct on the host's HDR light target between lighting and tonemapping (radiance mixes as the
   // ground truth's supersamples do; +8 B/px for a copy) instead of on the display after tonemapping.
   bool reconstructBeforeTonemap = false;
+  // Run the reconstruction as a compute pass: each 8×8 tile lists its pixels that need rebuilding, then
+  // its invocations search for them one each, on adjacent lanes, instead of a full-screen pass where
+  // every searching pixel holds up its neighbours' lanes. The same image. Where the target's format
+  // takes no image stores (a three-channel or sRGB target), the full-screen pass, with a warning.
+  bool reconstructCompute = false;
   // After a slice method's shade(), resolve the MSAA G-buffer into the host's G-buffer again, so passes
   // after lighting that read it (SSAO, fog, debug views) see the resolved surface, not the last slice's
   // samples. Off saves one resolve pass per frame where nothing reads the G-buffer after lighting.

@@ -195,7 +195,8 @@ class PostTarget {
   void copyBack(const GBufferLayout& layout) const;                // the output into input()
   // A pass that rewrites only some pixels and discards the rest renders into input() itself and reads
   // the frame from a copy: one copy, as with copyBack, and nothing written where nothing changes.
-  void beginInPlace(const PluginContext& context) const;  // input() copied aside and bound as the output
+  void beginInPlace(const PluginContext& context) const;   // input() copied aside and bound as the output
+  void copyInputAside(const GBufferLayout& layout) const;  // the same for a compute pass: the copy alone
   GLuint copyOfInput() const { return output_.get(); }
   // The copy read as linear light: its sRGB view, which the texture unit decodes (cheaper than pow in a
   // shader); 0 where the display's format has no sRGB twin.

@@ -67,8 +67,10 @@ void PostTarget::bindInput(const GBufferLayout& layout, GLuint unit) const {
 
 void PostTarget::copyBack(const GBufferLayout& layout) const { copyImage(output_.get(), input(layout), layout); }
 
+void PostTarget::copyInputAside(const GBufferLayout& layout) const { copyImage(input(layout), output_.get(), layout); }
+
 void PostTarget::beginInPlace(const PluginContext& context) const {
-  copyImage(input(context.layout), output_.get(), context.layout);
+  copyInputAside(context.layout);
   context.beginFullscreenPass(inPlaceFramebuffer_.get());
 }
 

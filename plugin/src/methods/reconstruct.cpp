@@ -4,6 +4,7 @@
 // its own pixel's surface takes the colour of the neighbouring shaded pixels that match it
 // (shaders/reconstruct/). Stacked on a G-buffer method (`reconstruct_filter=on`) it reads the MSAA
 // G-buffer's own depth and normals instead of a prepass.
+#include <initializer_list>
 #include <string>
 
 #include "../shared_constants.h"
@@ -35,13 +36,23 @@ class ReconstructTechnique : public SampleGeometryTechnique {
       t.radiance_ = makeTexture(context, GLenum(format), layout.width, layout.height, 0, "reconstruct.radiance",
                                 t.geometry_.bytes);
     }
-    auto program = context.shaders->program(
-        "common/fullscreen.vert", "reconstruct/reconstruct.frag",
-        defineLine("SAMPLES", t.geometry_.samples) + depthEncodingDefines(layout) +
-            defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
-            defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) + defineLine("RADIANCE", t.beforeTonemap_) +
-            defineLine("LINEAR_INPUT", t.linearInput_) + defineLine("SEARCH_RADIUS", t.searchRadius_),
-        {"uSamplePositions", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance"});
+    t.output_ = t.beforeTonemap_ ? layout.lightTexture : shared.post->input(layout);
+    GLint outputFormat = GL_RGBA8;
+    glGetTextureLevelParameteriv(t.output_, 0, GL_TEXTURE_INTERNAL_FORMAT, &outputFormat);
+    t.outputFormat_ = GLenum(outputFormat);
+    t.computeRequested_ = context.config.reconstructCompute;
+    t.compute_ = t.computeRequested_ && takesImageStores(t.outputFormat_);
+    if (context.config.reconstructCompute && !t.compute_)
+      context.warn("reconstruct_compute=on: the " + std::string(t.beforeTonemap_ ? "light target" : "display") +
+                   "'s format takes no image stores; using the full-screen pass");
+    const std::string defines = defineLine("SAMPLES", t.geometry_.samples) + depthEncodingDefines(layout) +
+                                defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
+                                defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) +
+                                defineLine("RADIANCE", t.beforeTonemap_) + defineLine("LINEAR_INPUT", t.linearInput_) +
+                                defineLine("SEARCH_RADIUS", t.searchRadius_);
+    auto program = t.compute_ ? context.shaders->computeProgram("reconstruct/reconstruct.comp", defines, kUniforms)
+                              : context.shaders->program("common/fullscreen.vert", "reconstruct/reconstruct.frag",
+                                                         defines, kUniforms);
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -53,29 +64,37 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     const GBufferLayout& layout = context.layout;
     glCopyImageSubData(layout.lightTexture, GL_TEXTURE_2D, 0, 0, 0, 0, radiance_.get(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        layout.width, layout.height, 1);
-    context.beginFullscreenPass(layout.lightFramebuffer);
+    if (!compute_) context.beginFullscreenPass(layout.lightFramebuffer);
     glBindTextureUnit(0, radiance_.get());
-    draw(context, frame);
+    run(context, frame);
     return Status::ok();
   }
 
   Status post(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     if (beforeTonemap_) return Status::ok();
     ScopedPass timed(context, "reconstruct");
-    shared.post->beginInPlace(context);
+    if (compute_)
+      shared.post->copyInputAside(context.layout);
+    else
+      shared.post->beginInPlace(context);
     glBindTextureUnit(0, linearInput_ ? shared.post->linearCopyOfInput() : shared.post->copyOfInput());
-    draw(context, frame);
+    run(context, frame);
     return Status::ok();
   }
 
   bool keepsObjectsFor(const Config& config) const override {
     return SampleGeometryTechnique::keepsObjectsFor(config) && config.reconstructBeforeTonemap == beforeTonemap_ &&
-           config.reconstructSearchRadius == searchRadius_;
+           config.reconstructSearchRadius == searchRadius_ && config.reconstructCompute == computeRequested_;
   }
 
  private:
-  // The pass itself: its input bound on unit 0, its target bound.
-  void draw(PluginContext& context, const FrameInfo& frame) {
+  static constexpr std::initializer_list<const char*> kUniforms = {"uSamplePositions", RETROAA_DEPTH_BUFFER_UNIFORMS,
+                                                                   "uFootprintTan", "uTolerance"};
+  static constexpr int kTileSize = 8;  // reconstruct.comp's work group: 8 × 8 pixels
+
+  // The pass itself, on a copy of output_ bound on unit 0 (and for the full-screen pass, output_ bound
+  // as the target).
+  void run(PluginContext& context, const FrameInfo& frame) {
     const GBufferLayout& layout = context.layout;
     program_.use();
     glBindTextureUnit(1, layout.depthStencilTexture);
@@ -86,12 +105,19 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     program_.setDepthPlanes(context);
     program_.set("uFootprintTan", context.footprintTan(frame));
     program_.set("uTolerance", context.config.reconstructTolerance);
-    context.drawFullscreen();
+    if (compute_)
+      context.dispatchOverScreen(output_, outputFormat_, kTileSize);
+    else
+      context.drawFullscreen();
   }
 
   ShaderProgram program_;
-  GlTexture radiance_;      // before tonemapping: the light target as lit
-  GLuint pixelNormal_ = 0;  // the host's single-sample normal attachment (0: the layout has none)
+  GLuint output_ = 0;  // what the pass rewrites: the display (post's input()) or the light target
+  GLenum outputFormat_ = GL_RGBA8;
+  bool compute_ = false;           // reconstruct.comp: asked for, and outputFormat_ takes image stores
+  bool computeRequested_ = false;  // reconstruct_compute as created
+  GlTexture radiance_;             // before tonemapping: the light target as lit
+  GLuint pixelNormal_ = 0;         // the host's single-sample normal attachment (0: the layout has none)
   bool beforeTonemap_ = false;
   bool linearInput_ = false;  // the display is read through its sRGB view, decoded by the texture unit
   int searchRadius_ = 1;      // compiled into the program
