@@ -26,13 +26,15 @@ struct ReconstructFixture {
   std::unique_ptr<retroaa::Plugin> plugin;
 
   ReconstructFixture(const std::vector<uint8_t>& pixels, const std::vector<float>& pixelDepth, float tolerance = 2.0f,
-                     int searchRadius = retroaa::Config{}.reconstructSearchRadius, GLenum displayFormat = GL_RGBA8) {
+                     int searchRadius = retroaa::Config{}.reconstructSearchRadius, GLenum displayFormat = GL_RGBA8,
+                     bool compute = false) {
     const host::HostTargets& t = frame.renderer->targets();
     retroaa::Description description;
     description.config.method = retroaa::Method::Reconstruct;
     description.config.samples = 4;
     description.config.reconstructTolerance = tolerance;
     description.config.reconstructSearchRadius = searchRadius;
+    description.config.reconstructCompute = compute;
     description.layout = patch::describeHostGBuffer(t);
     display = t.displayTexture;
     if (displayFormat != GL_RGBA8) {
@@ -142,17 +144,51 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
       depth[y * kWidth + x] = x < 8 ? 0.5f : 1.0f;
     }
   const float mixed = linearMix(200.0f, 30.0f, 0.5f);
-  for (GLenum format : {GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F}) {
-    ReconstructFixture fixture(display, depth, 2.0f, retroaa::Config{}.reconstructSearchRadius, format);
-    const std::vector<uint8_t> out =
-        fixture.run("gl_FragDepth = float(x) + position.x >= 7.6 ? 1.0 : 0.5; outNormal = vec4(0.0, 0.0, 1.0, 0.5);");
-    for (int y = 0; y < kHeight; ++y) {
-      EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0)
-          << std::hex << format << std::dec << " row " << y << ": half surface, half background";
-      EXPECT_EQ(out[(y * kWidth + 6) * 4], 200) << "row " << y;
-      EXPECT_EQ(out[(y * kWidth + 8) * 4], 30) << "row " << y;
+  // The compute pass too (reconstruct_compute=on): it writes through image stores, which a three-channel
+  // display does not take; there it runs the full-screen pass and says so.
+  for (bool compute : {false, true})
+    for (GLenum format : {GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F, GL_RGB8}) {
+      ReconstructFixture fixture(display, depth, 2.0f, retroaa::Config{}.reconstructSearchRadius, format, compute);
+      const std::vector<uint8_t> out =
+          fixture.run("gl_FragDepth = float(x) + position.x >= 7.6 ? 1.0 : 0.5; outNormal = vec4(0.0, 0.0, 1.0, 0.5);");
+      for (int y = 0; y < kHeight; ++y) {
+        EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0)
+            << std::hex << format << std::dec << (compute ? " compute" : "") << " row " << y
+            << ": half surface, half background";
+        EXPECT_EQ(out[(y * kWidth + 6) * 4], 200) << "row " << y;
+        EXPECT_EQ(out[(y * kWidth + 8) * 4], 30) << "row " << y;
+      }
+      const std::vector<std::string> warnings = fixture.plugin->warnings();
+      const bool saidFullScreen = std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
+        return w.find(
+                   "reconstruct_compute=on: the display's format takes no image stores; using the "
+                   "full-screen pass") != std::string::npos;
+      });
+      EXPECT_EQ(saidFullScreen, compute && format == GL_RGB8) << std::hex << format;
+      EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     }
-    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST(Reconstruct, TheComputePassWritesTheSameImageAsTheFullScreenPass) {
+  // The demo frame, after and before tonemapping, at several search radii: byte for byte. The pass's
+  // fragment invocations tell which of the two ran (the compute pass draws nothing).
+  PatchedHost host("default", 96, 72);
+  for (const std::string options : {"", "@reconstruct_before_tonemap=on", "@reconstruct_search_radius=1"}) {
+    const std::string method = "reconstruct@measure_gpu_time=on" + options;
+    const app::DisplayImage fullScreen = host.render(method);
+    const retroaa::Stats fullScreenStats = host.hooks->plugin().waitForStats();
+    const app::DisplayImage compute = host.render(method + "@reconstruct_compute=on");
+    const retroaa::Stats computeStats = host.hooks->plugin().waitForStats();
+    EXPECT_EQ(compute.rgb, fullScreen.rgb) << method;
+    EXPECT_NE(compute.rgb, host.render("off").rgb) << method;
+    auto invocations = [](const retroaa::Stats& stats) {
+      for (const retroaa::PassStats& pass : stats.passes)
+        if (pass.name == "reconstruct") return int64_t(pass.fragmentInvocations);
+      return int64_t(-1);
+    };
+    EXPECT_GE(invocations(fullScreenStats), 96 * 72) << method;
+    EXPECT_EQ(invocations(computeStats), 0) << method;
+    EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();
   }
 }
 

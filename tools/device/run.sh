@@ -3,8 +3,8 @@
 # the benchmark runs that the open GPU targets need, one JSON each into $OUT, the bench tables on
 # stdout. Sized to fit one call of the device tool (a few minutes on an H100); every run has its own
 # time limit so one slow run cannot take the others with it.
-#   issue 19: `reconstruct` vs `off` in wall clock at 1280×720 4× (≤ 1.5×) and 16× (≤ 2×); plugin B/px
-#             at 8× and 16× against `resolve`'s
+#   issue 19: `reconstruct` vs `off` in wall clock at 1280×720 4× (≤ 1.5×) and 16× (≤ 2×), its full-screen
+#             and its compute pass (reconstruct_compute); plugin B/px at 8× and 16× against `resolve`'s
 #   issue 22: the resolve pass against its traffic bound, edge's lighting against its ideal, edge's
 #             plugin_overhead_ms against `off`'s frame (4×)
 # Environment: OUT (default out/device), WIDTH, HEIGHT, GT_SAMPLES, REPEATS, WALL_FRAMES, STEP_TIMEOUT;
@@ -33,7 +33,7 @@ bench() {  # bench NAME ARGS...: one bench run into $out/NAME.json
     --json "$out/$name.json" "$@" 2>&1 | grep -v '^bench: ' | tail -20
   echo "   exit ${PIPESTATUS[0]}"
 }
-bench samples4 --samples 4 --methods off,fxaa,coverage,reconstruct,reconstruct@reconstruct_search_radius=1,resolve,resolve+reconstruct,edge,adaptive,aggregate,per-sample
-bench samples8 --samples 8 --methods off,coverage,reconstruct,resolve,edge
-bench samples16 --samples 16 --methods off,coverage,reconstruct,resolve,edge
+bench samples4 --samples 4 --methods off,fxaa,coverage,reconstruct,reconstruct@reconstruct_compute=on,reconstruct@reconstruct_search_radius=1,resolve,resolve+reconstruct,edge,adaptive,aggregate,per-sample
+bench samples8 --samples 8 --methods off,coverage,reconstruct,reconstruct@reconstruct_compute=on,resolve,edge
+bench samples16 --samples 16 --methods off,coverage,reconstruct,reconstruct@reconstruct_compute=on,resolve,edge
 python3 tools/device/summary.py "$out/samples4.json" "$out/samples8.json" "$out/samples16.json" || true

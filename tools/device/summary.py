@@ -22,7 +22,8 @@ def summarise(path):
         print("  no `off` row: no ratios")
         return
     target = {4: 1.5, 16: 2.0}.get(samples)
-    for name in ("coverage", "reconstruct", "reconstruct@reconstruct_search_radius=1", "resolve+reconstruct"):
+    for name in ("coverage", "reconstruct", "reconstruct@reconstruct_compute=on", "reconstruct@reconstruct_search_radius=1",
+                 "resolve+reconstruct"):
         row = rows.get(name)
         if not row:
             continue
