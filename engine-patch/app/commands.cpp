@@ -405,6 +405,7 @@ int runSoak(const SoakOptions& options) {
     config.edgeDetector = retroaa::EdgeDetector(frame % 5);
     config.aggregateCount = 1 + frame % 4;
     config.fxaa = frame % 7 == 0;
+    config.reconstructCompute = frame % 2 == 0;
     session.configure(config);
     if (frame % 50 == 49) {
       const int* size = sizes[(frame / 50) % 3];
