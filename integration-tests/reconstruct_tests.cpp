@@ -190,6 +190,14 @@ TEST(Reconstruct, TheComputePassWritesTheSameImageAsTheFullScreenPass) {
     EXPECT_EQ(invocations(computeStats), 0) << method;
     EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();
   }
+  // The compute pass writes through image unit 0; a host's own binding there survives it.
+  const GLuint hostImage = host.renderer->targets().color;
+  glBindImageTexture(0, hostImage, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
+  host.render("reconstruct@reconstruct_compute=on");
+  GLint bound = 0;
+  glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &bound);
+  EXPECT_EQ(GLuint(bound), hostImage);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
 }
 
 TEST(Reconstruct, ASubSampleOnTheOtherFaceOfAnEdgeSkipsTheFaceItIsPerpendicularTo) {
