@@ -18,6 +18,13 @@ float linearMix(float a, float b, float shareOfA) {
   return toDisplay(shareOfA * toLinear(a / 255.0f) + (1.0f - shareOfA) * toLinear(b / 255.0f)) * 255.0f;
 }
 
+// Whether any of the plugin's warnings so far contains `text`.
+bool warned(const retroaa::Plugin& plugin, const std::string& text) {
+  const std::vector<std::string> warnings = plugin.warnings();
+  return std::any_of(warnings.begin(), warnings.end(),
+                     [&text](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
 // The host's single-sample results by hand (display, depth, normal per pixel), then the plugin's pass.
 // The display is the host's RGBA8 texture, or one of `displayFormat` in its place.
 struct ReconstructFixture {
@@ -158,13 +165,11 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
         EXPECT_EQ(out[(y * kWidth + 6) * 4], 200) << "row " << y;
         EXPECT_EQ(out[(y * kWidth + 8) * 4], 30) << "row " << y;
       }
-      const std::vector<std::string> warnings = fixture.plugin->warnings();
-      const bool saidFullScreen = std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
-        return w.find(
-                   "reconstruct_compute=on: the display's format takes no image stores; using the "
-                   "full-screen pass") != std::string::npos;
-      });
-      EXPECT_EQ(saidFullScreen, compute && format == GL_RGB8) << std::hex << format;
+      EXPECT_EQ(
+          warned(*fixture.plugin,
+                 "reconstruct_compute=on: the display's format takes no image stores; using the full-screen pass"),
+          compute && format == GL_RGB8)
+          << std::hex << format;
       EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     }
 }
@@ -309,13 +314,7 @@ TEST(Reconstruct, StackedAtOneSampleIsTurnedOffWithAWord) {
   // At 1× the G-buffer has no sub-samples to read (its textures are not even multisampled).
   PatchedHost host("default", 32, 24);
   const app::DisplayImage stacked = host.render("resolve+reconstruct@samples=1");
-  const std::vector<std::string> warnings = host.hooks->plugin().warnings();
-  EXPECT_NE(std::find_if(warnings.begin(), warnings.end(),
-                         [](const std::string& w) {
-                           return w.find("reconstruct_filter needs at least 2 samples and samples=1") !=
-                                  std::string::npos;
-                         }),
-            warnings.end());
+  EXPECT_TRUE(warned(host.hooks->plugin(), "reconstruct_filter needs at least 2 samples and samples=1"));
   EXPECT_EQ(stacked.rgb, host.render("resolve@samples=1").rgb);
   EXPECT_TRUE(host.hooks->lastError().empty()) << host.hooks->lastError();
 }

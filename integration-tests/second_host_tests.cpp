@@ -3,9 +3,9 @@
 // lighting straight into an sRGB display, a forward pass after lighting. Each method must run without a
 // GL error, leave the background as the host drew it, anti-alias silhouettes at least as well as `off`
 // when it is a multi-sample method, and leave the host's G-buffer holding the resolved surface.
-#include "second_host_patch.h"
 #include "commands.h"
 #include "image_io.h"
+#include "second_host_patch.h"
 #include "test_support.h"
 
 #include <nlohmann/json.hpp>
@@ -132,7 +132,6 @@ void checkMethod(const std::string& spec) {
     EXPECT_EQ(host.gbuffer(), gbuffer) << spec << " left the host's G-buffer unlike resolve's";
   } else {
     EXPECT_EQ(offGBuffer, gbuffer) << spec << " changed the host's G-buffer";
-
   }
 
   const ScoringTruth scoring = scoringTruth(host);
@@ -158,6 +157,7 @@ SECOND_HOST_METHOD(Adaptive, "adaptive")
 SECOND_HOST_METHOD(Aggregate, "aggregate")
 SECOND_HOST_METHOD(Coverage, "coverage")
 SECOND_HOST_METHOD(Reconstruct, "reconstruct")
+SECOND_HOST_METHOD(ReconstructCompute, "reconstruct@reconstruct_compute=on")
 SECOND_HOST_METHOD(Smaa, "smaa")
 SECOND_HOST_METHOD(SmaaS2x, "smaa-s2x")
 SECOND_HOST_METHOD(Ssaa, "ssaa")

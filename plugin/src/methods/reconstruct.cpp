@@ -42,7 +42,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     t.outputFormat_ = GLenum(outputFormat);
     t.computeRequested_ = context.config.reconstructCompute;
     t.compute_ = t.computeRequested_ && takesImageStores(t.outputFormat_);
-    if (context.config.reconstructCompute && !t.compute_)
+    if (t.computeRequested_ && !t.compute_)
       context.warn("reconstruct_compute=on: the " + std::string(t.beforeTonemap_ ? "light target" : "display") +
                    "'s format takes no image stores; using the full-screen pass");
     const std::string defines = defineLine("SAMPLES", t.geometry_.samples) + depthEncodingDefines(layout) +
