@@ -86,9 +86,10 @@ TEST(Cli, BenchWritesEveryRowWithTheFieldsReportsNeed) {
   EXPECT_GT(floor, 1.0);
   EXPECT_LT(floor, 4.0);
   for (const auto& row : document["rows"]) {
-    for (const char* field : {"method", "samples", "evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel",
-                              "psnr_db", "edge_psnr_db", "psnr_vs_per_sample_db", "max_abs_error", "time_vs_off",
-                              "passes_fragment_invocations", "passes_minimum_bytes", "passes_traffic_bound_ms"})
+    for (const char* field :
+         {"method", "samples", "evals_per_pixel", "gpu_ms", "passes_ms", "plugin_bytes_per_pixel", "psnr_db",
+          "edge_psnr_db", "psnr_vs_per_sample_db", "max_abs_error", "time_vs_off", "passes_fragment_invocations",
+          "passes_compute_invocations", "passes_minimum_bytes", "passes_traffic_bound_ms"})
       EXPECT_TRUE(row.contains(field)) << field;
     for (const char* figure : {"wall_ms", "wall_vs_off", "plugin_overhead_ms", "evals_vs_shading_floor"})
       EXPECT_TRUE(row[figure].is_number()) << figure << " of " << row.dump();

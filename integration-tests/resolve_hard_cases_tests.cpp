@@ -31,11 +31,15 @@ class ResolveHardCases : public ::testing::Test {
   }
 
   // Resolves `pixels` (each a list of samples, at x = 0, 1, ... of row 0) and reads the host G-buffer.
-  void resolve(const std::vector<std::vector<Sample>>& pixels, int samples, retroaa::ResolveWeighting weighting) {
+  // `compute`: resolve_compute=on. The pass's statistics are kept in resolvePass_.
+  void resolve(const std::vector<std::vector<Sample>>& pixels, int samples, retroaa::ResolveWeighting weighting,
+               bool compute = false) {
     retroaa::Config config;
     config.method = retroaa::Method::Resolve;
     config.samples = samples;
     config.resolveWeighting = weighting;
+    config.resolveCompute = compute;
+    config.measureGpuTime = true;
     auto hooks = patch::RetroaaHooks::create(renderer_->targets(), config);
     ASSERT_TRUE(hooks) << hooks.error().message;
     retroaa::Plugin& plugin = hooks.value()->plugin();
@@ -56,6 +60,10 @@ class ResolveHardCases : public ::testing::Test {
     depth_.resize(size_t(kWidth) * kHeight);
     glGetTextureImage(renderer_->targets().depthStencil, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth_.size() * 4),
                       depth_.data());
+    resolvePass_ = {};
+    for (const retroaa::PassStats& pass : plugin.waitForStats().passes)
+      if (pass.name == "resolve") resolvePass_ = pass;
+    warnings_ = plugin.warnings();
   }
 
   glm::vec4 attachment(int a, int x) const { return out_[a][x]; }
@@ -72,6 +80,8 @@ class ResolveHardCases : public ::testing::Test {
   std::vector<glm::vec4> out_[5];
   std::vector<float> depth_;
   int granted_ = 0;
+  retroaa::PassStats resolvePass_;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace
@@ -161,4 +171,54 @@ TEST_F(ResolveHardCases, FrontAndBackPickTheExtremes) {
   EXPECT_NEAR(depthMetres(0), 10.0f, 0.01f);
   resolve({{surface(10), surface(20), surface(30), surface(40)}}, 4, retroaa::ResolveWeighting::Back);
   EXPECT_NEAR(depthMetres(0), 40.0f, 0.05f);
+}
+
+TEST_F(ResolveHardCases, TheComputeResolveWritesTheSameGBufferAndDepthBitForBit) {
+  // Every hard case above and a spread of ordinary pixels, under every weighting: resolve_compute=on
+  // writes the host's five attachments and its depth exactly as the full-screen pass does (NaN included,
+  // compared as bits). The compute pass runs one invocation per pixel of whole 8×8 tiles; its depth's
+  // copy draws as many fragments as the full-screen resolve, which runs no compute invocation.
+  Sample nanNormal = surface(10), infPosition = surface(10);
+  nanNormal.attachments[2] = glm::vec4(kNaN, 0, 1, 0.5f);
+  infPosition.attachments[1].x = kInf;
+  std::vector<std::vector<Sample>> pixels = {
+      {background(), background(), background(), background()},
+      {surface(10), nanNormal, surface(10), surface(10)},
+      {surface(10), surface(10), infPosition, surface(10)},
+      {surface(5, glm::vec3(0)), surface(5, glm::vec3(0)), surface(5, glm::vec3(0)), surface(5, glm::vec3(0))},
+      {surface(0.1f), surface(0.1f), surface(1e6f), surface(1e6f)},
+      {surface(10, {0, 0, 1}), surface(10, {0, 0, -1}), surface(10, {0, 0, 1}), surface(10, {0, 0, -1})},
+      {surface(10), surface(10.001f), surface(20), surface(30)},
+      {surface(10), background(), surface(10), background()},
+  };
+  for (int x = 0; x < 40; ++x) {  // depths and normals that vary across the row, as a frame's do
+    const float depth = 2.0f + 0.37f * float(x);
+    const glm::vec3 tilted = glm::normalize(glm::vec3(0.05f * float(x % 7), 0.3f, 1.0f));
+    pixels.push_back({surface(depth), surface(depth * (1.0f + 0.002f * float(x % 5)), tilted),
+                      x % 3 ? surface(depth + 3.0f) : background(), surface(depth * 1.01f, tilted)});
+  }
+  auto bits = [](const auto& values) {
+    const auto* bytes = reinterpret_cast<const uint8_t*>(values.data());
+    return std::vector<uint8_t>(bytes, bytes + values.size() * sizeof(values[0]));
+  };
+  using W = retroaa::ResolveWeighting;
+  for (W weighting : {W::Median, W::Front, W::Back, W::Fso, W::Mean, W::Window}) {
+    const char* name = retroaa::toString(weighting);
+    resolve(pixels, 4, weighting, false);
+    if (HasFatalFailure()) return;
+    const retroaa::PassStats fullScreenPass = resolvePass_;
+    std::vector<uint8_t> fullScreen[5];
+    for (int a = 0; a < 5; ++a) fullScreen[a] = bits(out_[a]);
+    const std::vector<uint8_t> fullScreenDepth = bits(depth_);
+    resolve(pixels, 4, weighting, true);
+    if (HasFatalFailure()) return;
+    for (int a = 0; a < 5; ++a) EXPECT_TRUE(bits(out_[a]) == fullScreen[a]) << name << ": attachment " << a;
+    EXPECT_TRUE(bits(depth_) == fullScreenDepth) << name << ": depth";
+    EXPECT_EQ(resolvePass_.computeInvocations, uint64_t(kWidth * kHeight)) << name;  // 64×48: whole tiles
+    EXPECT_EQ(resolvePass_.fragmentInvocations, fullScreenPass.fragmentInvocations) << name << ": the depth's copy";
+    EXPECT_GE(fullScreenPass.fragmentInvocations, uint64_t(kWidth * kHeight)) << name;
+    EXPECT_EQ(fullScreenPass.computeInvocations, 0u) << name;
+    EXPECT_TRUE(warnings_.empty()) << warnings_.front();
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }

@@ -118,7 +118,8 @@ TEST(Plugin, SamplersTheHostLeavesBoundChangeNoImage) {
   glCreateSamplers(1, &sampler);
   glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  for (const char* method : {"resolve+fxaa", "edge", "adaptive", "aggregate", "reconstruct", "smaa", "resolve+coverage"}) {
+  for (const char* method :
+       {"resolve+fxaa", "edge", "adaptive", "aggregate", "reconstruct", "smaa", "resolve+coverage"}) {
     glBindSamplers(0, 16, nullptr);
     const app::DisplayImage clean = host.render(method);
     std::vector<GLuint> samplers(16, sampler);
@@ -137,6 +138,7 @@ TEST(Plugin, EveryCallRestoresTheHostsGlState) {
   retroaa::Config config;
   config.method = retroaa::Method::Resolve;
   config.fxaa = true;
+  config.resolveCompute = true;  // writes through image units 0..5
   ASSERT_TRUE(plugin.reconfigure(config));
   // Unusual host state, as a state-caching engine might leave it.
   glViewport(3, 4, 20, 10);
@@ -150,6 +152,7 @@ TEST(Plugin, EveryCallRestoresTheHostsGlState) {
   glBindTextureUnit(0, host.renderer->targets().color);
   glBindTextureUnit(7, host.renderer->targets().normal);
   glActiveTexture(GL_TEXTURE5);
+  glBindImageTexture(3, host.renderer->targets().color, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
   const retroaa::GlStateSnapshot before = retroaa::GlStateSnapshot::capture();
   auto expectUnchanged = [&](const char* call) {
     EXPECT_TRUE(retroaa::GlStateSnapshot::capture() == before) << "GL state changed by " << call;
@@ -172,6 +175,7 @@ TEST(Plugin, EveryCallRestoresTheHostsGlState) {
   ASSERT_TRUE(plugin.resize(patch::describeHostGBuffer(host.renderer->targets())));
   expectUnchanged("resize");
   before.restore();
+  glBindImageTexture(3, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
@@ -241,36 +245,40 @@ TEST(Plugin, AcceptsEveryCommonDepthFormatAndRefusesWhatIsNoDepth) {
                             {"GL_DEPTH_COMPONENT16", GL_DEPTH_COMPONENT16, 0, 0, 2e-5},
                             {"unsized GL_DEPTH_COMPONENT", GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT, GL_FLOAT, 1e-6}};
   const SyntheticSample sample = surfaceSample(10);
-  for (const Format& format : formats) {
-    SyntheticFrame frame(w, h);
-    retroaa::Description description;
-    description.config.method = retroaa::Method::Resolve;
-    description.layout = patch::describeHostGBuffer(frame.renderer->targets());
-    GLuint depth = 0;
-    if (format.unsizedFormat) {
-      glGenTextures(1, &depth);
-      glBindTexture(GL_TEXTURE_2D, depth);
-      glTexImage2D(GL_TEXTURE_2D, 0, GLint(format.internal), w, h, 0, format.unsizedFormat, format.unsizedType,
-                   nullptr);
-      glBindTexture(GL_TEXTURE_2D, 0);
-    } else {
-      glCreateTextures(GL_TEXTURE_2D, 1, &depth);
-      glTextureStorage2D(depth, 1, format.internal, w, h);
+  for (const Format& format : formats)
+    for (const bool compute : {false, true}) {  // resolve_compute: its depth reaches the host through a copy pass
+      SyntheticFrame frame(w, h);
+      retroaa::Description description;
+      description.config.method = retroaa::Method::Resolve;
+      description.config.resolveCompute = compute;
+      description.layout = patch::describeHostGBuffer(frame.renderer->targets());
+      GLuint depth = 0;
+      if (format.unsizedFormat) {
+        glGenTextures(1, &depth);
+        glBindTexture(GL_TEXTURE_2D, depth);
+        glTexImage2D(GL_TEXTURE_2D, 0, GLint(format.internal), w, h, 0, format.unsizedFormat, format.unsizedType,
+                     nullptr);
+        glBindTexture(GL_TEXTURE_2D, 0);
+      } else {
+        glCreateTextures(GL_TEXTURE_2D, 1, &depth);
+        glTextureStorage2D(depth, 1, format.internal, w, h);
+      }
+      description.layout.depthStencilTexture = depth;
+      {
+        auto plugin = retroaa::Plugin::create(description);
+        ASSERT_TRUE(plugin) << format.name << ": " << plugin.error().message;
+        fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
+        ASSERT_TRUE(plugin.value()->resolve({1.0f}));
+        EXPECT_TRUE(plugin.value()->warnings().empty()) << plugin.value()->warnings().front();
+      }
+      std::vector<float> values(w * h);
+      glGetTextureImage(depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(values.size() * sizeof(float)), values.data());
+      // Float formats keep the sample's depth exactly: the MSAA depth is float too.
+      for (float v : values)
+        ASSERT_NEAR(v, sample.depthBuffer.x, format.tolerance) << format.name << " compute " << compute;
+      glDeleteTextures(1, &depth);
+      EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << format.name;
     }
-    description.layout.depthStencilTexture = depth;
-    {
-      auto plugin = retroaa::Plugin::create(description);
-      ASSERT_TRUE(plugin) << format.name << ": " << plugin.error().message;
-      fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
-      ASSERT_TRUE(plugin.value()->resolve({1.0f}));
-    }
-    std::vector<float> values(w * h);
-    glGetTextureImage(depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(values.size() * sizeof(float)), values.data());
-    // Float formats keep the sample's depth exactly: the MSAA depth is float too.
-    for (float v : values) ASSERT_NEAR(v, sample.depthBuffer.x, format.tolerance) << format.name;
-    glDeleteTextures(1, &depth);
-    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << format.name;
-  }
   // A colour texture as depth: InvalidLayout naming the field.
   SyntheticFrame frame(w, h);
   retroaa::Description description;
@@ -280,6 +288,39 @@ TEST(Plugin, AcceptsEveryCommonDepthFormatAndRefusesWhatIsNoDepth) {
   ASSERT_FALSE(refused);
   EXPECT_EQ(refused.error().code, retroaa::ErrorCode::InvalidLayout);
   EXPECT_NE(refused.error().message.find("depthStencilTexture"), std::string::npos) << refused.error().message;
+}
+
+TEST(Plugin, AComputeResolveOfAnAttachmentWithoutImageStoresFallsBackAndSaysWhich) {
+  // The host's specular attachment as RGB16F, a format image stores cannot write: resolve_compute=on
+  // warns naming the attachment and resolves through the full-screen pass, which writes it.
+  constexpr int w = 8, h = 4;
+  SyntheticFrame frame(w, h);
+  retroaa::Description description;
+  description.config.method = retroaa::Method::Resolve;
+  description.config.resolveCompute = true;
+  description.layout = patch::describeHostGBuffer(frame.renderer->targets());
+  GLuint specular = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &specular);
+  glTextureStorage2D(specular, 1, GL_RGB16F, w, h);
+  description.layout.attachments[3].texture = specular;
+  description.layout.attachments[3].internalFormat = GL_RGB16F;
+  SyntheticSample sample = surfaceSample(10);
+  sample.attachments[3] = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);
+  {
+    auto plugin = retroaa::Plugin::create(description);
+    ASSERT_TRUE(plugin) << plugin.error().message;
+    fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
+    ASSERT_TRUE(plugin.value()->resolve({1.0f}));
+    const std::vector<std::string> warnings = plugin.value()->warnings();
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0],
+              "resolve_compute=on: attachment 3's format takes no image stores; using the full-screen pass");
+  }
+  std::vector<glm::vec3> values(w * h);
+  glGetTextureImage(specular, 0, GL_RGB, GL_FLOAT, GLsizei(values.size() * sizeof(glm::vec3)), values.data());
+  for (const glm::vec3& v : values) EXPECT_EQ(v, glm::vec3(0.25f, 0.5f, 0.75f));
+  glDeleteTextures(1, &specular);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 TEST(Plugin, ALayoutWhoseDataLooksWrongIsNamedInAWarning) {

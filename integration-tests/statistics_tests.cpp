@@ -223,7 +223,8 @@ TEST(Statistics, TheQueryRingIsBoundedAndFreedOnReconfigure) {
   base.measureGpuTime = true;
   host.render("edge", base);
   const retroaa::Stats first = host.hooks->plugin().waitForStats();
-  const int perFrame = int(2 * first.passes.size()) + first.slices;  // timer + invocations per pass, 1 per slice
+  // timer + fragment and compute invocations per pass, 1 per slice
+  const int perFrame = int(3 * first.passes.size()) + first.slices;
   for (int frame = 0; frame < 50; ++frame) host.renderer->renderFrame(host.scene.camera);
   const retroaa::Stats later = host.hooks->plugin().stats();
   EXPECT_GT(later.statisticsQueriesHeld, 0);

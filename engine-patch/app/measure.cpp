@@ -66,8 +66,8 @@ double measureCopyGigabytesPerSecond() {
   const auto start = std::chrono::steady_clock::now();
   glBeginQuery(GL_TIME_ELAPSED, query);
   for (int i = 0; i < copies; ++i)
-    glCopyImageSubData(textures[i % 2], GL_TEXTURE_2D, 0, 0, 0, 0, textures[1 - i % 2], GL_TEXTURE_2D, 0, 0, 0, 0,
-                       side, side, 1);
+    glCopyImageSubData(textures[i % 2], GL_TEXTURE_2D, 0, 0, 0, 0, textures[1 - i % 2], GL_TEXTURE_2D, 0, 0, 0, 0, side,
+                       side, 1);
   glEndQuery(GL_TIME_ELAPSED);
   glFinish();
   const std::chrono::duration<double, std::nano> wall = std::chrono::steady_clock::now() - start;
@@ -79,7 +79,7 @@ double measureCopyGigabytesPerSecond() {
   // reads near 0), so there the wall clock between two glFinish calls.
   const double nanoseconds = double(timer) >= 0.1 * wall.count() ? double(timer) : wall.count();
   const double bytesMoved = 2.0 * double(side) * side * 16.0 * copies;  // read and write
-  return nanoseconds > 0 ? bytesMoved / nanoseconds : 0.0;             // bytes per ns = GB/s
+  return nanoseconds > 0 ? bytesMoved / nanoseconds : 0.0;              // bytes per ns = GB/s
 }
 
 double measureShadingFloor(Session& session, const host::Camera& camera) {
@@ -155,10 +155,12 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
     m.stats = session.plugin().waitForStats();
     std::map<std::string, double> frameTotals;  // a pass runs once per slice: sum them per frame
     m.passInvocations.clear();
+    m.passComputeInvocations.clear();
     m.passMinimumBytes.clear();
     for (const retroaa::PassStats& pass : m.stats.passes) {
       frameTotals["plugin." + pass.name] += pass.ms;
       m.passInvocations["plugin." + pass.name] += pass.fragmentInvocations;
+      if (pass.computeInvocations) m.passComputeInvocations["plugin." + pass.name] += pass.computeInvocations;
       if (pass.minimumBytes) m.passMinimumBytes["plugin." + pass.name] += pass.minimumBytes;
     }
     for (const auto& [name, ms] : frameTotals) passMs[name].push_back(ms);
@@ -185,6 +187,7 @@ nlohmann::json figures(const Measurement& m) {
       {"wall_ms", m.wallMs > 0 ? json(m.wallMs) : json(nullptr)},
       {"passes_ms", m.passMs},
       {"passes_fragment_invocations", m.passInvocations},
+      {"passes_compute_invocations", m.passComputeInvocations},
       {"passes_minimum_bytes", m.passMinimumBytes},
       {"plugin_bytes", m.stats.bytesHeld},
       {"plugin_bytes_per_pixel", m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0},

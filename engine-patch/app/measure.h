@@ -29,15 +29,16 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
 struct Measurement {
   std::vector<uint8_t> display;  // RGBA8 top-down, of the last frame
   DisplayImage image;
-  retroaa::Stats stats;                  // of the last frame
-  double gpuMs = 0;                      // the host's frame on the GPU: median of the timed frames
-  double wallMs = 0;                     // wall clock per frame, statistics off (0: not measured)
+  retroaa::Stats stats;  // of the last frame
+  double gpuMs = 0;      // the host's frame on the GPU: median of the timed frames
+  double wallMs = 0;     // wall clock per frame, statistics off (0: not measured)
   // Medians: model_pass (the host's geometry alone), after_model_pass (its hooks: resolve, a prepass),
   // lighting, tonemap_post, plugin.<pass>.
   std::map<std::string, double> passMs;
-  std::map<std::string, uint64_t> passInvocations;  // plugin.<pass>: fragment-shader invocations, last frame
-  std::map<std::string, uint64_t> passMinimumBytes;  // plugin.<pass>: its least traffic, where stated
-  ErrorMetrics error;                    // against the ground truth, edge figures on its edges
+  std::map<std::string, uint64_t> passInvocations;         // plugin.<pass>: fragment-shader invocations, last frame
+  std::map<std::string, uint64_t> passComputeInvocations;  // … compute-shader invocations (passes with any)
+  std::map<std::string, uint64_t> passMinimumBytes;        // plugin.<pass>: its least traffic, where stated
+  ErrorMetrics error;                                      // against the ground truth, edge figures on its edges
   std::optional<double> psnrVsPerSampleDb;
 };
 // Renders `camera` with the session's config: `wallFrames` back-to-back frames with every statistic
@@ -60,9 +61,9 @@ double measureWallMs(Session& session, const host::Camera& camera, int frames);
 
 // The figures of a measurement by the names every report uses: samples, evals_per_pixel,
 // lighting_evaluations, slices, gpu_ms, wall_ms (null when not measured), passes_ms,
-// passes_fragment_invocations, passes_minimum_bytes, plugin_bytes, plugin_bytes_per_pixel, budget_scale,
-// psnr_db, edge_psnr_db (null when the ground truth has no edge pixel), edge_pixels, ssim,
-// max_abs_error, psnr_vs_per_sample_db (when measured).
+// passes_fragment_invocations, passes_compute_invocations, passes_minimum_bytes, plugin_bytes, plugin_bytes_per_pixel,
+// budget_scale, psnr_db, edge_psnr_db (null when the ground truth has no edge pixel), edge_pixels, ssim, max_abs_error,
+// psnr_vs_per_sample_db (when measured).
 nlohmann::json figures(const Measurement& measurement);
 
 // Adds to rows (each with "method" and figures()'s names) the ratios to baselines measured in the same

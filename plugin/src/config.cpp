@@ -159,6 +159,12 @@ const std::vector<Setter>& setters() {
          return parseEnum("resolve_weighting", v, kWeightings, c.resolveWeighting);
        },
        [](const Config& c) { return std::string(toString(c.resolveWeighting)); }},
+      {{"resolve_compute", "off", "on, off",
+        "the resolve as a compute pass, the depth through a one-fetch full-screen pass (the same G-buffer; for "
+        "GPUs whose pixel shaders run on a small partition; where an attachment's format takes no image stores, "
+        "the full-screen pass with a warning)"},
+       [](Config& c, const std::string& v) { return parseBool("resolve_compute", v, c.resolveCompute); },
+       [](const Config& c) { return std::string(c.resolveCompute ? "on" : "off"); }},
       {{"closeness", "5", "0 .. 100",
         "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"},
        [](Config& c, const std::string& v) { return parseFloat("closeness", v, 0.0f, 100.0f, c.closeness); },

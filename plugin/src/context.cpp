@@ -34,13 +34,15 @@ void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void PluginContext::dispatchOverScreen(GLuint output, GLenum outputFormat, int tileSize) const {
-  glBindImageTexture(0, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, outputFormat);
+void PluginContext::dispatchOverScreen(const std::vector<ImageOutput>& outputs, int tileSize) const {
+  for (size_t unit = 0; unit < outputs.size(); ++unit)
+    glBindImageTexture(GLuint(unit), outputs[unit].texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, outputs[unit].format);
   glDispatchCompute(GLuint((layout.width + tileSize - 1) / tileSize), GLuint((layout.height + tileSize - 1) / tileSize),
                     1);
   // Whatever reads the output next (a texture fetch, a blend, a copy, the host's readback) sees the stores.
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, outputFormat);
+  for (size_t unit = 0; unit < outputs.size(); ++unit)
+    glBindImageTexture(GLuint(unit), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, outputs[unit].format);
 }
 
 void PluginContext::beginDepthWritingPass(GLuint framebuffer) const {

@@ -47,8 +47,12 @@ struct PluginContext {
   // GL_ALWAYS: GL writes depth only with the test on).
   void beginDepthWritingPass(GLuint framebuffer) const;
   // Runs the current compute program over the layout's pixels in tileSize × tileSize work groups, with
-  // `output` (level 0, of `outputFormat`, which takesImageStores) bound write-only as image unit 0.
-  void dispatchOverScreen(GLuint output, GLenum outputFormat, int tileSize) const;
+  // `outputs` (level 0 of each, in a format that takesImageStores) bound write-only as image units 0, 1, …
+  struct ImageOutput {
+    GLuint texture;
+    GLenum format;
+  };
+  void dispatchOverScreen(const std::vector<ImageOutput>& outputs, int tileSize) const;
 };
 
 // Measures one pass into the frame's statistics when the config asks for it (GPU time, fragment

@@ -34,14 +34,14 @@ void FrameStatistics::beginFrame() {
   slot.passes.clear();
   slot.evaluationQueries.clear();
   slot.knownEvaluations = 0;
-  slot.timePool.used = slot.fragmentPool.used = slot.samplesPool.used = 0;
+  slot.timePool.used = slot.fragmentPool.used = slot.computePool.used = slot.samplesPool.used = 0;
   passDepth_ = 0;
 }
 
 void FrameStatistics::beginPass(const char* name, bool measured, uint64_t minimumBytes) {
   Slot* slot = openSlot();
   if (!slot || !measured || passDepth_++ > 0) return;
-  PassQueries pass{name, 0, 0, minimumBytes};
+  PassQueries pass{name, 0, 0, 0, minimumBytes};
   if (timerQueries_) {
     pass.time = slot->timePool.next(queries_);
     glBeginQuery(GL_TIME_ELAPSED, pass.time);
@@ -49,6 +49,8 @@ void FrameStatistics::beginPass(const char* name, bool measured, uint64_t minimu
   if (pipelineStatistics_) {
     pass.fragments = slot->fragmentPool.next(queries_);
     glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, pass.fragments);
+    pass.computes = slot->computePool.next(queries_);
+    glBeginQuery(GL_COMPUTE_SHADER_INVOCATIONS, pass.computes);
   }
   slot->passes.push_back(std::move(pass));
 }
@@ -58,6 +60,7 @@ void FrameStatistics::endPass() {
   const PassQueries& pass = openSlot()->passes.back();
   if (pass.time) glEndQuery(GL_TIME_ELAPSED);
   if (pass.fragments) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
+  if (pass.computes) glEndQuery(GL_COMPUTE_SHADER_INVOCATIONS);
 }
 
 GLuint FrameStatistics::beginEvaluationCount() {
@@ -83,7 +86,8 @@ bool FrameStatistics::available(const Slot& slot) const {
     return ready == GL_TRUE;
   };
   for (const PassQueries& pass : slot.passes)
-    if ((pass.time && !isAvailable(pass.time)) || (pass.fragments && !isAvailable(pass.fragments))) return false;
+    for (GLuint query : {pass.time, pass.fragments, pass.computes})
+      if (query && !isAvailable(query)) return false;
   for (GLuint query : slot.evaluationQueries)
     if (!isAvailable(query)) return false;
   return true;
@@ -100,7 +104,8 @@ void FrameStatistics::read(Slot& slot, GLenum resultMode) {
   figures.lightingEvaluations = slot.knownEvaluations;
   for (GLuint query : slot.evaluationQueries) figures.lightingEvaluations += result(query);
   for (const PassQueries& pass : slot.passes)
-    figures.passes.push_back({pass.name, double(result(pass.time)) * 1e-6, result(pass.fragments), pass.minimumBytes});
+    figures.passes.push_back({pass.name, double(result(pass.time)) * 1e-6, result(pass.fragments),
+                              result(pass.computes), pass.minimumBytes});
   slot.state = Slot::State::Empty;
   if (figures.frame > latest_.frame) latest_ = std::move(figures);
 }

@@ -52,7 +52,7 @@ class FrameStatistics {
   const FrameFigures& latest() const { return latest_; }
   uint64_t framesStarted() const { return frames_; }
   // The ring's query objects: counted apart from the plugin's other objects, since they follow the
-  // passes measured (at most kFramesInFlight × (2 per pass + 1 per slice)), not the method's targets.
+  // passes measured (at most kFramesInFlight × (3 per pass + 1 per slice)), not the method's targets.
   int queriesHeld() const { return queries_.live; }
 
  private:
@@ -64,7 +64,7 @@ class FrameStatistics {
   };
   struct PassQueries {
     std::string name;
-    GLuint time = 0, fragments = 0;
+    GLuint time = 0, fragments = 0, computes = 0;
     uint64_t minimumBytes = 0;
   };
   struct Slot {
@@ -73,7 +73,7 @@ class FrameStatistics {
     std::vector<PassQueries> passes;
     std::vector<GLuint> evaluationQueries;
     uint64_t knownEvaluations = 0;
-    QueryPool timePool, fragmentPool, samplesPool;
+    QueryPool timePool, fragmentPool, computePool, samplesPool;
   };
   void closeFrame();  // the frame in flight, if any, becomes pending
   bool available(const Slot& slot) const;

@@ -1,5 +1,7 @@
 #include "gl_state.h"
 
+#include <algorithm>
+
 namespace retroaa {
 
 namespace {
@@ -68,12 +70,16 @@ GlStateSnapshot GlStateSnapshot::capture() {
     s.samplerBindings[unit] = getInt(GL_SAMPLER_BINDING);
   }
   glActiveTexture(s.activeTexture);
-  glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &s.image0.texture);
-  glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, 0, &s.image0.level);
-  glGetIntegeri_v(GL_IMAGE_BINDING_LAYERED, 0, &s.image0.layered);
-  glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, 0, &s.image0.layer);
-  glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, 0, &s.image0.access);
-  glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, 0, &s.image0.format);
+  s.imageBindings.resize(size_t(std::min(kImageUnits, getInt(GL_MAX_IMAGE_UNITS))));
+  for (GLuint unit = 0; unit < s.imageBindings.size(); ++unit) {
+    ImageBinding& image = s.imageBindings[unit];
+    glGetIntegeri_v(GL_IMAGE_BINDING_NAME, unit, &image.texture);
+    glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, unit, &image.level);
+    glGetIntegeri_v(GL_IMAGE_BINDING_LAYERED, unit, &image.layered);
+    glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, unit, &image.layer);
+    glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, unit, &image.access);
+    glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, unit, &image.format);
+  }
   return s;
 }
 
@@ -121,9 +127,11 @@ void GlStateSnapshot::restore() const {
     glBindSampler(unit, samplerBindings[unit]);
   }
   glActiveTexture(activeTexture);
-  glBindImageTexture(0, image0.texture == 0 || glIsTexture(GLuint(image0.texture)) ? GLuint(image0.texture) : 0,
-                     image0.level, GLboolean(image0.layered), image0.layer, GLenum(image0.access),
-                     GLenum(image0.format));
+  for (GLuint unit = 0; unit < imageBindings.size(); ++unit) {
+    const ImageBinding& image = imageBindings[unit];
+    glBindImageTexture(unit, image.texture == 0 || glIsTexture(GLuint(image.texture)) ? GLuint(image.texture) : 0,
+                       image.level, GLboolean(image.layered), image.layer, GLenum(image.access), GLenum(image.format));
+  }
 }
 
 bool GlStateSnapshot::operator==(const GlStateSnapshot& o) const {
@@ -144,7 +152,7 @@ bool GlStateSnapshot::operator==(const GlStateSnapshot& o) const {
          backStencilFail == o.backStencilFail && backStencilPassDepthFail == o.backStencilPassDepthFail &&
          backStencilPassDepthPass == o.backStencilPassDepthPass && minSampleShading == o.minSampleShading &&
          textureBindings2D == o.textureBindings2D && textureBindings2DMultisample == o.textureBindings2DMultisample &&
-         samplerBindings == o.samplerBindings && image0 == o.image0;
+         samplerBindings == o.samplerBindings && imageBindings == o.imageBindings;
 }
 
 }  // namespace retroaa

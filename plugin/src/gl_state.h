@@ -24,16 +24,18 @@ struct GlStateSnapshot {
         backStencilFail = 0, backStencilPassDepthFail = 0, backStencilPassDepthPass = 0;
   GLfloat minSampleShading = 0;
   std::vector<GLint> textureBindings2D, textureBindings2DMultisample, samplerBindings;  // per unit
-  // Image unit 0, which the plugin's compute passes write through.
+  // The image units the plugin's compute passes write through (0 … kImageUnits - 1, as the context has).
   struct ImageBinding {
     GLint texture = 0, level = 0, layered = 0, layer = 0, access = GL_READ_ONLY, format = GL_R8;
     bool operator==(const ImageBinding& o) const {
       return texture == o.texture && level == o.level && layered == o.layered && layer == o.layer &&
              access == o.access && format == o.format;
     }
-  } image0;
+  };
+  std::vector<ImageBinding> imageBindings;
 
   static constexpr int kUnits = 16;
+  static constexpr int kImageUnits = 9;  // the resolve's: up to 8 attachments and its depth
   static GlStateSnapshot capture();
   void restore() const;
   bool operator==(const GlStateSnapshot& other) const;

@@ -29,11 +29,10 @@ Status validateLayout(const GBufferLayout& layout) {
   }
   const bool depthInPosition = layout.depthSource != DepthSource::DepthBuffer;
   if (depthInPosition ? positions != 1 : positions > 1)
-    return invalid(std::string("layout needs ") + (depthInPosition ? "exactly" : "at most") +
-                   " one ViewPosition attachment (has " + std::to_string(positions) + ")" +
-                   (depthInPosition && positions == 0
-                        ? "; a host without one sets depthSource = DepthSource::DepthBuffer"
-                        : ""));
+    return invalid(
+        std::string("layout needs ") + (depthInPosition ? "exactly" : "at most") +
+        " one ViewPosition attachment (has " + std::to_string(positions) + ")" +
+        (depthInPosition && positions == 0 ? "; a host without one sets depthSource = DepthSource::DepthBuffer" : ""));
   if (normals > 1) return invalid("layout has " + std::to_string(normals) + " NormalGloss attachments (at most one)");
   if (layout.depthChannel < 0 || layout.depthChannel > 3) return invalid("depthChannel must be 0..3");
   const DepthEncoding& depth = layout.depthEncoding;
@@ -46,8 +45,9 @@ Status validateLayout(const GBufferLayout& layout) {
   if (!layout.gbufferFramebuffer || !layout.depthStencilTexture)
     return invalid("layout is missing the host's G-buffer (gbufferFramebuffer, depthStencilTexture)");
   if (!layout.displayFramebuffer != !layout.displayTexture)
-    return invalid("layout names only one of displayFramebuffer and displayTexture (both, or neither without post "
-                   "methods)");
+    return invalid(
+        "layout names only one of displayFramebuffer and displayTexture (both, or neither without post "
+        "methods)");
   if (!sizedDepthFormat(layout.depthStencilTexture)) {
     GLint format = 0;
     if (glIsTexture(layout.depthStencilTexture))
@@ -272,6 +272,7 @@ struct Plugin::Impl {
       msaa.reset();
     }
     if (!(storage & kStorageSlices)) slices.reset();
+    if (resolvePass && resolvePass->computeRequested() != config.resolveCompute) resolvePass.reset();
     if (rebuildAll || !(storage & kStoragePostTarget)) postTarget.reset();
     std::vector<ActiveTechnique> kept;
     for (ActiveTechnique& active : techniques)
@@ -332,8 +333,9 @@ struct Plugin::Impl {
   }
 
   uint64_t bytesHeld() const {
-    uint64_t bytes = (msaa ? msaa->bytes() : 0) + (slices ? slices->bytes() : 0) +
-                     (postTarget ? postTarget->bytes() : 0) + (depthMirror ? depthMirror->bytes : 0);
+    uint64_t bytes = (msaa ? msaa->bytes() : 0) + (resolvePass ? resolvePass->bytes() : 0) +
+                     (slices ? slices->bytes() : 0) + (postTarget ? postTarget->bytes() : 0) +
+                     (depthMirror ? depthMirror->bytes : 0);
     for (const ActiveTechnique& active : techniques) bytes += active.technique->bytes();
     return bytes;
   }
@@ -355,7 +357,9 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   context.log = description.log;
   context.capabilities = queryCapabilities(description.disabledFeatures, description.maxSamplesLimit);
   if (!context.capabilities.stencilExport)
-    context.warn("no ARB_shader_stencil_export: slice counts reach the stencil mask in one pass per bit of the count instead of one pass");
+    context.warn(
+        "no ARB_shader_stencil_export: slice counts reach the stencil mask in one pass per bit of the count instead of "
+        "one pass");
   context.config = impl->grant(description.config);
   context.shaders = std::make_unique<ShaderLibrary>(context.objects, context.config.shaderOverrideDirectory,
                                                     [&context](const std::string& m) { context.warn(m); });

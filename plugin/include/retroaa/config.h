@@ -83,6 +83,11 @@ struct Config {
   int supersample = 0;
   // How `resolve` weights a pixel's samples. Free to change every frame.
   ResolveWeighting resolveWeighting = ResolveWeighting::Median;
+  // Run the resolve (every MSAA method's) as a compute pass: the host's attachments through image stores,
+  // its depth through a one-fetch full-screen pass (a depth buffer takes no image stores). The same
+  // G-buffer. For GPUs whose pixel shaders run on a small graphics partition (NVIDIA's H100). Where an
+  // attachment's format takes no image stores (three-channel, sRGB), the full-screen pass, with a warning.
+  bool resolveCompute = false;
   // c of Eq. 1: samples within min(d1,d2)·tan(hfov/width)·c of the reference depth count as one
   // surface. Range [0, 100]; 0 keeps only the reference sample's depth, larger merges more (and,
   // past ~20, blends across real depth steps). Free to change every frame.

@@ -15,16 +15,16 @@ using GLuintHandle = unsigned int;  // a GL object name; keeps <GL/gl.h> out of 
 using GLenumValue = unsigned int;
 
 enum class AttachmentRole : uint8_t {
-  Albedo,        // rgb albedo; averaged
+  Albedo,  // rgb albedo; averaged
   // Position with view depth in channel `depthChannel`, encoded per DepthEncoding (DepthSource::
   // PositionChannel); with another depth source, any position (world space too), averaged.
   ViewPosition,
   // The surface normal, encoded per GBufferLayout::normalEncoding (xyz, or octahedral in xy) in any one
   // space; averaged as decoded unit vectors and re-encoded; w gloss with NormalEncoding::Xyz (averaged apart).
   NormalGloss,
-  Specular,      // averaged
-  Emissive,      // averaged (the sky lives here for background pixels)
-  Other,         // averaged
+  Specular,  // averaged
+  Emissive,  // averaged (the sky lives here for background pixels)
+  Other,     // averaged
 };
 
 // How the host stores view depth in the position attachment (distance in front of the camera, m).
@@ -99,15 +99,15 @@ struct GBufferLayout {
   NormalEncoding normalEncoding = NormalEncoding::Xyz;
   GlossEncoding glossEncoding;
   DepthBufferEncoding depthBufferEncoding = DepthBufferEncoding::Perspective;
-  GLuintHandle gbufferFramebuffer = 0;                      // the host's single-sample G-buffer (attachments + depth)
-  GLuintHandle depthStencilTexture = 0;                     // any depth or depth-stencil texture format
+  GLuintHandle gbufferFramebuffer = 0;   // the host's single-sample G-buffer (attachments + depth)
+  GLuintHandle depthStencilTexture = 0;  // any depth or depth-stencil texture format
   // Instead of depthStencilTexture, a single-sample depth(-stencil) renderbuffer: the plugin mirrors it in
   // a texture of its own (+ its size), copied back after resolve() and in before post() where needed.
   GLuintHandle depthStencilRenderbuffer = 0;
   // The host's lighting rebuilds positions from depthStencilTexture: each slice then writes its samples'
   // depth there too, as it writes their attributes into the attachments. Implied by DepthSource::DepthBuffer.
   bool lightingReadsDepth = false;
-  uint8_t hostStencilBits = 0x00;                           // stencil bits the host owns; retroaa leaves them alone
+  uint8_t hostStencilBits = 0x00;  // stencil bits the host owns; retroaa leaves them alone
   // Where the host's lighting accumulates (0: the default framebuffer, the window), and its colour
   // texture: any colour format, e.g. an RGBA16F HDR target, or the host's sRGB display when it lights
   // straight into it. Slices composite into a float texture directly; without a texture (0), or with 8 bits
@@ -124,9 +124,9 @@ using LogCallback = std::function<void(LogLevel, const std::string&)>;
 // Context features the plugin uses when present. Masking one off makes the plugin behave as on a
 // context without it (for testing fallbacks, or to work around a driver bug).
 enum Feature : uint32_t {
-  kFeatureStencilExport = 1u << 0,  // ARB_shader_stencil_export: slice counts in one pass (else N passes)
-  kFeatureTimerQuery = 1u << 1,     // GL_TIME_ELAPSED: per-pass GPU times (else none reported)
-  kFeaturePipelineStatistics = 1u << 2,  // ARB_pipeline_statistics_query: per-pass fragment invocations (else 0)
+  kFeatureStencilExport = 1u << 0,       // ARB_shader_stencil_export: slice counts in one pass (else N passes)
+  kFeatureTimerQuery = 1u << 1,          // GL_TIME_ELAPSED: per-pass GPU times (else none reported)
+  kFeaturePipelineStatistics = 1u << 2,  // ARB_pipeline_statistics_query: per-pass shader invocations (else 0)
 };
 
 struct Description {
@@ -152,6 +152,7 @@ struct PassStats {
   std::string name;                  // e.g. "resolve", "fxaa"
   double ms = 0;                     // GPU time (GL_TIME_ELAPSED); 0 without timer queries
   uint64_t fragmentInvocations = 0;  // fragment-shader invocations (pipeline statistics; 0 without them)
+  uint64_t computeInvocations = 0;   // compute-shader invocations (the same)
   // The least memory traffic the pass's job needs (formats × samples × pixels read and written), where
   // it is fixed: divided by the machine's copy bandwidth, the time no implementation can beat. 0: not
   // stated (the traffic depends on the frame).
@@ -160,8 +161,8 @@ struct PassStats {
 
 struct Stats {
   Method method = Method::Off;
-  int samples = 1;                   // samples granted (after clamping)
-  uint64_t pixels = 0;               // width × height
+  int samples = 1;      // samples granted (after clamping)
+  uint64_t pixels = 0;  // width × height
   // The GPU's figures, read without waiting: they describe frame `measuredFrame`, usually a frame or
   // two behind `framesStarted` (Plugin::waitForStats() waits for the last one). 0: no frame is back
   // since the last reconfigure() or resize().
@@ -170,11 +171,11 @@ struct Stats {
   uint64_t lightingEvaluations = 0;  // pixels lit, summed over the lighting calls of the measured frame
   double evaluationsPerPixel() const { return pixels ? double(lightingEvaluations) / pixels : 0; }
   std::vector<PassStats> passes;  // plugin passes of the measured frame (measureGpuTime)
-  uint64_t bytesHeld = 0;        // GPU memory of the plugin's own targets
-  int glObjectsHeld = 0;         // live GL objects owned by the plugin, but for the statistics' queries:
+  uint64_t bytesHeld = 0;         // GPU memory of the plugin's own targets
+  int glObjectsHeld = 0;          // live GL objects owned by the plugin, but for the statistics' queries:
   int statisticsQueriesHeld = 0;  // the query ring (bounded; freed by reconfigure() and resize())
-  int slices = 1;                // lighting passes of the last frame begun
-  double budgetScale = 1.0;      // the budget controller's quality scale (1 without a budget)
+  int slices = 1;                 // lighting passes of the last frame begun
+  double budgetScale = 1.0;       // the budget controller's quality scale (1 without a budget)
 };
 
 // The host's lighting pass, rendering into `target` from the host's single-sample G-buffer.

@@ -76,14 +76,26 @@ class ResolvePass {
   // surface again. Where the slices wrote the host's depth too (writesHostDepth), the whole resolve again.
   Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
                  const SliceRenderer& slices);
+  bool computeRequested() const { return computeRequested_; }   // resolve_compute as created
+  bool computes() const { return computeProgram_.get() != 0; }  // … and the layout allowed it
+  uint64_t bytes() const { return bytes_; }
 
  private:
+  static constexpr int kTileSize = 8;  // resolve.comp's work group: 8 × 8 pixels
+  // resolve_compute: resolve.comp and what carries its depth into the host's (none where the layout's
+  // formats or the context's image units do not allow it, with a warning).
+  Status createCompute(PluginContext& context, const MsaaGBuffer& source);
   // The layout check: on the first frame, occlusion queries count the pixels without geometry and those
   // with geometry at view depth <= 0; a later frame reads them once available (never waiting) and warns,
   // naming the layout fields, when the data looks unlike the layout's description.
   void checkLayout(PluginContext& context, const MsaaGBuffer& source);
   ShaderProgram program_, restoreProgram_, layoutCheck_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
+  ShaderProgram computeProgram_, writeDepthProgram_;
+  GlTexture resolvedDepth_;    // R32F: the compute resolve's depth, for writeDepthProgram_
+  GlFramebuffer depthTarget_;  // the host's depth alone
+  bool computeRequested_ = false;
+  uint64_t bytes_ = 0;
   GlQuery noGeometryQuery_, nonPositiveQuery_;
   enum class LayoutCheck : uint8_t { ToIssue, Pending, Done } layoutCheckState_ = LayoutCheck::ToIssue;
 };

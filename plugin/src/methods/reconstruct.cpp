@@ -106,7 +106,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     program_.set("uFootprintTan", context.footprintTan(frame));
     program_.set("uTolerance", context.config.reconstructTolerance);
     if (compute_)
-      context.dispatchOverScreen(output_, outputFormat_, kTileSize);
+      context.dispatchOverScreen({{output_, outputFormat_}}, kTileSize);
     else
       context.drawFullscreen();
   }

@@ -1,4 +1,5 @@
 // `resolve`: MSAA G-buffer → host G-buffer through a depth-aware weighting (shaders/resolve/).
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -10,10 +11,10 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   auto pass = std::make_unique<ResolvePass>();
   const GBufferLayout& layout = context.layout;
   for (const bool restore : {false, true}) {
-    Result<ShaderProgram> program = context.shaders->program(
-        "common/fullscreen.vert", "resolve/resolve.frag",
-        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + source.shaderDefines(layout),
-        {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness"});
+    Result<ShaderProgram> program =
+        context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag",
+                                 (restore ? "#define RESOLVE_RESTORE 1\n" : "") + source.shaderDefines(layout),
+                                 {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness"});
     if (!program) return program.error();
     (restore ? pass->restoreProgram_ : pass->program_) = std::move(program.value());
   }
@@ -29,6 +30,7 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   glNamedFramebufferDrawBuffers(pass->hostTarget_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
   glNamedFramebufferTexture(pass->hostTarget_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
   if (Status status = checkFramebuffer(pass->hostTarget_.get(), "resolve.host_target"); !status) return status.error();
+  if (Status status = pass->createCompute(context, source); !status) return status.error();
   auto check =
       context.shaders->program("common/fullscreen.vert", "resolve/layout_check.frag",
                                source.shaderDefines(layout, false), {RETROAA_DEPTH_ENCODING_UNIFORMS, "uMode"});
@@ -41,14 +43,57 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   return pass;
 }
 
+// Why the compute resolve cannot write this layout (empty: it can).
+std::string whyNoComputeResolve(const GBufferLayout& layout) {
+  for (size_t i = 0; i < layout.attachments.size(); ++i)
+    if (!takesImageStores(layout.attachments[i].internalFormat))
+      return "attachment " + std::to_string(i) + "'s format takes no image stores";
+  GLint imageUnits = 0, computeImages = 0;
+  glGetIntegerv(GL_MAX_IMAGE_UNITS, &imageUnits);
+  glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &computeImages);
+  const int needed = int(layout.attachments.size()) + 1;
+  if (std::min(imageUnits, computeImages) < needed)
+    return "the context has " + std::to_string(std::min(imageUnits, computeImages)) + " image units for compute, " +
+           std::to_string(needed) + " needed";
+  return "";
+}
+
+Status ResolvePass::createCompute(PluginContext& context, const MsaaGBuffer& source) {
+  computeRequested_ = context.config.resolveCompute;
+  if (!computeRequested_) return Status::ok();
+  const GBufferLayout& layout = context.layout;
+  if (const std::string why = whyNoComputeResolve(layout); !why.empty()) {
+    context.warn("resolve_compute=on: " + why + "; using the full-screen pass");
+    return Status::ok();
+  }
+  auto program =
+      context.shaders->computeProgram("resolve/resolve.comp", source.shaderDefines(layout, false),
+                                      {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness"});
+  if (!program) return program.error();
+  auto writeDepth = context.shaders->program("common/fullscreen.vert", "resolve/write_depth.frag", "", {});
+  if (!writeDepth) return writeDepth.error();
+  computeProgram_ = std::move(program.value());
+  writeDepthProgram_ = std::move(writeDepth.value());
+  resolvedDepth_ = makeTexture(context, GL_R32F, layout.width, layout.height, 0, "resolve.depth", bytes_);
+  depthTarget_ = makeFramebuffer(context, "resolve.depth_target");
+  glNamedFramebufferDrawBuffer(depthTarget_.get(), GL_NONE);
+  glNamedFramebufferTexture(depthTarget_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
+  return checkFramebuffer(depthTarget_.get(), "resolve.depth_target");
+}
+
 namespace {
-void drawResolve(PluginContext& context, const ShaderProgram& program, const MsaaGBuffer& source,
-                 const FrameInfo& frame) {
+void setResolveInputs(PluginContext& context, const ShaderProgram& program, const MsaaGBuffer& source,
+                      const FrameInfo& frame) {
   source.beginPass(program, context, frame);
   program.set("uWeighting", int(context.config.resolveWeighting));
   // FreeSpace Open's footprint: tan(fov / height) with the vertical fov it passes (msaa-f.sdr).
   program.set("uFsoFootprintTan", std::tan(frame.verticalFovRadians / float(context.layout.height)));
   program.set("uCloseness", context.config.closeness);
+}
+
+void drawResolve(PluginContext& context, const ShaderProgram& program, const MsaaGBuffer& source,
+                 const FrameInfo& frame) {
+  setResolveInputs(context, program, source, frame);
   context.drawFullscreen();
 }
 }  // namespace
@@ -59,8 +104,22 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
     uint64_t written = bytesPerTexel(sizedDepthFormat(context.layout.depthStencilTexture));
     for (const Attachment& attachment : context.layout.attachments) written += bytesPerTexel(attachment.internalFormat);
     ScopedPass timed(context, "resolve", source.bytes() + written * context.pixelCount());
-    context.beginDepthWritingPass(hostTarget_.get());
-    drawResolve(context, program_, source, frame);
+    if (computes()) {
+      const GBufferLayout& layout = context.layout;
+      setResolveInputs(context, computeProgram_, source, frame);
+      std::vector<PluginContext::ImageOutput> outputs;
+      for (const Attachment& attachment : layout.attachments)
+        outputs.push_back({attachment.texture, attachment.internalFormat});
+      outputs.push_back({resolvedDepth_.get(), GL_R32F});
+      context.dispatchOverScreen(outputs, kTileSize);
+      context.beginDepthWritingPass(depthTarget_.get());
+      writeDepthProgram_.use();
+      glBindTextureUnit(0, resolvedDepth_.get());
+      context.drawFullscreen();
+    } else {
+      context.beginDepthWritingPass(hostTarget_.get());
+      drawResolve(context, program_, source, frame);
+    }
   }
   checkLayout(context, source);
   return Status::ok();

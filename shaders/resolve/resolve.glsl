@@ -1,0 +1,194 @@
+// Depth-aware MSAA resolve (Magnussen, "Intra-Model Smoothing Using Depth Aware MSAA for Deferred
+// Rendering Pipelines"), and FreeSpace Open's own resolve (msaa-f.sdr) as WEIGHTING_FSO.
+//
+// Per pixel: pick a reference sample by depth, weight every sample by how close its depth is to the
+// reference (Eq. 1: |d1 - d2| < min(d1, d2) * tan(hfov / width) * c), and write the weighted mean of
+// each host attachment into the host's single-sample G-buffer. Samples on one surface are smoothed
+// together (intra-model aliasing); samples of other surfaces never mix in, so no pixel is lit at a
+// position between two surfaces.
+//
+// WEIGHTING_FSO computes what FreeSpace Open's shader computes (docs/methods/resolve.md lists the
+// facts and the two deviations: corrupt samples are dropped, background normals stay unnormalised).
+#include "common/gbuffer.glsl"
+
+uniform int uWeighting;          // one of WEIGHTING_* (injected from the C++ enum)
+uniform float uFootprintTan;     // tan(hfov / width): Eq. 1's pixel footprint per metre
+uniform float uFsoFootprintTan;  // tan(vfov / height): FreeSpace Open's texelWidthFactor
+uniform float uCloseness;        // c of Eq. 1
+
+const float kWindowFull = 2.5;  // WEIGHTING_WINDOW: full weight within this many footprints,
+const float kWindowEnd = 5.0;   // none past this many
+
+// GLSL's smoothstep as Mesa and NVIDIA evaluate it, t = clamp((x - e0) / (e1 - e0)), for either order
+// of the edges: GLSL leaves e0 >= e1 undefined, and FreeSpace Open's second edge pair is reversed.
+float smoothRamp(float e0, float e1, float x) {
+  float t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// FreeSpace Open's weight of a sample at view z `z` around its median view z `dist` (both negative in
+// front, 0 for background). In footprints u behind the median it is S((u + 2.5) / 7.5) · S((5 - u) / 2.5):
+// 0.26 at the median itself, 0.76 at its peak 2.7 behind, 0 nearer than -2.5 or farther than 5.
+float fsoWeight(float dist, float z) {
+  if (dist >= -0.001) return z >= -0.001 ? 1.0 : 0.0;  // a background median keeps background only
+  float footprint = dist * uFsoFootprintTan;
+  return smoothRamp(dist + footprint * 5.0, dist + footprint * 2.5, z) *
+         smoothRamp(dist - footprint * 2.5, dist + footprint * 5.0, z);
+}
+
+// Every sample of every attachment is fetched once, up to 8 samples (80 vec4s at 16 would spill
+// registers, so 16 fetches again where it reads). Every array below is indexed only by loop counters
+// over constant bounds, which unroll (ranks instead of a sort): an index computed from data may put
+// the arrays in scratch memory.
+#if SAMPLES <= 8
+vec4 fetched[SAMPLES][ATTACHMENT_COUNT];
+#define SAMPLE_VALUE(a, s) fetched[s][a]
+#else
+#define SAMPLE_VALUE(a, s) FETCH(uAttachments[a], pixel, s)
+#endif
+// A sample's view distance and whether the host marked it as background, from the cached values.
+#if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
+#define SAMPLE_DISTANCE(s) distanceOfDepthBuffer(FETCH(uDepthBuffer, pixel, s).r)
+#define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r)
+#elif DEPTH_SOURCE == DEPTH_SOURCE_WORLD_POSITION
+#define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r)
+#define SAMPLE_DISTANCE(s) \
+  (SAMPLE_MARKED_BACKGROUND(s) ? 1.0 / 0.0 : distanceOfWorld(SAMPLE_VALUE(POSITION_ATTACHMENT, s).xyz))
+#else
+#define SAMPLE_DISTANCE(s) distanceOfStored(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL])
+#define SAMPLE_MARKED_BACKGROUND(s) isBackground(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL])
+#endif
+
+// The resolved values of `pixel`: one per host attachment, and the value for the host's depth buffer.
+void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float depth) {
+#if SAMPLES <= 8
+  for (int s = 0; s < SAMPLES; ++s)
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) fetched[s][a] = FETCH(uAttachments[a], pixel, s);
+#endif
+  bool fso = uWeighting == WEIGHTING_FSO;
+  float distance[SAMPLES];  // metres in front of the camera; +inf for background
+  bool usable[SAMPLES];     // false for samples holding NaN or Inf in any attachment
+  // Sorted near to far (background farthest, but nearest for FSO, whose background has view z 0):
+  // a sample's rank is its place in that order among the usable samples, ties kept in index order.
+  float sortKey[SAMPLES];
+  int usableCount = 0;
+  for (int s = 0; s < SAMPLES; ++s) {
+    uvec4 nonFinite = uvec4(0u);
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) nonFinite |= nonFiniteLanes(SAMPLE_VALUE(a, s));
+    usable[s] = all(equal(nonFinite, uvec4(0u)));
+    distance[s] = SAMPLE_DISTANCE(s);
+    sortKey[s] = fso && isinf(distance[s]) ? 0.0 : distance[s];
+    if (usable[s]) ++usableCount;
+  }
+
+  if (usableCount == 0) {  // every sample corrupt: write an empty background pixel
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
+#if DEPTH_SOURCE == DEPTH_SOURCE_POSITION_CHANNEL
+    values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = backgroundStoredDepth();
+#endif
+    depth = kDepthBufferFar;
+    return;
+  }
+
+  int referenceRank;
+  if (uWeighting == WEIGHTING_FRONT || uWeighting == WEIGHTING_MEAN)
+    referenceRank = 0;
+  else if (uWeighting == WEIGHTING_BACK)
+    referenceRank = usableCount - 1;
+  else if (fso)  // dists[1] of 4, [3] of 8, [7] of 16 in ascending view z; other counts: front first
+    referenceRank = (SAMPLES == 4 || SAMPLES == 8 || SAMPLES == 16) ? usableCount / 2 : 0;
+  else if (uWeighting == WEIGHTING_WINDOW)
+    referenceRank = usableCount - 1 - (usableCount - 1) / 2;  // the farther middle sample
+  else
+    referenceRank = (usableCount - 1) / 2;  // a real middle sample: the nearer of two for even N
+  int reference = 0;
+  for (int s = 0; s < SAMPLES; ++s) {
+    int rank = 0;
+    for (int t = 0; t < SAMPLES; ++t)
+      if (usable[t] && (sortKey[t] < sortKey[s] || (sortKey[t] == sortKey[s] && t < s))) ++rank;
+    if (usable[s] && rank == referenceRank) reference = s;
+  }
+  float dRef = 0.0;
+  for (int s = 0; s < SAMPLES; ++s)
+    if (s == reference) dRef = distance[s];
+  float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
+  bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
+
+  float weight[SAMPLES];
+  float weightSum = 0.0;
+  int contributors = 0, lastContributor = reference;
+  for (int s = 0; s < SAMPLES; ++s) {
+    float w = 0.0;
+    if (usable[s]) {
+      bool background = isinf(distance[s]);
+      if (fso) {
+        w = fsoWeight(referenceViewZ, background ? 0.0 : -distance[s]);
+      } else if (referenceIsBackground || background) {
+        w = (referenceIsBackground && background) ? 1.0 : 0.0;
+      } else if (uWeighting == WEIGHTING_MEAN) {
+        w = 1.0;
+      } else if (uWeighting == WEIGHTING_WINDOW) {
+        float footprint = dRef * uFootprintTan;
+        w = smoothRamp(dRef - kWindowEnd * footprint, dRef - kWindowFull * footprint, distance[s]) *
+            smoothRamp(dRef + kWindowEnd * footprint, dRef + kWindowFull * footprint, distance[s]);
+      } else {
+        w = abs(distance[s] - dRef) <= min(distance[s], dRef) * uFootprintTan * uCloseness ? 1.0 : 0.0;
+      }
+      if (s == reference && !fso) w = 1.0;  // ours always count the reference (c = 0 keeps only its depth)
+    }
+    weight[s] = w;
+    weightSum += w;
+    if (w > 0.0) ++contributors, lastContributor = s;
+  }
+
+  if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
+    bool markedBackground = false;
+    for (int s = 0; s < SAMPLES; ++s)
+      if (s == lastContributor) {
+        for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = SAMPLE_VALUE(a, s);
+        markedBackground = SAMPLE_MARKED_BACKGROUND(s);
+      }
+#if NORMAL_ATTACHMENT >= 0
+    values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], markedBackground);
+#endif
+    depth = FETCH(uDepthBuffer, pixel, lastContributor).r;
+    return;
+  }
+
+  float depthSum = 0.0;
+  float depthBufferMean = 0.0, depthBufferMax = 0.0;
+  vec3 normal = vec3(0.0);  // the weighted mean of the decoded normals
+  for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
+  for (int s = 0; s < SAMPLES; ++s) {
+    float w = weight[s] / weightSum;
+    if (w <= 0.0) continue;
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += w * SAMPLE_VALUE(a, s);
+#if NORMAL_ATTACHMENT >= 0
+    normal += w * decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
+#endif
+    if (!referenceIsBackground) depthSum += w * distance[s];
+    float depthBuffer = FETCH(uDepthBuffer, pixel, s).r;
+    depthBufferMean += w * depthBuffer;
+    depthBufferMax = max(depthBufferMax, depthBuffer);
+  }
+
+  // Depth is averaged in metres and re-encoded: no encoding but `linear` is linear.
+#if DEPTH_SOURCE == DEPTH_SOURCE_POSITION_CHANNEL
+  if (!referenceIsBackground) values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = encodeDepth(depthSum);
+#endif
+#if NORMAL_ATTACHMENT >= 0
+  float len = length(normal);
+  if (!(len > 1e-4)) {  // opposing or zero-length normals: fall back to the reference's, then the view
+    for (int s = 0; s < SAMPLES; ++s)
+      if (s == reference) normal = decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
+    len = length(normal);
+    if (!(len > 1e-4)) normal = vec3(0.0, 0.0, 1.0), len = 1.0;
+  }
+  // A background pixel keeps its averaged raw values (an octahedral pair averaged as stored).
+  if (!referenceIsBackground) values[NORMAL_ATTACHMENT] = encodeNormal(values[NORMAL_ATTACHMENT], normal / len);
+#endif
+  // FSO writes the weighted mean of the samples' depth-buffer values. Ours write the reference sample's
+  // (encoding-agnostic; the farthest for background), so that forward passes after lighting
+  // depth-test against the very surface that was lit.
+  depth = fso ? depthBufferMean : referenceIsBackground ? depthBufferMax : FETCH(uDepthBuffer, pixel, reference).r;
+}
