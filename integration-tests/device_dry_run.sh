@@ -12,7 +12,8 @@ for run in samples4 samples8 samples16; do
   [ -s "$work/$run.json" ] || { echo "dry run: $run.json was not written"; exit 1; }
   grep -qF -- "$work/$run.json: " <<<"$log" || { echo "dry run: no summary of $run.json"; exit 1; }
 done
-for expected in "[19] reconstruct: wall" "[19] reconstruct holds" "[22] resolve pass" "[22] edge lighting" \
+for expected in "[19] reconstruct: wall" "[19] reconstruct holds" "[22] resolve pass" \
+  "[22] resolve@resolve_compute=on pass" "[22] edge lighting" "[22] edge@resolve_compute=on lighting" \
   "[22] edge plugin_overhead_ms"; do
   grep -qF -- "$expected" <<<"$log" || { echo "dry run: no line with '$expected'"; exit 1; }
 done

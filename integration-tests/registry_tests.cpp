@@ -209,14 +209,14 @@ TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {
   const auto dir = std::filesystem::temp_directory_path() / "retroaa_contract_test";
   std::filesystem::create_directories(dir / "resolve");
   {
-    std::ifstream in(std::string(RETROAA_SOURCE_DIR) + "/shaders/resolve/resolve.frag");
+    std::ifstream in(std::string(RETROAA_SOURCE_DIR) + "/shaders/resolve/resolve.glsl");
     std::stringstream text;
     text << in.rdbuf();
     std::string source = text.str();
     const std::string declaration = "uniform float uCloseness;";
     ASSERT_NE(source.find(declaration), std::string::npos);
     source.replace(source.find(declaration), declaration.size(), "const float uCloseness = 5.0;");
-    std::ofstream(dir / "resolve" / "resolve.frag") << source;
+    std::ofstream(dir / "resolve" / "resolve.glsl") << source;
   }
   const app::DisplayImage builtIn = host.render("resolve");
   retroaa::Config config = app::parseMethodSpec("resolve", {}).config;

@@ -117,6 +117,8 @@ void checkMethod(const std::string& spec) {
   writeImageIfAsked(spec, host.renderer->readDisplay());
   EXPECT_EQ(host.hooks->lastError(), "");
   EXPECT_EQ(context().debugErrorCount(), errorsBefore) << spec << " raised GL errors";
+  for (const std::string& warning : host.hooks->plugin().warnings())  // a compute pass asked for runs here
+    EXPECT_EQ(warning.find("using the full-screen pass"), std::string::npos) << warning;
   for (float value : gbuffer) ASSERT_TRUE(std::isfinite(value)) << spec << ": the host's G-buffer holds " << value;
 
   // The background is the host's own: no relit sky, no halo.
@@ -151,7 +153,9 @@ void checkMethod(const std::string& spec) {
 SECOND_HOST_METHOD(Off, "off")
 SECOND_HOST_METHOD(Fxaa, "fxaa")
 SECOND_HOST_METHOD(Resolve, "resolve")
+SECOND_HOST_METHOD(ResolveCompute, "resolve@resolve_compute=on")
 SECOND_HOST_METHOD(Edge, "edge")
+SECOND_HOST_METHOD(EdgeResolveCompute, "edge@resolve_compute=on")
 SECOND_HOST_METHOD(PerSample, "per-sample")
 SECOND_HOST_METHOD(Adaptive, "adaptive")
 SECOND_HOST_METHOD(Aggregate, "aggregate")

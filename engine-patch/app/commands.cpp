@@ -406,6 +406,7 @@ int runSoak(const SoakOptions& options) {
     config.aggregateCount = 1 + frame % 4;
     config.fxaa = frame % 7 == 0;
     config.reconstructCompute = frame % 2 == 0;
+    config.resolveCompute = frame % 3 == 1;
     session.configure(config);
     if (frame % 50 == 49) {
       const int* size = sizes[(frame / 50) % 3];

@@ -6,7 +6,8 @@
 #   issue 19: `reconstruct` vs `off` in wall clock at 1280×720 4× (≤ 1.5×) and 16× (≤ 2×), its full-screen
 #             and its compute pass (reconstruct_compute); plugin B/px at 8× and 16× against `resolve`'s
 #   issue 22: the resolve pass against its traffic bound, edge's lighting against its ideal, edge's
-#             plugin_overhead_ms against `off`'s frame (4×)
+#             plugin_overhead_ms against `off`'s frame (4×); each also with the compute resolve
+#             (resolve_compute), whose passes do not wait on the small graphics partition
 # Environment: OUT (default out/device), WIDTH, HEIGHT, GT_SAMPLES, REPEATS, WALL_FRAMES, STEP_TIMEOUT;
 # DEVICE_SKIP_GL=1 leaves the machine's own GL loader alone and RETROAA names another binary (a dry run
 # on a machine that has both: integration-tests/device_dry_run.sh).
@@ -33,7 +34,7 @@ bench() {  # bench NAME ARGS...: one bench run into $out/NAME.json
     --json "$out/$name.json" "$@" 2>&1 | grep -v '^bench: ' | tail -20
   echo "   exit ${PIPESTATUS[0]}"
 }
-bench samples4 --samples 4 --methods off,fxaa,coverage,reconstruct,reconstruct@reconstruct_compute=on,reconstruct@reconstruct_search_radius=1,resolve,resolve+reconstruct,edge,adaptive,aggregate,per-sample
+bench samples4 --samples 4 --methods off,fxaa,coverage,reconstruct,reconstruct@reconstruct_compute=on,reconstruct@reconstruct_search_radius=1,resolve,resolve@resolve_compute=on,resolve+reconstruct,edge,edge@resolve_compute=on,adaptive,aggregate,per-sample
 bench samples8 --samples 8 --methods off,coverage,reconstruct,reconstruct@reconstruct_compute=on,resolve,edge
-bench samples16 --samples 16 --methods off,coverage,reconstruct,reconstruct@reconstruct_compute=on,resolve,edge
+bench samples16 --samples 16 --methods off,coverage,reconstruct,reconstruct@reconstruct_compute=on,resolve,resolve@resolve_compute=on,edge
 python3 tools/device/summary.py "$out/samples4.json" "$out/samples8.json" "$out/samples16.json" || true

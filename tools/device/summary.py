@@ -35,22 +35,27 @@ def summarise(path):
               f"ms: after the model pass {row['passes_ms'].get('after_model_pass', 0):.2f}, {own}; "
               f"{row['plugin_bytes_per_pixel']:.0f} B/px")
     resolve = rows.get("resolve")
-    if resolve:
-        if "reconstruct" in rows:
-            share = ratio(rows["reconstruct"]["plugin_bytes_per_pixel"], resolve["plugin_bytes_per_pixel"])
-            print(f"  [19] reconstruct holds {share:.1%} of resolve's {resolve['plugin_bytes_per_pixel']:.0f} B/px")
-        bound = resolve.get("passes_traffic_bound_ms", {}).get("plugin.resolve")
-        measured = resolve["passes_ms"].get("plugin.resolve")
-        print(f"  [22] resolve pass {measured:.3f} ms, traffic bound {bound:.3f} ms: {ratio(measured, bound):.1f}x (target <= 3x)"
-              f" at {report['copy_gb_per_s']:.0f} GB/s")
-    edge = rows.get("edge")
-    if edge:
+    if resolve and "reconstruct" in rows:
+        share = ratio(rows["reconstruct"]["plugin_bytes_per_pixel"], resolve["plugin_bytes_per_pixel"])
+        print(f"  [19] reconstruct holds {share:.1%} of resolve's {resolve['plugin_bytes_per_pixel']:.0f} B/px")
+    for name in ("resolve", "resolve@resolve_compute=on"):  # the full-screen resolve, then the compute one
+        row = rows.get(name)
+        if not row:
+            continue
+        bound = row.get("passes_traffic_bound_ms", {}).get("plugin.resolve")
+        measured = row["passes_ms"].get("plugin.resolve")
+        print(f"  [22] {name} pass {measured:.3f} ms, traffic bound {bound:.3f} ms: {ratio(measured, bound):.1f}x "
+              f"(target <= 3x) at {report['copy_gb_per_s']:.0f} GB/s")
+    for name in ("edge", "edge@resolve_compute=on"):
+        edge = rows.get(name)
+        if not edge:
+            continue
         ideal = edge["evals_per_pixel"] * off["passes_ms"]["lighting"]
         lighting = edge["passes_ms"]["lighting"]
-        print(f"  [22] edge lighting {lighting:.3f} ms against an ideal {ideal:.3f} ms "
+        print(f"  [22] {name} lighting {lighting:.3f} ms against an ideal {ideal:.3f} ms "
               f"({edge['evals_per_pixel']:.3f} evals/px x off's {off['passes_ms']['lighting']:.3f}): "
               f"{ratio(lighting, ideal):.2f}x (target <= 1.5x)")
-        print(f"  [22] edge plugin_overhead_ms {edge['plugin_overhead_ms']:.3f} = "
+        print(f"  [22] {name} plugin_overhead_ms {edge['plugin_overhead_ms']:.3f} = "
               f"{ratio(edge['plugin_overhead_ms'], off['gpu_ms']):.0%} of off's {off['gpu_ms']:.3f} ms frame (target <= 25%)")
     print("  wall vs off: " + ", ".join(f"{m} {ratio(r['wall_ms'], off['wall_ms']):.2f}" for m, r in rows.items() if m != "off"))
 
