@@ -20,6 +20,26 @@ retroaa::Config withSamples(int samples) {
   config.samples = samples;
   return config;
 }
+// `resolve` on the host G-buffer of `frame`.
+retroaa::Description resolveDescription(const SyntheticFrame& frame) {
+  retroaa::Description description;
+  description.config.method = retroaa::Method::Resolve;
+  description.layout = patch::describeHostGBuffer(frame.renderer->targets());
+  return description;
+}
+// The plugin of `description`, its w × h MSAA G-buffer filled with `sample` everywhere and resolved
+// (null, with a failure, where the description is refused).
+std::unique_ptr<retroaa::Plugin> resolveUniform(const retroaa::Description& description, int w, int h,
+                                                const SyntheticSample& sample) {
+  auto plugin = retroaa::Plugin::create(description);
+  if (!plugin) {
+    ADD_FAILURE() << plugin.error().message;
+    return nullptr;
+  }
+  fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(size_t(w) * h, {sample}));
+  EXPECT_TRUE(plugin.value()->resolve({1.0f}));
+  return std::move(plugin.value());
+}
 }  // namespace
 
 TEST(Resolve, OneSampleEqualsOffExactly) {
@@ -248,10 +268,8 @@ TEST(Plugin, AcceptsEveryCommonDepthFormatAndRefusesWhatIsNoDepth) {
   for (const Format& format : formats)
     for (const bool compute : {false, true}) {  // resolve_compute: its depth reaches the host through a copy pass
       SyntheticFrame frame(w, h);
-      retroaa::Description description;
-      description.config.method = retroaa::Method::Resolve;
+      retroaa::Description description = resolveDescription(frame);
       description.config.resolveCompute = compute;
-      description.layout = patch::describeHostGBuffer(frame.renderer->targets());
       GLuint depth = 0;
       if (format.unsizedFormat) {
         glGenTextures(1, &depth);
@@ -265,11 +283,9 @@ TEST(Plugin, AcceptsEveryCommonDepthFormatAndRefusesWhatIsNoDepth) {
       }
       description.layout.depthStencilTexture = depth;
       {
-        auto plugin = retroaa::Plugin::create(description);
-        ASSERT_TRUE(plugin) << format.name << ": " << plugin.error().message;
-        fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
-        ASSERT_TRUE(plugin.value()->resolve({1.0f}));
-        EXPECT_TRUE(plugin.value()->warnings().empty()) << plugin.value()->warnings().front();
+        const std::unique_ptr<retroaa::Plugin> plugin = resolveUniform(description, w, h, sample);
+        ASSERT_TRUE(plugin) << format.name;
+        EXPECT_TRUE(plugin->warnings().empty()) << plugin->warnings().front();
       }
       std::vector<float> values(w * h);
       glGetTextureImage(depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(values.size() * sizeof(float)), values.data());
@@ -295,10 +311,8 @@ TEST(Plugin, AComputeResolveOfAnAttachmentWithoutImageStoresFallsBackAndSaysWhic
   // warns naming the attachment and resolves through the full-screen pass, which writes it.
   constexpr int w = 8, h = 4;
   SyntheticFrame frame(w, h);
-  retroaa::Description description;
-  description.config.method = retroaa::Method::Resolve;
+  retroaa::Description description = resolveDescription(frame);
   description.config.resolveCompute = true;
-  description.layout = patch::describeHostGBuffer(frame.renderer->targets());
   GLuint specular = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &specular);
   glTextureStorage2D(specular, 1, GL_RGB16F, w, h);
@@ -307,11 +321,9 @@ TEST(Plugin, AComputeResolveOfAnAttachmentWithoutImageStoresFallsBackAndSaysWhic
   SyntheticSample sample = surfaceSample(10);
   sample.attachments[3] = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);
   {
-    auto plugin = retroaa::Plugin::create(description);
-    ASSERT_TRUE(plugin) << plugin.error().message;
-    fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
-    ASSERT_TRUE(plugin.value()->resolve({1.0f}));
-    const std::vector<std::string> warnings = plugin.value()->warnings();
+    const std::unique_ptr<retroaa::Plugin> plugin = resolveUniform(description, w, h, sample);
+    ASSERT_TRUE(plugin);
+    const std::vector<std::string> warnings = plugin->warnings();
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(warnings[0],
               "resolve_compute=on: attachment 3's format takes no image stores; using the full-screen pass");
@@ -364,20 +376,16 @@ TEST(Plugin, TakesADepthRenderbufferThroughATextureMirror) {
   GLuint renderbuffer = 0, readBack = 0;
   glCreateRenderbuffers(1, &renderbuffer);
   glNamedRenderbufferStorage(renderbuffer, GL_DEPTH24_STENCIL8, w, h);
-  retroaa::Description description;
-  description.config.method = retroaa::Method::Resolve;
-  description.layout = patch::describeHostGBuffer(frame.renderer->targets());
+  retroaa::Description description = resolveDescription(frame);
   const uint64_t bytesWithTexture = retroaa::Plugin::create(description).value()->stats().bytesHeld;
   description.layout.depthStencilTexture = 0;
   description.layout.depthStencilRenderbuffer = renderbuffer;
   {
-    auto plugin = retroaa::Plugin::create(description);
-    ASSERT_TRUE(plugin) << plugin.error().message;
-    EXPECT_EQ(plugin.value()->stats().bytesHeld, bytesWithTexture + uint64_t(w) * h * 4);
-    fillGeometry(*plugin.value(), w, h, std::vector<std::vector<SyntheticSample>>(w * h, {sample}));
-    ASSERT_TRUE(plugin.value()->resolve({1.0f}));
-    ASSERT_TRUE(plugin.value()->reconfigure(app::parseMethodSpec("fxaa", {}).config));  // post() reads it back
-    ASSERT_TRUE(plugin.value()->post());
+    const std::unique_ptr<retroaa::Plugin> plugin = resolveUniform(description, w, h, sample);
+    ASSERT_TRUE(plugin);
+    EXPECT_EQ(plugin->stats().bytesHeld, bytesWithTexture + uint64_t(w) * h * 4);
+    ASSERT_TRUE(plugin->reconfigure(app::parseMethodSpec("fxaa", {}).config));  // post() reads it back
+    ASSERT_TRUE(plugin->post());
   }
   glCreateFramebuffers(1, &readBack);
   glNamedFramebufferRenderbuffer(readBack, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffer);

@@ -5,6 +5,8 @@
 
 #include <epoxy/gl.h>
 
+#include "shared_constants.h"
+
 #include <array>
 #include <vector>
 
@@ -35,7 +37,7 @@ struct GlStateSnapshot {
   std::vector<ImageBinding> imageBindings;
 
   static constexpr int kUnits = 16;
-  static constexpr int kImageUnits = 9;  // the resolve's: up to 8 attachments and its depth
+  static constexpr int kImageUnits = kMaxAttachments + 1;  // the compute resolve's: the attachments and its depth
   static GlStateSnapshot capture();
   void restore() const;
   bool operator==(const GlStateSnapshot& other) const;

@@ -1,20 +1,26 @@
 // `resolve`: MSAA G-buffer → host G-buffer through a depth-aware weighting (shaders/resolve/).
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 #include "methods.h"
 
 namespace retroaa {
 
+namespace {
+// The uniforms resolve.glsl declares, for each of its three programs.
+constexpr std::initializer_list<const char*> kResolveUniforms = {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting",
+                                                                 "uFsoFootprintTan", "uCloseness"};
+}  // namespace
+
 Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context, const MsaaGBuffer& source) {
   auto pass = std::make_unique<ResolvePass>();
   const GBufferLayout& layout = context.layout;
   for (const bool restore : {false, true}) {
-    Result<ShaderProgram> program =
-        context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag",
-                                 (restore ? "#define RESOLVE_RESTORE 1\n" : "") + source.shaderDefines(layout),
-                                 {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness"});
+    Result<ShaderProgram> program = context.shaders->program(
+        "common/fullscreen.vert", "resolve/resolve.frag",
+        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + source.shaderDefines(layout), kResolveUniforms);
     if (!program) return program.error();
     (restore ? pass->restoreProgram_ : pass->program_) = std::move(program.value());
   }
@@ -43,6 +49,7 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   return pass;
 }
 
+namespace {
 // Why the compute resolve cannot write this layout (empty: it can).
 std::string whyNoComputeResolve(const GBufferLayout& layout) {
   for (size_t i = 0; i < layout.attachments.size(); ++i)
@@ -57,6 +64,7 @@ std::string whyNoComputeResolve(const GBufferLayout& layout) {
            std::to_string(needed) + " needed";
   return "";
 }
+}  // namespace
 
 Status ResolvePass::createCompute(PluginContext& context, const MsaaGBuffer& source) {
   computeRequested_ = context.config.resolveCompute;
@@ -67,8 +75,7 @@ Status ResolvePass::createCompute(PluginContext& context, const MsaaGBuffer& sou
     return Status::ok();
   }
   auto program =
-      context.shaders->computeProgram("resolve/resolve.comp", source.shaderDefines(layout, false),
-                                      {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness"});
+      context.shaders->computeProgram("resolve/resolve.comp", source.shaderDefines(layout, false), kResolveUniforms);
   if (!program) return program.error();
   auto writeDepth = context.shaders->program("common/fullscreen.vert", "resolve/write_depth.frag", "", {});
   if (!writeDepth) return writeDepth.error();
