@@ -2,7 +2,7 @@
 # report under out/) and `make test` (every test through CTest). Each installs what it needs first.
 BUILD ?= build
 JOBS ?= $(shell nproc)
-RETROAA = $(BUILD)/engine-patch/retroaa
+RETROAA = $(BUILD)/app/retroaa
 
 # Debian 12 packages: toolchain (python3 for tools/device/summary.py's dry run), headless GL (EGL +
 # Mesa's llvmpipe), and the chosen libraries.
@@ -13,7 +13,7 @@ APT_PACKAGES = cmake g++ make pkg-config git python3 assimp-testmodels xvfb xaut
 # clang and its sanitizer and libFuzzer runtimes, for test-sanitize and fuzz only.
 CLANG_PACKAGES = clang libclang-rt-14-dev
 
-.PHONY: check-library-only deps deps-clang build demo test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
+.PHONY: check-library-only deps deps-clang stk-deps stk stk-report test-stk build demo test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -26,6 +26,43 @@ deps:
 
 deps-clang: deps
 	@$(MAKE) --no-print-directory deps APT_PACKAGES="$(CLANG_PACKAGES)"
+
+# SuperTuxKart 1.4 with retroaa (engine-patch/supertuxkart/): its build dependencies, its game data and
+# ccache; the source is ../shared/third_party/stk-code-1.4-src.tar.xz.
+STK_PACKAGES = ccache patch libshaderc-dev libsdl2-dev libopenal-dev libcurl4-gnutls-dev libfreetype-dev \
+  libharfbuzz-dev libjpeg-dev libpng-dev libvorbis-dev libogg-dev libmbedtls-dev libxrandr-dev libxxf86vm-dev \
+  zlib1g-dev libgl-dev libglu1-mesa-dev supertuxkart-data xvfb xauth
+STK = $(BUILD)/stk/stk-build/bin/supertuxkart
+STK_DIR = engine-patch/supertuxkart
+stk-deps: deps
+	@$(MAKE) --no-print-directory deps APT_PACKAGES="$(STK_PACKAGES)"
+
+# Builds patched SuperTuxKart (first time 40-60 min on 2 cores; through ccache, minutes). Run it with
+# `--retroaa=METHOD` (docs/integration.md#supertuxkart).
+stk: build stk-deps
+	bash $(STK_DIR)/build.sh $(BUILD)
+
+# Every method in SuperTuxKart on two of its tracks at 640x480 4x against its stock render at 2560x1920
+# box-filtered: out/stk/<track>/report.md (+ .json, the images and crops).
+STK_TRACKS ?= cornfield_crossing olivermath
+STK_FRAME ?= 40
+STK_REPORT_METHODS = off stk-mlaa fxaa smaa resolve resolve/front resolve/back resolve/fso coverage reconstruct \
+  edge adaptive aggregate smaa-s2x per-sample resolve+fxaa resolve+smaa resolve+coverage resolve+reconstruct \
+  edge+smaa ssaa@supersample=2
+stk-report: stk
+	for track in $(STK_TRACKS); do \
+	  bash $(STK_DIR)/capture.sh $(STK) $$track 640x480 $(STK_FRAME) "$(STK_REPORT_METHODS)" out/stk/$$track 3 && \
+	  bash $(STK_DIR)/capture.sh $(STK) $$track 2560x1920 $(STK_FRAME) "off" out/stk/$$track/reference 1 && \
+	  $(RETROAA) score out/stk/$$track --reference out/stk/$$track/reference/off.png --factor 4 \
+	    --crop-x 300 --crop-y 200 --crop-size 64 || exit 1; done
+
+# The real-engine check (run by .ci/run, not by `make test`): one track, the core methods, small.
+STK_TEST_METHODS = off fxaa resolve reconstruct edge per-sample
+test-stk: stk
+	bash $(STK_DIR)/capture.sh $(STK) olivermath 320x240 $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk 1
+	bash $(STK_DIR)/capture.sh $(STK) olivermath 1280x960 $(STK_FRAME) "off" out/test-stk/reference 1
+	$(RETROAA) score out/test-stk --reference out/test-stk/reference/off.png --factor 4
+	python3 $(STK_DIR)/check.py out/test-stk $(STK_DIR)/patches
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo

@@ -1,6 +1,6 @@
 // `adaptive` (Holländer et al.): each metric on hand-written G-buffers, the forced case against
 // per-sample, and the evaluation budget on the demo scene.
-#include "methods/methods.h"
+#include "pipeline/pipeline.h"
 #include "test_support.h"
 
 #include <numeric>

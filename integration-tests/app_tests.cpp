@@ -1,5 +1,6 @@
 // The `retroaa` command as users meet it: exit codes, messages, written files.
 #include "commands.h"
+#include "image_io.h"
 #include "test_support.h"
 
 #include <nlohmann/json.hpp>
@@ -234,4 +235,63 @@ TEST(Cli, EdgeFiguresOfAFrameWithoutEdgesAreNotApplicable) {
     }
   }
   EXPECT_EQ(rows, 2) << r.output;
+}
+
+TEST(Cli, ScoreRatesAForeignEnginesCapturesAgainstItsSupersampledReference) {
+  // A 4x reference of a hard vertical edge at x = 8.5 pixels (of 16): black left, white right. The
+  // capture `exact` is its box filter, `jagged` snaps the edge pixel to black, `bright` lifts every
+  // pixel left of the edge by 2/255.
+  const std::string dir = temp("score");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const int w = 16, h = 12, f = 4;  // SSIM needs 11x11
+  std::vector<uint8_t> reference(size_t(w * f) * h * f * 4, 255);
+  for (int y = 0; y < h * f; ++y)
+    for (int x = 0; x < w * f; ++x)
+      for (int c = 0; c < 3; ++c) reference[(size_t(y) * w * f + x) * 4 + c] = x < 34 ? 0 : 255;
+  app::writeImage8(dir + "/reference.png", w * f, h * f, reference);
+  auto capture = [&](const std::string& name, auto value) {
+    std::vector<uint8_t> rgba(size_t(w) * h * 4, 255);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < 3; ++c) rgba[(size_t(y) * w + x) * 4 + c] = value(x);
+    app::writeImage8(dir + "/" + name + ".png", w, h, rgba);
+  };
+  // Half the edge pixel's sub-pixels are white: 0.5 in linear light is 188 in sRGB.
+  capture("exact", [](int x) { return uint8_t(x < 8 ? 0 : x == 8 ? 188 : 255); });
+  capture("jagged", [](int x) { return uint8_t(x <= 8 ? 0 : 255); });
+  capture("bright", [](int x) { return uint8_t(x < 8 ? 2 : x == 8 ? 188 : 255); });
+  std::ofstream(dir + "/capture.jsonl")
+      << R"({"spec": "off", "image": "jagged.png", "wall_ms": 10, "gl_errors": 0, "retroaa": {}})"
+      << "\n"
+      << R"({"spec": "edge", "image": "exact.png", "wall_ms": 25, "gl_errors": 0,)"
+      << R"( "retroaa": {"evaluations_per_pixel": 1.25, "plugin_bytes": 1048576, "passes": {"resolve": 1.5}}})"
+      << "\n"
+      << R"({"spec": "fxaa", "image": "bright.png", "wall_ms": 12})"
+      << "\n"
+      << R"({"spec": "broken", "error": "not selected"})"
+      << "\n";
+
+  CliRun r = runCli("score " + dir + " --reference " + dir + "/reference.png --factor 4");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("broken was not captured: not selected"), std::string::npos) << r.output;
+  nlohmann::json report;
+  std::ifstream(dir + "/report.json") >> report;
+  ASSERT_EQ(report.size(), 3u);
+  EXPECT_EQ(report[0]["spec"], "off");
+  EXPECT_EQ(report[0]["edge_pixels"], h) << "one edge pixel a row";
+  EXPECT_LT(report[0]["edge_psnr_db"].get<double>(), 10.0) << "the jagged edge pixel is half wrong";
+  EXPECT_GT(report[1]["edge_psnr_db"].get<double>(), 45.0) << "the box filter itself";
+  EXPECT_DOUBLE_EQ(report[1]["wall_vs_off"].get<double>(), 2.5);
+  EXPECT_DOUBLE_EQ(report[1]["evaluations_per_pixel"].get<double>(), 1.25);
+  // Off equals the reference away from the edge; `bright` changes the black half of those pixels.
+  EXPECT_DOUBLE_EQ(report[1]["background_kept"].get<double>(), 1.0);
+  EXPECT_NEAR(report[2]["background_kept"].get<double>(), 0.5, 0.07);
+
+  r = runCli("score " + dir + " --reference " + dir + "/reference.png --factor 2");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("jagged.png is 16x12; the reference filtered by 2 is 32x24"), std::string::npos) << r.output;
+  r = runCli("score " + temp("nowhere") + " --reference " + dir + "/reference.png");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("capture.jsonl: cannot read"), std::string::npos) << r.output;
 }

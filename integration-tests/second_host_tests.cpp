@@ -1,4 +1,4 @@
-// Every method in the second host (engine-patch/host/second_renderer.h), a deferred renderer shaped
+// Every method in the second host (engine-patch/second-host/second_renderer.h), a deferred renderer shaped
 // unlike FreeSpace Open: no position target (depth buffer, reversed-Z D32F), octahedral world normals,
 // lighting straight into an sRGB display, a forward pass after lighting. Each method must run without a
 // GL error, leave the background as the host drew it, anti-alias silhouettes at least as well as `off`

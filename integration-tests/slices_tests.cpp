@@ -122,21 +122,24 @@ TEST(Slices, WithoutStencilExportTheResultIsTheSame) {
 
 TEST(Slices, TheHostCompilesItsStockLightingShadersUnchanged) {
   // The binary that ran the patched frames embeds the host's shader files byte for byte as they are in
-  // engine-patch/host/shaders, and neither the patch nor the plugin carries a lighting shader.
+  // engine-patch/common/shaders, and neither the patch nor the plugin carries a lighting shader.
   const std::string root = std::string(RETROAA_SOURCE_DIR);
   const auto& embedded = host::embeddedFiles();
   for (const char* file : {"light_ambient_directional.frag", "light_point.frag", "lighting_common.glsl",
                            "emissive.frag", "model.frag", "model.vert"}) {
     const auto found = embedded.find(std::string("shaders/") + file);
     ASSERT_NE(found, embedded.end()) << file;
-    EXPECT_EQ(found->second, readFile(root + "/engine-patch/host/shaders/" + file)) << file;
+    EXPECT_EQ(found->second, readFile(root + "/engine-patch/common/shaders/" + file)) << file;
   }
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root + "/shaders")) {
     if (!entry.is_regular_file()) continue;
     EXPECT_EQ(readFile(entry.path().string()).find("lighting_common"), std::string::npos) << entry.path();
   }
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(root + "/engine-patch/patch"))
-    EXPECT_NE(entry.path().extension(), ".frag") << entry.path();
+  // The engines' folders hold their C++ and their patch; every shader they compile is in common/shaders.
+  for (const char* engine : {"/engine-patch/fso-host", "/engine-patch/second-host"})
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root + engine))
+      for (const char* shader : {".frag", ".vert", ".glsl", ".comp"})
+        EXPECT_NE(entry.path().extension(), shader) << entry.path();
 }
 
 TEST(Slices, TheHostsGBufferHoldsTheResolvedSurfaceAfterShade) {

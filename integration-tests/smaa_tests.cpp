@@ -8,7 +8,7 @@
 #include <array>
 #include <cmath>
 
-#include "methods/methods.h"
+#include "pipeline/pipeline.h"
 
 using namespace testing_support;
 

@@ -1,6 +1,6 @@
 // The supersampled G-buffer (`supersample` = m) of Holländer et al.: the Bayer orders, `adaptive` on it
 // against `ssaa` (the paper's ordered-grid reference), and `ssaa` against the ground truth.
-#include "methods/methods.h"
+#include "pipeline/pipeline.h"
 #include "test_support.h"
 
 #include <cmath>

@@ -45,7 +45,7 @@ echo "== the library alone: -DRETROAA_BUILD_TOOLS=OFF with the tools' packages h
 cmake -S "$source" -B "$work/library-only" -DRETROAA_BUILD_TOOLS=OFF -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON \
   -DCMAKE_DISABLE_FIND_PACKAGE_glm=ON -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON \
   -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON -DCMAKE_DISABLE_FIND_PACKAGE_glfw3=ON >/dev/null
-[ -f "$work/library-only/plugin/Makefile" ] && [ ! -d "$work/library-only/engine-patch" ] || { echo "library-only: unexpected tree"; exit 1; }
+[ -f "$work/library-only/plugin/Makefile" ] && [ ! -d "$work/library-only/engine-patch" ] && [ ! -d "$work/library-only/app" ] || { echo "library-only: unexpected tree"; exit 1; }
 echo "library-only: configured (plugin only)"
 echo "== a shared library (BUILD_SHARED_LIBS=ON): the public API exported, nothing else of retroaa's"
 cmake -S "$source" -B "$work/shared" -DRETROAA_BUILD_TOOLS=OFF -DBUILD_SHARED_LIBS=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -56,7 +56,7 @@ echo "exported:" $exported
 for public in retroaa::Plugin::create retroaa::Plugin::shade retroaa::applySetting retroaa::validateConfig retroaa::version; do
   grep -qx " $public" <<<"$exported" || { echo "shared: $public is not exported"; exit 1; }
 done
-internal=$(grep -Ev '^ retroaa::(Plugin::|applyConfigFile|applyConfigText|applyFsoFlag|applySetting|applySettingsList|configKeys|findMethod|methodTable|readSetting|settingValues|toConfigText|toString|usesMsaa|validateConfig|version)' <<<"$exported" || true)
+internal=$(grep -Ev '^ retroaa::(Plugin::|applyConfigFile|applyConfigText|applyFsoFlag|applyMethodSpec|applySetting|applySettingsList|configKeys|findMethod|methodTable|readSetting|settingValues|toConfigText|toString|usesMsaa|validateConfig|version)' <<<"$exported" || true)
 [ -z "$internal" ] || { echo "shared: internal symbols exported:" $internal; exit 1; }
 cmake -S "$consumer" -B "$work/shared-consumer" -DCONSUME=package -DCMAKE_PREFIX_PATH="$work/shared-prefix" >/dev/null
 cmake --build "$work/shared-consumer" >/dev/null

@@ -569,4 +569,42 @@ std::string toConfigText(const Config& config) {
   return out;
 }
 
+Status applyMethodSpec(Config& config, const std::string& spec) {
+  auto bad = [&spec](const std::string& why) {
+    return Error{ErrorCode::InvalidConfig, "method '" + spec + "': " + why};
+  };
+  std::string rest = spec;
+  // Settings after '@' apply to this spec only: adaptive@adaptive_shading_scale=4@adaptive_depth_scale=1
+  for (size_t at = rest.rfind('@'); at != std::string::npos; at = rest.rfind('@')) {
+    const std::string setting = rest.substr(at + 1);
+    const size_t equals = setting.find('=');
+    if (equals == std::string::npos) return bad("expected key=value after '@', got '" + setting + "'");
+    if (Status status = applySetting(config, setting.substr(0, equals), setting.substr(equals + 1)); !status)
+      return bad(status.error().message);
+    rest = rest.substr(0, at);
+  }
+  // Stacked post filters (`+NAME`, in any order): the registry rows with a stack key.
+  for (size_t plus = rest.rfind('+'); plus != std::string::npos; plus = rest.rfind('+')) {
+    const std::string stacked = rest.substr(plus + 1);
+    std::string stackable;
+    const MethodInfo* found = nullptr;
+    for (const MethodInfo& row : methodTable()) {
+      if (!*row.stackKey) continue;
+      stackable += std::string(stackable.empty() ? "" : ", ") + "'+" + row.name + "'";
+      if (stacked == row.name) found = &row;
+    }
+    if (!found) return bad("only " + stackable + " can be stacked");
+    if (Status status = applySetting(config, found->stackKey, "on"); !status) return bad(status.error().message);
+    rest = rest.substr(0, plus);
+  }
+  const size_t slash = rest.find('/');
+  if (slash != std::string::npos) {
+    if (Status status = applySetting(config, "resolve_weighting", rest.substr(slash + 1)); !status)
+      return bad(status.error().message);
+    rest = rest.substr(0, slash);
+  }
+  if (Status status = applySetting(config, "method", rest); !status) return bad(status.error().message);
+  return Status::ok();
+}
+
 }  // namespace retroaa

@@ -48,6 +48,22 @@ Status validateLayout(const GBufferLayout& layout) {
     return invalid(
         "layout names only one of displayFramebuffer and displayTexture (both, or neither without post "
         "methods)");
+  if (!layout.extraLightTextures.empty()) {
+    // The slices composite into each light output directly, with blending: every one must hold floats.
+    auto holdsFloats = [](GLuint texture) {
+      GLint redType = 0;
+      if (glIsTexture(texture)) glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_RED_TYPE, &redType);
+      return redType == GL_FLOAT;
+    };
+    if (!holdsFloats(layout.lightTexture))
+      return invalid("extraLightTextures needs a lightTexture that holds floats (lightTexture " +
+                     std::to_string(layout.lightTexture) + " does not)");
+    for (size_t k = 0; k < layout.extraLightTextures.size(); ++k)
+      if (!holdsFloats(layout.extraLightTextures[k]))
+        return invalid("extraLightTextures[" + std::to_string(k) + "] (" +
+                       std::to_string(layout.extraLightTextures[k]) +
+                       ") is not a texture that holds floats (e.g. GL_R11F_G11F_B10F, GL_RGBA16F)");
+  }
   if (!sizedDepthFormat(layout.depthStencilTexture)) {
     GLint format = 0;
     if (glIsTexture(layout.depthStencilTexture))

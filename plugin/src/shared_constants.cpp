@@ -38,6 +38,7 @@ const std::string& sharedConstantDefines() {
     d += defineLine("DEPTH_SOURCE_WORLD_POSITION", int(DepthSource::WorldPosition));
     d += defineLine("NORMAL_XYZ", int(NormalEncoding::Xyz));
     d += defineLine("NORMAL_OCTAHEDRAL", int(NormalEncoding::Octahedral));
+    d += defineLine("NORMAL_SPHEREMAP", int(NormalEncoding::Spheremap));
     return d;
   }();
   return defines;

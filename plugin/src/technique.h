@@ -4,7 +4,7 @@
 // the active rows ask for, and calls every active technique at the points below.
 #pragma once
 
-#include "methods/methods.h"
+#include "pipeline/pipeline.h"
 
 #include <memory>
 #include <string>

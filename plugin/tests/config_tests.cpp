@@ -238,3 +238,36 @@ TEST(Config, MessagesQuoteUserInputShortAndEscaped) {
     EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "raw byte " << int(c) << " in the message";
   EXPECT_NE(status.error().message.find("'\\x01\\x02\\x1b[31m\\xff'"), std::string::npos) << status.error().message;
 }
+
+TEST(Config, AMethodSpecSetsTheMethodWeightingStackedFiltersAndSettings) {
+  Config config;
+  ASSERT_TRUE(applyMethodSpec(config, "resolve/fso+fxaa+coverage@samples=8@closeness=3"));
+  EXPECT_EQ(config.method, Method::Resolve);
+  EXPECT_EQ(config.resolveWeighting, ResolveWeighting::Fso);
+  EXPECT_TRUE(config.fxaa);
+  EXPECT_TRUE(config.coverageFilter);
+  EXPECT_EQ(config.samples, 8);
+  EXPECT_FLOAT_EQ(config.closeness, 3.0f);
+  Config plain;
+  ASSERT_TRUE(applyMethodSpec(plain, "edge"));
+  EXPECT_EQ(plain.method, Method::Edge);
+  EXPECT_FALSE(plain.fxaa);
+}
+
+TEST(Config, ABadMethodSpecNamesTheSpecAndItsBadPart) {
+  struct Case {
+    const char* spec;
+    const char* named;
+  };
+  for (const Case& c :
+       {Case{"resolve+nope", "can be stacked"}, Case{"edge@samples", "expected key=value"},
+        Case{"edge@samples=3", "samples"}, Case{"resolve/sideways", "sideways"}, Case{"blurry", "blurry"}}) {
+    Config config;
+    const Status status = applyMethodSpec(config, c.spec);
+    ASSERT_FALSE(status) << c.spec;
+    EXPECT_EQ(status.error().code, ErrorCode::InvalidConfig) << c.spec;
+    EXPECT_NE(status.error().message.find(std::string("method '") + c.spec + "'"), std::string::npos)
+        << status.error().message;
+    EXPECT_NE(status.error().message.find(c.named), std::string::npos) << status.error().message;
+  }
+}

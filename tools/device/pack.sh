@@ -11,7 +11,7 @@ build=${BUILD_DEVICE:-build-device}
 cmake -S . -B "$build" -DRETROAA_WITH_OPENIMAGEIO=OFF -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"$(nproc)" --target retroaa_cli
 rm -rf .device && mkdir -p .device/bin .device/lib .device/gl
-cp "$build/engine-patch/retroaa" .device/bin/
+cp "$build/app/retroaa" .device/bin/
 # Libraries a CUDA image lacks; glibc, libstdc++, libgcc and zlib come from the machine itself.
 ldd .device/bin/retroaa | awk '/=> \//{print $1, $3}' | while read -r soname path; do
   case "$soname" in

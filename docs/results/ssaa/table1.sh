@@ -4,7 +4,7 @@
 # Writes one bench JSON per scene and settings here and prints one Markdown row per m; the PSNR and MSE
 # are over RGB of the two 8-bit images (idiff), wall times from the bench's own back-to-back frames.
 set -eu
-retroaa=build/engine-patch/retroaa
+retroaa=build/app/retroaa
 out=${1:-out/table1}
 here=$(dirname "$0")
 quality="@adaptive_shading_scale=4@adaptive_threshold_min=0.004@adaptive_threshold_edge=0.02@adaptive_depth_scale=4@adaptive_normal_scale=8"

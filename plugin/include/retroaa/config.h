@@ -159,8 +159,8 @@ struct Config {
   // A folder whose files replace the built-in shaders of the same relative path (for modders);
   // a file that does not compile falls back to the built-in one with a warning naming file and line.
   std::string shaderOverrideDirectory;
-  // Wrap every plugin pass in a GL_TIME_ELAPSED query and read it back at once (waits for the GPU:
-  // for benchmarks and the viewer overlay).
+  // Wrap every plugin pass in timer and pipeline-statistics queries, read back frames later without
+  // waiting (Plugin::stats(); Plugin::waitForStats() waits): for benchmarks and the viewer overlay.
   bool measureGpuTime = false;
 };
 
@@ -223,6 +223,12 @@ RETROAA_API Status applySettingsList(Config& config, const std::string& list, co
 // SMAA low unless a preset chose a filter). `warnings` receives what was adjusted.
 RETROAA_API Status applyFsoFlag(Config& config, const std::string& flag, const std::string& value,
                                 std::vector<std::string>& warnings);
+// A method as reports, the command line and engines' own options name it:
+// `method[/weighting][+stacked]...[@key=value]...`, e.g. `off`, `resolve/fso`, `resolve+fxaa`,
+// `adaptive@adaptive_shading_scale=4`: applies the method, the resolve weighting, each stacked post
+// filter (the registry's rows with a stack key) and each setting to `config`. Errors are InvalidConfig
+// naming the spec and the bad part; `config` may then hold the parts applied before it.
+RETROAA_API Status applyMethodSpec(Config& config, const std::string& spec);
 // Checks every field of a config built in code with the rules the text parser applies to the same key
 // (ranges, allowed values, known enum values). Errors are InvalidConfig naming the key and value.
 // Plugin::create and reconfigure call it.

@@ -7,7 +7,8 @@
 //   resolve(frame)          ──► MSAA → host's single-sample G-buffer (or slices)
 //   shade(lighting)         ──► host lighting pass (unchanged shaders), once per slice
 //   host tonemap
-//   post()                  ──► FXAA on the host's display target
+//   post()                  ──► the post filters on the host's display target (the method's own, e.g.
+//                               fxaa, smaa, coverage, reconstruct, then the stacked +filters)
 //
 // Rules: a current GL 4.5 core context on the calling thread; every call restores the GL state it
 // changed (bindings, viewport, blend, depth, stencil, program, ...), so a host with a GL state cache
@@ -37,7 +38,8 @@ class RETROAA_API Plugin {
   // Features the context lacks make the plugin fall back, with a warning that says which and why:
   // no multisampling (GL_MAX_SAMPLES < 2) → every multi-sample method becomes `fxaa`; no stencil export →
   // slice counts in ⌈log2(N+1)⌉ bit passes; no timer queries → no pass times; no pipeline statistics →
-  // no invocation counts. Compute shaders are not used.
+  // no invocation counts. Compute shaders run only where asked for (resolve_compute, reconstruct_compute;
+  // without image stores for a target, the full-screen pass, with a warning).
   static Result<std::unique_ptr<Plugin>> create(const Description& description);
   ~Plugin();
   Plugin(const Plugin&) = delete;
@@ -67,7 +69,9 @@ class RETROAA_API Plugin {
   // light framebuffer. Errors: WrongCallOrder when a method with an MSAA G-buffer is shaded without
   // resolve() since the previous shade() (the host's G-buffer would hold nothing of this frame).
   Status shade(const LightingFunction& lighting);
-  // After the host's tonemap, on the display target: the coverage filter, then FXAA (as configured).
+  // After the host's tonemap, on the display target: each running technique's post pass in the
+  // registry's order (src/registry.cpp), FXAA last.
+  // Nothing when the method has no post pass.
   Status post();
 
   // Diagnostics: the per-pixel lighting evaluation count of the last frame (slice count; 1 for

@@ -10,12 +10,12 @@ namespace retroaa {
 
 enum class ErrorCode {
   Ok = 0,
-  InvalidConfig,       // a config key or value is unknown or out of range (message names it)
-  InvalidLayout,       // the GBufferLayout is inconsistent (missing role, bad format, zero size)
-  UnsupportedContext,  // the GL context lacks something retroaa needs and no fallback exists
+  InvalidConfig,          // a config key or value is unknown or out of range (message names it)
+  InvalidLayout,          // the GBufferLayout is inconsistent (missing role, bad format, zero size)
+  UnsupportedContext,     // the GL context lacks something retroaa needs and no fallback exists
   IncompleteFramebuffer,  // a framebuffer retroaa built is incomplete (message has the status)
-  ShaderError,         // a built-in shader failed to compile (overrides fall back instead)
-  WrongCallOrder,      // e.g. shade() before resolve() in a frame
+  ShaderError,            // a built-in shader failed to compile (overrides fall back instead)
+  WrongCallOrder,         // e.g. shade() before resolve() in a frame
 };
 
 struct Error {

@@ -81,6 +81,9 @@ enum class DepthSource : uint8_t {
 enum class NormalEncoding : uint8_t {
   Xyz,         // xyz as a vector (normalised or not); w gloss
   Octahedral,  // xy octahedral (Cigolle et al. 2014) in [-1, 1]; zw left to the host, averaged
+  // xy Crytek's spheremap (Mittring, "A bit more deferred", 2009: normalize(n.xy)·sqrt(n.z/2 + 1/2)),
+  // stored ×½ + ½ in [0, 1] as SuperTuxKart's unorm RGBA8 target holds it; zw left to the host, averaged
+  Spheremap,
 };
 
 struct Attachment {
@@ -113,8 +116,12 @@ struct GBufferLayout {
   // straight into it. Slices composite into a float texture directly; without a texture (0), or with 8 bits
   // per channel, they sum in a half-float target of the plugin's and draw it into lightFramebuffer once.
   GLuintHandle lightFramebuffer = 0, lightTexture = 0;
+  // lightFramebuffer's further colour attachments, draw buffers 1, 2, … in order, for a host whose
+  // lighting writes several outputs (SuperTuxKart: diffuse at 0, specular at 1). Each is lit and
+  // composited as lightTexture is; each must hold floats (e.g. R11F_G11F_B10F), and lightTexture too.
+  std::vector<GLuintHandle> extraLightTextures;
   // The tonemapped display that post() filters (RGBA8 or GL_SRGB8_ALPHA8); needed only by the post
-  // methods (fxaa, smaa, coverage): 0 elsewhere.
+  // methods (fxaa, smaa, coverage, reconstruct, and any stacked +filter): 0 elsewhere.
   GLuintHandle displayFramebuffer = 0, displayTexture = 0;
 };
 

@@ -1,5 +1,5 @@
 // The seams of the host's frame where an AA module may step in. The stock implementation is the
-// host's own single-sample path; engine-patch/patch/ provides the one that calls retroaa.
+// host's own single-sample path; retroaa_hooks.cpp beside it provides the one that calls retroaa.
 // Each hook names the FreeSpace Open function it corresponds to (docs/integration.md).
 #pragma once
 

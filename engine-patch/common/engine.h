@@ -1,7 +1,7 @@
 // What the tools need of a host engine, whichever host it is: render a frame, read what it displays
 // and the linear radiance behind it. renderer.h is the FreeSpace Open-shaped host, second_renderer.h
 // a deferred renderer shaped unlike it; each has its own seams for an AA module (frame_hooks.h,
-// SecondSeams) and its own patch in engine-patch/patch/.
+// SecondSeams) and its patch beside it (engine-patch/fso-host/, engine-patch/second-host/).
 #pragma once
 
 #include "material_textures.h"

@@ -1,4 +1,4 @@
-#include "methods.h"
+#include "pipeline.h"
 
 #include "../shared_constants.h"
 

@@ -3,7 +3,7 @@
 
 #include "../gl_state.h"
 #include "../shared_constants.h"
-#include "methods.h"
+#include "pipeline.h"
 
 namespace retroaa {
 
@@ -32,6 +32,21 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
   slices->lightTarget_ = makeFramebuffer(context, "slices.light");
   glNamedFramebufferTexture(slices->lightTarget_.get(), GL_COLOR_ATTACHMENT0, slices->light_.get(), 0);
   glNamedFramebufferTexture(slices->lightTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
+  if (!layout.extraLightTextures.empty()) {
+    std::vector<GLenum> lightBuffers{GL_COLOR_ATTACHMENT0};
+    for (size_t k = 0; k < layout.extraLightTextures.size(); ++k) {
+      const std::string label = "slices.extra_light" + std::to_string(k + 1);
+      slices->extraLight_.push_back(makeTexture(context, GL_RGBA16F, w, h, 0, label.c_str(), slices->bytes_));
+      lightBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT1 + k));
+      glNamedFramebufferTexture(slices->lightTarget_.get(), lightBuffers.back(), slices->extraLight_.back().get(), 0);
+      GlFramebuffer composite = makeFramebuffer(context, label.c_str());
+      glNamedFramebufferTexture(composite.get(), GL_COLOR_ATTACHMENT0, layout.extraLightTextures[k], 0);
+      glNamedFramebufferTexture(composite.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
+      if (Status status = checkFramebuffer(composite.get(), label.c_str()); !status) return status.error();
+      slices->extraCompositeTarget_.push_back(std::move(composite));
+    }
+    glNamedFramebufferDrawBuffers(slices->lightTarget_.get(), GLsizei(lightBuffers.size()), lightBuffers.data());
+  }
   // Slices composite into the host's light texture where it holds floats; into a half-float sum of the
   // plugin's otherwise, or where the host names no light texture (it lights into a framebuffer, the
   // window's included), written into the host's light target once all slices are in (presentLight).
@@ -79,10 +94,10 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
 
   for (const bool depth : {false, true}) {
     if (depth && !slices->writesHostDepth()) continue;
-    auto writeSlice = context.shaders->program(
-        "common/fullscreen.vert", "slices/write_slice.frag",
-        depth ? depthWriteDefines(source, layout) : source.shaderDefines(layout),
-        {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSample"});
+    auto writeSlice =
+        context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag",
+                                 depth ? depthWriteDefines(source, layout) : source.shaderDefines(layout),
+                                 {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSample"});
     if (!writeSlice) return writeSlice.error();
     (depth ? slices->writeSliceDepth_ : slices->writeSlice_) = std::move(writeSlice.value());
   }
@@ -203,13 +218,12 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     {
       ScopedPass timed(context, "slices.composite");
       context.beginFullscreenPass(compositeTarget_.get());
-      sliceStencil(slice);  // slice 0 overwrites the whole target, later slices add
+      sliceStencil(slice);            // slice 0 overwrites the whole target, later slices add
       glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB light target (a display lit directly) adds in linear light
       if (slice > 0) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
       }
-      glBindTextureUnit(0, sliceLight);
       glBindTextureUnit(1, counts_.get());
       if (plan.compositeProgram) {
         plan.compositeProgram->use();
@@ -218,7 +232,32 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       } else {
         composite_.use();
       }
+      glBindTextureUnit(0, sliceLight);
       context.drawFullscreen();
+      // The host's further light outputs, each through the same weights.
+      for (size_t k = 0; k < extraLight_.size(); ++k) {
+        GLuint extraLight = extraLight_[k].get();
+        if (plan.filterSliceLight) {
+          auto filtered = plan.filterSliceLight(slice, extraLight);
+          if (!filtered) return filtered.error();
+          extraLight = filtered.value();
+          if (plan.compositeProgram)
+            plan.compositeProgram->use();
+          else
+            composite_.use();
+          if (plan.bindCompositeInputs) plan.bindCompositeInputs();
+          glBindTextureUnit(1, counts_.get());
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, extraCompositeTarget_[k].get());
+        sliceStencil(slice);
+        glEnable(GL_FRAMEBUFFER_SRGB);
+        if (slice > 0) {
+          glEnable(GL_BLEND);
+          glBlendFunc(GL_ONE, GL_ONE);
+        }
+        glBindTextureUnit(0, extraLight);
+        context.drawFullscreen();
+      }
     }
     if (skippable) glEndConditionalRender();
   }
@@ -226,7 +265,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     ScopedPass timed(context, "slices.present");
     glBindFramebuffer(GL_FRAMEBUFFER, presentTarget_.get() ? presentTarget_.get() : layout.lightFramebuffer);
     context.beginFullscreenPass(0);  // 0: the binding above (the host's may be the default framebuffer)
-    glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB target encodes the linear sum
+    glEnable(GL_FRAMEBUFFER_SRGB);   // an sRGB target encodes the linear sum
     presentLight_.use();
     glBindTextureUnit(0, accumulation_.get());
     context.drawFullscreen();

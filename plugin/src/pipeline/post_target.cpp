@@ -1,5 +1,5 @@
 // The post passes' render target: they read the host's display texture and write a copy of it.
-#include "methods.h"
+#include "pipeline.h"
 
 namespace retroaa {
 

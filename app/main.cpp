@@ -2,6 +2,7 @@
 // failed, 2 bad usage or input (with a message naming what was wrong).
 #include "commands.h"
 #include "regress.h"
+#include "score.h"
 #include "tune.h"
 #ifdef RETROAA_HAS_VIEWER
 #include "viewer.h"
@@ -204,7 +205,8 @@ void addTune(CommandLine& line) {
   CLI::App* sub =
       line.cli.add_subcommand("tune", "the cheapest settings that meet quality targets on every frame of your scenes");
   sub->add_option("--scenes", *scenes, "comma-separated scene files (default: default)");
-  sub->add_option("--target", *targets, "psnr_db=X, edge_psnr_db=X, interior_psnr_db=X or ssim=X (repeatable)")->required();
+  sub->add_option("--target", *targets, "psnr_db=X, edge_psnr_db=X, interior_psnr_db=X or ssim=X (repeatable)")
+      ->required();
   sub->add_option("--cost", options->cost, "evals_per_pixel | gpu_ms | plugin_bytes_per_pixel");
   sub->add_option("--candidates", options->candidates,
                   "comma-separated method specs (default: 'grid', the registry's)");
@@ -234,12 +236,29 @@ void addConfig(CommandLine& line) {
                            }});
 }
 
+void addScore(CommandLine& line) {
+  auto options = std::make_shared<app::ScoreOptions>();
+  CLI::App* sub = line.cli.add_subcommand(
+      "score", "a foreign engine's captured frames (one per method) against its supersampled reference render");
+  sub->add_option("captures", options->captureDir, "folder with capture.jsonl and the captured PNGs")->required();
+  sub->add_option("--reference", options->reference, "the same frame rendered at --factor× width and height")
+      ->required();
+  sub->add_option("--factor", options->factor, "the reference's scale, box-filtered down in linear light")
+      ->default_val(4);
+  sub->add_option("--out", options->out, "folder for report.md, report.json and crops (default: the captures')");
+  sub->add_option("--crop-x", options->cropX, "crop x (capture pixels, from the left)");
+  sub->add_option("--crop-y", options->cropY, "crop y (from the top)");
+  sub->add_option("--crop-size", options->cropSize, "crop size; 0 writes no crops")->default_val(0);
+  line.commands.push_back({sub, [options](const retroaa::Config&) { return app::score(*options); }});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CommandLine line;
   line.cli.require_subcommand(1);
-  for (auto add : {addRender, addBench, addRecord, addRegress, addSoak, addView, addTune, addConfig}) add(line);
+  for (auto add : {addRender, addBench, addRecord, addRegress, addSoak, addView, addTune, addConfig, addScore})
+    add(line);
   try {
     line.cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

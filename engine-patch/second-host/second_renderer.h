@@ -5,7 +5,7 @@
 // (glClipControl zero-to-one, cleared to 0, GL_GREATER), background marked by far depth only, lighting
 // as one full-screen pass plus additive light volumes straight into its sRGB display (radiance clamped,
 // no tonemap), then a forward pass: emissive objects drawn after lighting, depth-tested against the
-// scene. It knows nothing of retroaa; engine-patch/patch/second_host_patch.cpp is the only code that does.
+// scene. It knows nothing of retroaa; second_host_patch.cpp beside it is the only code that does.
 #pragma once
 
 #include "engine.h"

@@ -63,40 +63,8 @@ std::vector<uint8_t> visualiseCounts(const std::string& view, const std::vector<
 
 MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base) {
   MethodSpec out{spec, base};
-  std::string rest = spec;
-  // Settings after '@' apply to this row only: adaptive@adaptive_shading_scale=4@adaptive_depth_scale=1
-  for (size_t at = rest.rfind('@'); at != std::string::npos; at = rest.rfind('@')) {
-    const std::string setting = rest.substr(at + 1);
-    const size_t equals = setting.find('=');
-    if (equals == std::string::npos)
-      throw std::invalid_argument("method '" + spec + "': expected key=value after '@', got '" + setting + "'");
-    const retroaa::Status status =
-        retroaa::applySetting(out.config, setting.substr(0, equals), setting.substr(equals + 1));
-    if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
-    rest = rest.substr(0, at);
-  }
-  // Stacked post filters (`+NAME`, in any order): the registry rows with a stack key.
-  for (size_t plus = rest.rfind('+'); plus != std::string::npos; plus = rest.rfind('+')) {
-    const std::string stacked = rest.substr(plus + 1);
-    std::string stackable;
-    const retroaa::MethodInfo* found = nullptr;
-    for (const retroaa::MethodInfo& row : retroaa::methodTable()) {
-      if (!*row.stackKey) continue;
-      stackable += std::string(stackable.empty() ? "" : ", ") + "'+" + row.name + "'";
-      if (stacked == row.name) found = &row;
-    }
-    if (!found) throw std::invalid_argument("method '" + spec + "': only " + stackable + " can be stacked");
-    if (!retroaa::applySetting(out.config, found->stackKey, "on")) throw std::logic_error("bad stack key");
-    rest = rest.substr(0, plus);
-  }
-  const size_t slash = rest.find('/');
-  if (slash != std::string::npos) {
-    const retroaa::Status status = retroaa::applySetting(out.config, "resolve_weighting", rest.substr(slash + 1));
-    if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
-    rest = rest.substr(0, slash);
-  }
-  const retroaa::Status status = retroaa::applySetting(out.config, "method", rest);
-  if (!status) throw std::invalid_argument("method '" + spec + "': " + status.error().message);
+  if (const retroaa::Status status = retroaa::applyMethodSpec(out.config, spec); !status)
+    throw std::invalid_argument(status.error().message);
   return out;
 }
 

@@ -159,6 +159,10 @@ class SliceRenderer {
  private:
   GlTexture light_, mask_, counts_;
   GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
+  // The layout's extraLightTextures: each slice's light for them (lightTarget_'s attachments 1, 2, …)
+  // and a composite target onto each host texture.
+  std::vector<GlTexture> extraLight_;
+  std::vector<GlFramebuffer> extraCompositeTarget_;
   GlFramebuffer depthWriter_;  // the host's depth texture alone (DepthSource::DepthBuffer), else none
   // Where the host's light texture has 8 bits per channel, or there is none: the slices' half-float sum
   // and its copy into the host's light target.

@@ -4,7 +4,7 @@
 #include <initializer_list>
 #include <string>
 
-#include "methods.h"
+#include "pipeline.h"
 
 namespace retroaa {
 

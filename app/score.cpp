@@ -1,0 +1,187 @@
+#include "score.h"
+
+#include "commands.h"
+#include "image_io.h"
+#include "metrics.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace app {
+
+namespace {
+
+float toLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
+float toDisplay(float v) { return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f; }
+
+DisplayImage readDisplay(const std::string& path) {
+  DisplayImage image;
+  image.rgb = readImageRgb(path, image.width, image.height);
+  return image;
+}
+
+// The reference box-filtered in linear light to the capture's size, and the spread of each block's
+// display luma (its edge mask, as the in-repo ground truth's).
+DisplayImage downsample(const DisplayImage& big, int factor, std::vector<float>& lumaSpread) {
+  DisplayImage small;
+  small.width = big.width / factor;
+  small.height = big.height / factor;
+  small.rgb.assign(size_t(small.width) * small.height * 3, 0.0f);
+  lumaSpread.assign(size_t(small.width) * small.height, 0.0f);
+  const float n = float(factor * factor);
+  for (int y = 0; y < small.height; ++y)
+    for (int x = 0; x < small.width; ++x) {
+      double sum[3] = {0, 0, 0}, luma = 0, lumaSquared = 0;
+      for (int j = 0; j < factor; ++j)
+        for (int i = 0; i < factor; ++i) {
+          const int bx = x * factor + i, by = y * factor + j;
+          const float* p = &big.rgb[(size_t(by) * big.width + bx) * 3];
+          for (int c = 0; c < 3; ++c) sum[c] += toLinear(p[c]);
+          const double l = big.luma(bx, by);
+          luma += l;
+          lumaSquared += l * l;
+        }
+      for (int c = 0; c < 3; ++c) small.rgb[(size_t(y) * small.width + x) * 3 + c] = toDisplay(float(sum[c] / n));
+      const double mean = luma / n;
+      lumaSpread[size_t(y) * small.width + x] = float(std::sqrt(std::max(0.0, lumaSquared / n - mean * mean)));
+    }
+  return small;
+}
+
+void writeCrop(const DisplayImage& image, int x0, int y0, int size, int zoom, const std::string& path) {
+  std::vector<uint8_t> rgba(size_t(size * zoom) * size * zoom * 4, 255);
+  for (int y = 0; y < size * zoom; ++y)
+    for (int x = 0; x < size * zoom; ++x) {
+      const int sx = std::min(image.width - 1, x0 + x / zoom), sy = std::min(image.height - 1, y0 + y / zoom);
+      for (int c = 0; c < 3; ++c)
+        rgba[(size_t(y) * size * zoom + x) * 4 + c] =
+            uint8_t(std::lround(std::clamp(image.rgb[(size_t(sy) * image.width + sx) * 3 + c], 0.0f, 1.0f) * 255));
+    }
+  writeImage8(path, size * zoom, size * zoom, rgba);
+}
+
+}  // namespace
+
+int score(const ScoreOptions& options) {
+  const std::string captureLog = options.captureDir + "/capture.jsonl";
+  std::ifstream in(captureLog);
+  if (!in) throw std::invalid_argument(captureLog + ": cannot read (run the engine's capture first)");
+  if (options.factor < 1 || options.factor > 16) throw std::invalid_argument("--factor must be 1..16");
+  const DisplayImage big = readDisplay(options.reference);
+  std::vector<float> spread;
+  const DisplayImage reference = downsample(big, options.factor, spread);
+  const std::vector<uint8_t> edges = edgeMaskFromSpread(spread);
+  const std::string out = options.out.empty() ? options.captureDir : options.out;
+
+  struct Row {
+    nlohmann::json capture;
+    DisplayImage image;
+    ErrorMetrics metrics;
+  };
+  std::vector<Row> rows;
+  int lineNumber = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++lineNumber;
+    if (line.empty()) continue;
+    nlohmann::json capture = nlohmann::json::parse(line, nullptr, false);
+    if (capture.is_discarded() || !capture.is_object() || !capture.contains("spec"))
+      throw std::invalid_argument(captureLog + ":" + std::to_string(lineNumber) + ": not a capture record");
+    if (!capture.contains("image")) {
+      std::fprintf(stderr, "retroaa score: %s was not captured: %s\n", capture.value("spec", "?").c_str(),
+                   capture.value("error", "no image").c_str());
+      continue;
+    }
+    DisplayImage image = readDisplay(options.captureDir + "/" + capture["image"].get<std::string>());
+    if (image.width != reference.width || image.height != reference.height)
+      throw std::invalid_argument(capture["image"].get<std::string>() + " is " + std::to_string(image.width) + "x" +
+                                  std::to_string(image.height) + "; the reference filtered by " +
+                                  std::to_string(options.factor) + " is " + std::to_string(reference.width) + "x" +
+                                  std::to_string(reference.height));
+    const ErrorMetrics metrics = compare(image, reference, edges);
+    rows.push_back({std::move(capture), std::move(image), metrics});
+  }
+  if (rows.empty()) throw std::invalid_argument(captureLog + ": no captured method");
+
+  // `off` (STK's stock path) is the baseline of the ratios and of the unchanged-background figure: the
+  // pixels where it already equals the reference (flat sky and far background) must stay as they are.
+  const Row* off = nullptr;
+  for (const Row& row : rows)
+    if (row.capture["spec"] == "off") off = &row;
+  const double offWall = off ? off->capture.value("wall_ms", 0.0) : 0.0;
+  std::vector<uint8_t> settled;  // off within 1/255 of the reference
+  if (off)
+    for (size_t p = 0; p < reference.rgb.size() / 3; ++p) {
+      float worst = 0;
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(off->image.rgb[p * 3 + c] - reference.rgb[p * 3 + c]));
+      settled.push_back(worst <= 1.0f / 255);
+    }
+
+  nlohmann::json report = nlohmann::json::array();
+  std::ostringstream md;
+  md << "| method | PSNR dB | edge PSNR dB | interior PSNR dB | evals/px | wall ms | × off | retroaa passes GPU ms | "
+        "plugin MB | background kept |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  char buffer[512];
+  for (const Row& row : rows) {
+    const nlohmann::json& r = row.capture.contains("retroaa") ? row.capture["retroaa"] : nlohmann::json::object();
+    double passMs = 0;
+    if (r.contains("passes"))
+      for (const auto& pass : r["passes"].items()) passMs += pass.value().get<double>();
+    int kept = 0, settledCount = 0;
+    for (size_t p = 0; p < settled.size(); ++p) {
+      if (!settled[p]) continue;
+      ++settledCount;
+      float worst = 0;
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(row.image.rgb[p * 3 + c] - off->image.rgb[p * 3 + c]));
+      kept += worst <= 1.0f / 255;
+    }
+    const double keptFraction = settledCount ? double(kept) / settledCount : 1.0;
+    const double wall = row.capture.value("wall_ms", 0.0);
+    nlohmann::json entry = {{"spec", row.capture["spec"]},
+                            {"psnr_db", row.metrics.psnrDb},
+                            {"edge_psnr_db", row.metrics.edgePsnrDb},
+                            {"interior_psnr_db", row.metrics.interiorPsnrDb},
+                            {"ssim", row.metrics.ssim},
+                            {"edge_pixels", row.metrics.edgePixels},
+                            {"evaluations_per_pixel", r.value("evaluations_per_pixel", 1.0)},
+                            {"wall_ms", wall},
+                            {"wall_vs_off", offWall > 0 ? wall / offWall : 0.0},
+                            {"passes_ms", r.value("passes", nlohmann::json::object())},
+                            {"plugin_bytes", r.value("plugin_bytes", 0)},
+                            {"warnings", r.value("warnings", 0)},
+                            {"background_kept", keptFraction}};
+    report.push_back(entry);
+    std::snprintf(buffer, sizeof buffer, "| `%s` | %.2f | %.2f | %.2f | %.2f | %.0f | %.2f | %.1f | %.1f | %.4f |\n",
+                  row.capture["spec"].get<std::string>().c_str(), row.metrics.psnrDb, row.metrics.edgePsnrDb,
+                  row.metrics.interiorPsnrDb, entry["evaluations_per_pixel"].get<double>(), wall,
+                  offWall > 0 ? wall / offWall : 0.0, passMs, entry["plugin_bytes"].get<double>() / 1048576.0,
+                  keptFraction);
+    md << buffer;
+    if (options.cropSize > 0)
+      writeCrop(row.image, options.cropX, options.cropY, options.cropSize, 4,
+                out + "/crop-" + row.capture["image"].get<std::string>());
+  }
+  if (options.cropSize > 0) {
+    writeCrop(reference, options.cropX, options.cropY, options.cropSize, 4, out + "/crop-reference.png");
+    std::vector<uint8_t> rgba(reference.rgb.size() / 3 * 4, 255);
+    for (size_t p = 0; p < reference.rgb.size() / 3; ++p)
+      for (int c = 0; c < 3; ++c)
+        rgba[p * 4 + c] = uint8_t(std::lround(std::clamp(reference.rgb[p * 3 + c], 0.f, 1.f) * 255));
+    writeImage8(out + "/reference.png", reference.width, reference.height, rgba);
+  }
+  md << "\nReference: " << options.reference << " box-filtered " << options.factor << "×" << options.factor
+     << " in linear light; " << std::count(edges.begin(), edges.end(), 1) << " edge pixels (luma spread > 0.03).\n";
+  std::ofstream(out + "/report.md") << md.str();
+  std::ofstream(out + "/report.json") << report.dump(2) << "\n";
+  std::printf("%s", md.str().c_str());
+  return kExitOk;
+}
+
+}  // namespace app

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Renders one SuperTuxKart frame with each anti-aliasing method in one process, headless (Xvfb,
+# llvmpipe): the race starts at once with one kart and no opponents, the world advances by a fixed step
+# to frame FRAME, then holds still while each method renders it (2 frames to settle, TIMED frames timed,
+# the last one written). Writes OUT/<method>.png and OUT/capture.jsonl.
+#   usage: capture.sh STK_BINARY TRACK WIDTHxHEIGHT FRAME "METHODS" OUT [TIMED]
+# METHODS: retroaa method specs (off, fxaa, edge, resolve/fso+fxaa, ...) and `stk-mlaa` (STK's own MLAA).
+set -euo pipefail
+binary=$1 track=$2 size=$3 frame=$4 methods=$5 out=$6 timed=${7:-3}
+width=${size%x*} height=${size#*x}
+data=/usr/share/games/supertuxkart
+[ -d "$data/data/tracks/$track" ] || { echo "capture: no track '$track' in $data/data/tracks" >&2; exit 2; }
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+rm -f "$out/capture.jsonl"
+# A private home: STK's config, its first-run screens and its caches stay out of the user's.
+home=$(mktemp -d)
+trap 'rm -rf "$home"' EXIT
+# Mesa's shader cache outside the clone: STK's ~200 shaders compile once per machine, not per run.
+export MESA_SHADER_CACHE_DIR=${RETROAA_STK_SHADER_CACHE:-/var/cache/retroaa/mesa-shader-cache}
+mkdir -p "$MESA_SHADER_CACHE_DIR"
+export HOME=$home XDG_CONFIG_HOME=$home/config XDG_DATA_HOME=$home/data XDG_CACHE_HOME=$home/cache
+export SUPERTUXKART_DATADIR=$data LP_NUM_THREADS=${LP_NUM_THREADS:-2}
+# The effects that blur or move the image (depth of field, motion blur) and those llvmpipe pays most
+# for off; MLAA is its own row (stk-mlaa), so its target exists from the start when asked for.
+mlaa=--disable-mlaa
+case " $methods " in *" stk-mlaa "*) mlaa=--enable-mlaa ;; esac
+status=0
+timeout "${RETROAA_STK_TIMEOUT:-1800}" xvfb-run -a -s "-screen 0 ${width}x${height}x24" \
+  "$binary" --screensize="${width}x${height}" --windowed --no-sound --no-start-screen --race-now \
+  --track="$track" --numkarts=1 --laps=1 --seed=1 --enable-dynamic-lights --disable-dof --disable-motion-blur \
+  --disable-light-shaft --disable-ssao --disable-glow --disable-bloom --disable-ibl --shadows=0 "$mlaa" \
+  --aa-capture="$out" --aa-capture-frame="$frame" --aa-methods="$methods" --aa-fixed-dt=0.0166667 \
+  --aa-timed-frames="$timed" >"$out/stk.log" 2>&1 || status=$?
+if [ "$status" = 124 ]; then echo "capture: SuperTuxKart did not finish in time ($out/stk.log)" >&2; exit 1; fi
+captured=$(grep -c '"image"' "$out/capture.jsonl" 2>/dev/null || true)
+wanted=$(echo "$methods" | wc -w)
+if [ "${captured:-0}" != "$wanted" ]; then
+  tail -20 "$out/stk.log" >&2
+  echo "capture: $captured of $wanted methods captured on $track (exit $status; $out/stk.log)" >&2
+  exit 1
+fi
+echo "capture: $track, $wanted methods at ${size} -> $out"

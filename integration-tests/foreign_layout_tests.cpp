@@ -1,0 +1,235 @@
+// What a foreign engine's layout asks of the plugin, on a miniature host shaped like SuperTuxKart's
+// deferred renderer: albedo and a spheremap-encoded normal in two RGBA8 targets (roughness and
+// metallic in the normal's b and a), positions from a D24S8 depth only, and a lighting pass that writes
+// diffuse and specular apart into two R11F_G11F_B10F targets (GBufferLayout::extraLightTextures).
+#include "gl_objects.h"
+#include "test_support.h"
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+
+using testing_support::drawWithFragment;
+
+namespace {
+
+constexpr int kWidth = 24, kHeight = 16;
+// The two surfaces either side of a sloped edge: albedo and (unit) normal.
+const glm::vec3 kAlbedoA(0.9f, 0.2f, 0.1f), kAlbedoB(0.1f, 0.3f, 0.8f);
+const glm::vec3 kNormalA = glm::normalize(glm::vec3(0.6f, 0.3f, 0.7f)),
+                kNormalB = glm::normalize(glm::vec3(-0.5f, 0.2f, 0.4f));
+const glm::vec3 kToLight = glm::normalize(glm::vec3(0.2f, 0.4f, 1.0f));
+
+// The shared GLSL: which surface a point of the screen is on (x + 0.37·y < 10.3: surface A), STK's own
+// normal encoding (data/shaders/utils/encode_normal.frag and decodeNormal.frag, verbatim), and the
+// test lighting: diffuse = albedo · max(n·l, 0), specular = half of it.
+const char* kShared = R"(
+vec2 EncodeNormal(vec3 n) { return normalize(n.xy) * sqrt(n.z * 0.5 + 0.5); }
+vec3 DecodeNormal(vec2 n) {
+  float z = dot(n, n) * 2. - 1.;
+  vec2 xy = normalize(n) * sqrt(1. - z * z);
+  return vec3(xy, z);
+}
+bool onA(vec2 p) { return p.x + 0.37 * p.y < 10.3; }
+)";
+
+struct MiniatureStk {
+  host::Texture albedo = host::makeTexture2D(GL_RGBA8, kWidth, kHeight, "mini.albedo");
+  host::Texture normal = host::makeTexture2D(GL_RGBA8, kWidth, kHeight, "mini.normal");
+  host::Texture depth = host::makeTexture2D(GL_DEPTH24_STENCIL8, kWidth, kHeight, "mini.depth");
+  host::Texture diffuse = host::makeTexture2D(GL_R11F_G11F_B10F, kWidth, kHeight, "mini.diffuse");
+  host::Texture specular = host::makeTexture2D(GL_R11F_G11F_B10F, kWidth, kHeight, "mini.specular");
+  GLuint gbuffer = 0, light = 0;
+
+  MiniatureStk() {
+    glCreateFramebuffers(1, &gbuffer);
+    glNamedFramebufferTexture(gbuffer, GL_COLOR_ATTACHMENT0, albedo, 0);
+    glNamedFramebufferTexture(gbuffer, GL_COLOR_ATTACHMENT1, normal, 0);
+    glNamedFramebufferTexture(gbuffer, GL_DEPTH_STENCIL_ATTACHMENT, depth, 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(gbuffer, 2, buffers);
+    glCreateFramebuffers(1, &light);
+    glNamedFramebufferTexture(light, GL_COLOR_ATTACHMENT0, diffuse, 0);
+    glNamedFramebufferTexture(light, GL_COLOR_ATTACHMENT1, specular, 0);
+    glNamedFramebufferDrawBuffers(light, 2, buffers);
+  }
+  ~MiniatureStk() {
+    glDeleteFramebuffers(1, &gbuffer);
+    glDeleteFramebuffers(1, &light);
+  }
+
+  retroaa::GBufferLayout layout() const {
+    retroaa::GBufferLayout layout;
+    layout.width = kWidth;
+    layout.height = kHeight;
+    layout.attachments = {{retroaa::AttachmentRole::Albedo, GL_RGBA8, albedo},
+                          {retroaa::AttachmentRole::NormalGloss, GL_RGBA8, normal}};
+    layout.normalEncoding = retroaa::NormalEncoding::Spheremap;
+    layout.depthSource = retroaa::DepthSource::DepthBuffer;
+    layout.gbufferFramebuffer = gbuffer;
+    layout.depthStencilTexture = depth;
+    layout.lightFramebuffer = light;
+    layout.lightTexture = diffuse;
+    layout.extraLightTextures = {specular};
+    return layout;
+  }
+
+  // The solid pass: every sample of the plugin's geometry framebuffer, surface A or B by where the
+  // sample lies, normals stored as STK stores them (0.5·EncodeNormal(n) + 0.5, b roughness, a metallic).
+  void solidPass(GLuint target) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, kWidth, kHeight);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    glClearBufferfv(GL_COLOR, 1, zero);
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    const std::string source = std::string("#version 450 core\n") + kShared + R"(
+uniform vec3 uAlbedoA, uAlbedoB, uNormalA, uNormalB;
+layout(location = 0) out vec4 outAlbedo;
+layout(location = 1) out vec4 outNormal;
+void main() {
+  bool a = onA(floor(gl_FragCoord.xy) + gl_SamplePosition);  // reading it runs this once per sample
+  outAlbedo = vec4(a ? uAlbedoA : uAlbedoB, 0.0);
+  outNormal = vec4(0.5 * EncodeNormal(a ? uNormalA : uNormalB) + 0.5, 0.25, 0.75);
+  gl_FragDepth = a ? 0.4 : 0.6;
+})";
+    drawWithFragment(source.c_str(), [](GLuint p) {
+      glProgramUniform3fv(p, glGetUniformLocation(p, "uAlbedoA"), 1, &kAlbedoA.x);
+      glProgramUniform3fv(p, glGetUniformLocation(p, "uAlbedoB"), 1, &kAlbedoB.x);
+      glProgramUniform3fv(p, glGetUniformLocation(p, "uNormalA"), 1, &kNormalA.x);
+      glProgramUniform3fv(p, glGetUniformLocation(p, "uNormalB"), 1, &kNormalB.x);
+    });
+    glDisable(GL_DEPTH_TEST);
+  }
+
+  // STK-style lighting: reads its G-buffer through the textures, writes diffuse and specular apart.
+  void lighting(GLuint target) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, kWidth, kHeight);
+    glBindTextureUnit(0, albedo);
+    glBindTextureUnit(1, normal);
+    const std::string source = std::string("#version 450 core\n") + kShared + R"(
+layout(binding = 0) uniform sampler2D uAlbedo;
+layout(binding = 1) uniform sampler2D uNormal;
+uniform vec3 uToLight;
+layout(location = 0) out vec4 outDiffuse;
+layout(location = 1) out vec4 outSpecular;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec3 n = normalize(DecodeNormal(2.0 * texelFetch(uNormal, pixel, 0).xy - 1.0));
+  vec3 diffuse = texelFetch(uAlbedo, pixel, 0).rgb * max(dot(n, uToLight), 0.0);
+  outDiffuse = vec4(diffuse, 1.0);
+  outSpecular = vec4(0.5 * diffuse, 1.0);
+})";
+    drawWithFragment(source.c_str(),
+                     [](GLuint p) { glProgramUniform3fv(p, glGetUniformLocation(p, "uToLight"), 1, &kToLight.x); });
+  }
+
+  std::vector<glm::vec4> read(GLuint texture) const {
+    std::vector<glm::vec4> pixels(size_t(kWidth) * kHeight);
+    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(glm::vec4)), pixels.data());
+    return pixels;
+  }
+};
+
+std::unique_ptr<retroaa::Plugin> createPlugin(const MiniatureStk& host, const std::string& spec) {
+  retroaa::Description description;
+  EXPECT_TRUE(retroaa::applyMethodSpec(description.config, spec)) << spec;
+  description.layout = host.layout();
+  auto plugin = retroaa::Plugin::create(description);
+  EXPECT_TRUE(plugin) << (plugin ? "" : plugin.error().message);
+  return plugin ? std::move(plugin.value()) : nullptr;
+}
+
+void runFrame(MiniatureStk& host, retroaa::Plugin& plugin) {
+  host.solidPass(plugin.geometryFramebuffer());
+  ASSERT_TRUE(plugin.resolve({1.0f, 0.5f, 100.0f}));
+  ASSERT_TRUE(plugin.shade([&](GLuint target) { host.lighting(target); }));
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+glm::vec3 litSurface(bool a) {
+  return (a ? kAlbedoA : kAlbedoB) * std::max(glm::dot(a ? kNormalA : kNormalB, kToLight), 0.0f);
+}
+
+}  // namespace
+
+TEST(ForeignLayout, PerSampleLightsEverySampleAndCompositesBothLightOutputs) {
+  testing_support::context();
+  MiniatureStk host;
+  auto plugin = createPlugin(host, "per-sample@samples=4");
+  ASSERT_TRUE(plugin);
+  runFrame(host, *plugin);
+  // Where the driver puts the samples of the plugin's MSAA G-buffer, to light them here too.
+  std::vector<float> positions;
+  glBindFramebuffer(GL_FRAMEBUFFER, plugin->geometryFramebuffer());
+  for (int s = 0; s < plugin->stats().samples; ++s) {
+    float xy[2];
+    glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(s), xy);
+    positions.push_back(xy[0]);
+    positions.push_back(xy[1]);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  const auto diffuse = host.read(host.diffuse), specular = host.read(host.specular);
+  int edgePixels = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      glm::vec3 expected(0.0f);
+      int onA = 0;
+      const int samples = int(positions.size() / 2);
+      for (int s = 0; s < samples; ++s) {
+        const bool a = x + positions[2 * s] + 0.37f * (y + positions[2 * s + 1]) < 10.3f;
+        onA += a;
+        expected += litSurface(a) / float(samples);
+      }
+      edgePixels += onA > 0 && onA < samples;
+      const glm::vec3 d(diffuse[size_t(y) * kWidth + x]), sp(specular[size_t(y) * kWidth + x]);
+      // R11F_G11F_B10F keeps 5-6 mantissa bits; the normals went through 8-bit spheremap storage.
+      EXPECT_NEAR(d.r, expected.r, 0.03f) << x << "," << y;
+      EXPECT_NEAR(d.g, expected.g, 0.03f) << x << "," << y;
+      EXPECT_NEAR(d.b, expected.b, 0.03f) << x << "," << y;
+      // The specular output went through the same slices and weights: half the diffuse.
+      EXPECT_NEAR(sp.r, 0.5f * d.r, 0.02f) << x << "," << y;
+      EXPECT_NEAR(sp.b, 0.5f * d.b, 0.02f) << x << "," << y;
+    }
+  EXPECT_GT(edgePixels, kHeight / 2) << "the edge crosses every row: its pixels mix both surfaces";
+}
+
+TEST(ForeignLayout, TheResolveKeepsASpheremapNormalThroughDecodeAndReencode) {
+  testing_support::context();
+  MiniatureStk host;
+  for (const char* spec : {"resolve", "resolve/fso", "edge", "aggregate"}) {
+    auto plugin = createPlugin(host, std::string(spec) + "@samples=4");
+    ASSERT_TRUE(plugin);
+    runFrame(host, *plugin);
+    const auto diffuse = host.read(host.diffuse);
+    const auto normals = host.read(host.normal);
+    // Away from the edge every sample is one surface: the averaged normal is that surface's, the light
+    // its light, and the roughness and metallic channels pass through.
+    for (int y = 0; y < kHeight; ++y)
+      for (const int x : {0, 1, kWidth - 2, kWidth - 1}) {
+        const bool a = x + 0.37f * y < 10.3f - 1.5f;
+        if (!a && x + 0.37f * y < 10.3f + 1.5f) continue;
+        const glm::vec3 expected = litSurface(a), got(diffuse[size_t(y) * kWidth + x]);
+        EXPECT_LT(glm::length(got - expected), 0.03f) << spec << " at " << x << "," << y;
+        EXPECT_NEAR(normals[size_t(y) * kWidth + x].z, 0.25f, 1.0f / 255) << spec;
+        EXPECT_NEAR(normals[size_t(y) * kWidth + x].w, 0.75f, 1.0f / 255) << spec;
+      }
+  }
+}
+
+TEST(ForeignLayout, ExtraLightTexturesMustHoldFloats) {
+  testing_support::context();
+  MiniatureStk host;
+  host::Texture bytes = host::makeTexture2D(GL_RGBA8, kWidth, kHeight, "mini.rgba8");
+  retroaa::Description description;
+  description.config.method = retroaa::Method::Edge;
+  description.layout = host.layout();
+  description.layout.extraLightTextures = {bytes};
+  auto plugin = retroaa::Plugin::create(description);
+  ASSERT_FALSE(plugin);
+  EXPECT_EQ(plugin.error().code, retroaa::ErrorCode::InvalidLayout);
+  EXPECT_NE(plugin.error().message.find("extraLightTextures[0]"), std::string::npos) << plugin.error().message;
+}
