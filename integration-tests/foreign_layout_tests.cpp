@@ -93,7 +93,7 @@ void main() {
   bool a = onA(floor(gl_FragCoord.xy) + gl_SamplePosition);  // reading it runs this once per sample
   outAlbedo = vec4(a ? uAlbedoA : uAlbedoB, 0.0);
   outNormal = vec4(0.5 * EncodeNormal(a ? uNormalA : uNormalB) + 0.5, 0.25, 0.75);
-  gl_FragDepth = a ? 0.4 : 0.6;
+  gl_FragDepth = a ? 0.9 : 0.99;
 })";
     drawWithFragment(source.c_str(), [](GLuint p) {
       glProgramUniform3fv(p, glGetUniformLocation(p, "uAlbedoA"), 1, &kAlbedoA.x);
@@ -145,7 +145,7 @@ std::unique_ptr<retroaa::Plugin> createPlugin(const MiniatureStk& host, const st
 
 void runFrame(MiniatureStk& host, retroaa::Plugin& plugin) {
   host.solidPass(plugin.geometryFramebuffer());
-  ASSERT_TRUE(plugin.resolve({1.0f, 0.5f, 100.0f}));
+  ASSERT_TRUE(plugin.resolve({1.396f, 1.0f, 1200.0f}));  // SuperTuxKart's planes
   ASSERT_TRUE(plugin.shade([&](GLuint target) { host.lighting(target); }));
   ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
@@ -206,6 +206,8 @@ TEST(ForeignLayout, TheResolveKeepsASpheremapNormalThroughDecodeAndReencode) {
     runFrame(host, *plugin);
     const auto diffuse = host.read(host.diffuse);
     const auto normals = host.read(host.normal);
+    std::vector<float> depth(size_t(kWidth) * kHeight);
+    glGetTextureImage(host.depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
     // Away from the edge every sample is one surface: the averaged normal is that surface's, the light
     // its light, and the roughness and metallic channels pass through.
     for (int y = 0; y < kHeight; ++y)
@@ -214,6 +216,8 @@ TEST(ForeignLayout, TheResolveKeepsASpheremapNormalThroughDecodeAndReencode) {
         if (!a && x + 0.37f * y < 10.3f + 1.5f) continue;
         const glm::vec3 expected = litSurface(a), got(diffuse[size_t(y) * kWidth + x]);
         EXPECT_LT(glm::length(got - expected), 0.03f) << spec << " at " << x << "," << y;
+        // The host's depth holds the surface's, for its lighting to rebuild positions from.
+        EXPECT_NEAR(depth[size_t(y) * kWidth + x], a ? 0.9f : 0.99f, 1e-5f) << spec << " at " << x << "," << y;
         EXPECT_NEAR(normals[size_t(y) * kWidth + x].z, 0.25f, 1.0f / 255) << spec;
         EXPECT_NEAR(normals[size_t(y) * kWidth + x].w, 0.75f, 1.0f / 255) << spec;
       }
@@ -232,4 +236,26 @@ TEST(ForeignLayout, ExtraLightTexturesMustHoldFloats) {
   ASSERT_FALSE(plugin);
   EXPECT_EQ(plugin.error().code, retroaa::ErrorCode::InvalidLayout);
   EXPECT_NE(plugin.error().message.find("extraLightTextures[0]"), std::string::npos) << plugin.error().message;
+}
+
+TEST(ForeignLayout, AModelPassWithMultisamplingOffIsNamedInAWarningOnce) {
+  // Irrlicht (SuperTuxKart's engine) disables GL_MULTISAMPLE on a window without MSAA: a model pass
+  // drawn so into the MSAA G-buffer holds no coverage. The plugin says so, once.
+  testing_support::context();
+  MiniatureStk host;
+  auto plugin = createPlugin(host, "resolve@samples=4");
+  ASSERT_TRUE(plugin);
+  auto multisampleWarnings = [&] {
+    int found = 0;
+    for (const std::string& warning : plugin->warnings())
+      found += warning.find("GL_MULTISAMPLE is disabled") != std::string::npos;
+    return found;
+  };
+  runFrame(host, *plugin);
+  EXPECT_EQ(multisampleWarnings(), 0);
+  glDisable(GL_MULTISAMPLE);
+  runFrame(host, *plugin);
+  runFrame(host, *plugin);
+  glEnable(GL_MULTISAMPLE);
+  EXPECT_EQ(multisampleWarnings(), 1);
 }

@@ -44,12 +44,13 @@ fi
 export CCACHE_DIR=${RETROAA_STK_CCACHE:-/var/cache/retroaa/ccache-stk} CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
 export CCACHE_MAXSIZE=5G
 mkdir -p "$CCACHE_DIR"
-# Debian's libshaderc leaves glslang and SPIRV-Tools unresolved: name them, in this order.
+# Debian's libshaderc leaves glslang and SPIRV-Tools unresolved: name them, in this order (a STRING: as
+# a FILEPATH, CMake would make -lpthread a path).
 shaderc="$lib/libshaderc.so;$lib/libglslang.a;$lib/libSPIRV.a;$lib/libMachineIndependent.a;$lib/libGenericCodeGen.a"
 shaderc="$shaderc;$lib/libOSDependent.a;$lib/libOGLCompiler.a;$lib/libSPIRV-Tools-opt.a;$lib/libSPIRV-Tools.a;-lpthread"
 cmake -S "$source" -B "$stk/stk-build" -DCMAKE_BUILD_TYPE=Release -DCHECK_ASSETS=OFF -DBUILD_RECORDER=OFF \
   -DUSE_WIIUSE=OFF -DUSE_SQLITE3=OFF -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
-  -DCMAKE_PREFIX_PATH="$stk/retroaa" -DSHADERC_LIBRARY="$shaderc" >"$stk/configure.log" 2>&1 ||
+  -DCMAKE_PREFIX_PATH="$stk/retroaa" -DSHADERC_LIBRARY:STRING="$shaderc" >"$stk/configure.log" 2>&1 ||
   { tail -20 "$stk/configure.log" >&2; echo "make stk: STK's configure failed ($stk/configure.log)" >&2; exit 1; }
 echo "building SuperTuxKart (~800 files: 40-60 min on 2 cores the first time, minutes through ccache after): $stk/build.log" >&2
 cmake --build "$stk/stk-build" -j"$(nproc)" >"$stk/build.log" 2>&1 ||

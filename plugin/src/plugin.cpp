@@ -170,7 +170,8 @@ struct Plugin::Impl {
   std::vector<ActiveTechnique> techniques;
   std::unique_ptr<BudgetController> budget;
   bool resolvedThisFrame = false;
-  uint64_t budgetFrame = 0;  // the measured frame the budget last saw
+  bool warnedMultisampleOff = false;  // once per plugin: GL_MULTISAMPLE was off at resolve()
+  uint64_t budgetFrame = 0;           // the measured frame the budget last saw
 
   SharedTargets shared() { return {msaa.get(), slices.get(), postTarget.get()}; }
   Technique* methodTechnique() {
@@ -412,6 +413,17 @@ Status Plugin::resolve(const FrameInfo& frame) {
   impl_->resolvedThisFrame = true;
   impl_->context.frame = frame;
   if (!impl_->resolvePass) return Status::ok();
+  // With GL_MULTISAMPLE off (Irrlicht turns it off on a window without MSAA) the model pass rasterised
+  // single-sample: every sample holds the pixel centre's surface, or only sample 0 was written. A state
+  // query, no wait; the host's state is as its model pass left it.
+  if (impl_->msaa->multisampled() && impl_->msaa->supersample() == 1 && !impl_->warnedMultisampleOff &&
+      !glIsEnabled(GL_MULTISAMPLE)) {
+    impl_->warnedMultisampleOff = true;
+    context.warn(
+        "GL_MULTISAMPLE is disabled at resolve(): the model pass rasterised into the MSAA G-buffer single-sample "
+        "(no anti-aliased edges; some drivers write sample 0 only). Enable it while drawing into "
+        "geometryFramebuffer() (docs/integration.md)");
+  }
   GlStateGuard guard;
   if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
   if (impl_->depthMirror) impl_->depthMirror->copy(true);  // the resolved depth into the host's renderbuffer

@@ -203,6 +203,11 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       ScopedPass timed(context, "slices.lighting");
       GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
       context.beginFullscreenPass(lightTarget_.get());
+      // A host whose lighting only adds (blending ONE, ONE) and clears its target outside the call
+      // (SuperTuxKart) finds it black, as its own target would be.
+      const float black[4] = {0, 0, 0, 0};
+      for (GLint buffer = 0; buffer <= GLint(extraLight_.size()); ++buffer)
+        glClearNamedFramebufferfv(lightTarget_.get(), GL_COLOR, buffer, black);
       sliceStencil(slice);
       lighting(lightTarget_.get());
     }
