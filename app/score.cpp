@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -108,41 +109,49 @@ int score(const ScoreOptions& options) {
   }
   if (rows.empty()) throw std::invalid_argument(captureLog + ": no captured method");
 
-  // `off` (STK's stock path) is the baseline of the ratios and of the unchanged-background figure: the
-  // pixels where it already equals the reference (flat sky and far background) must stay as they are.
+  // `off` (the engine's stock path) is the baseline of the ratios and of the sky check. The reference's
+  // background.png, where its capture wrote one, marks its pixels without geometry: a capture pixel
+  // whose block and neighbours' blocks are all background there (no wire thinner than a pixel, no
+  // silhouette reaches it) is sky, and must stay as off has it.
   const Row* off = nullptr;
   for (const Row& row : rows)
     if (row.capture["spec"] == "off") off = &row;
   const double offWall = off ? off->capture.value("wall_ms", 0.0) : 0.0;
-  std::vector<uint8_t> settled;  // off within 1/255 of the reference
-  if (off)
-    for (size_t p = 0; p < reference.rgb.size() / 3; ++p) {
-      float worst = 0;
-      for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(off->image.rgb[p * 3 + c] - reference.rgb[p * 3 + c]));
-      settled.push_back(worst <= 1.0f / 255);
-    }
+  std::vector<size_t> sky;
+  const std::string maskPath = (std::filesystem::path(options.reference).parent_path() / "background.png").string();
+  if (off && std::filesystem::is_regular_file(maskPath)) {
+    const DisplayImage mask = readDisplay(maskPath);
+    if (mask.width != big.width || mask.height != big.height)
+      throw std::invalid_argument(maskPath + " is not the reference's size");
+    const int f = options.factor;
+    for (int y = 1; y + 1 < reference.height; ++y)
+      for (int x = 1; x + 1 < reference.width; ++x) {
+        bool all = true;
+        for (int by = (y - 1) * f; all && by < (y + 2) * f; ++by)
+          for (int bx = (x - 1) * f; all && bx < (x + 2) * f; ++bx)
+            all = mask.rgb[(size_t(by) * mask.width + bx) * 3] > 0.5f;
+        if (all) sky.push_back(size_t(y) * reference.width + x);
+      }
+  }
 
   nlohmann::json report = nlohmann::json::array();
   std::ostringstream md;
   md << "| method | PSNR dB | edge PSNR dB | interior PSNR dB | evals/px | wall ms | × off | retroaa passes GPU ms | "
-        "plugin MB | background kept |\n|---|---|---|---|---|---|---|---|---|---|\n";
+        "plugin MB | sky kept |\n|---|---|---|---|---|---|---|---|---|---|\n";
   char buffer[512];
   for (const Row& row : rows) {
     const nlohmann::json& r = row.capture.contains("retroaa") ? row.capture["retroaa"] : nlohmann::json::object();
     double passMs = 0;
     if (r.contains("passes"))
       for (const auto& pass : r["passes"].items()) passMs += pass.value().get<double>();
-    int kept = 0, settledCount = 0;
-    for (size_t p = 0; p < settled.size(); ++p) {
-      if (!settled[p]) continue;
-      ++settledCount;
+    int kept = 0;
+    for (const size_t p : sky) {
       float worst = 0;
       for (int c = 0; c < 3; ++c)
         worst = std::max(worst, std::abs(row.image.rgb[p * 3 + c] - off->image.rgb[p * 3 + c]));
       kept += worst <= 1.0f / 255;
     }
-    const double keptFraction = settledCount ? double(kept) / settledCount : 1.0;
+    const nlohmann::json skyKept = sky.empty() ? nlohmann::json() : nlohmann::json(double(kept) / double(sky.size()));
     const double wall = row.capture.value("wall_ms", 0.0);
     nlohmann::json entry = {{"spec", row.capture["spec"]},
                             {"psnr_db", row.metrics.psnrDb},
@@ -156,13 +165,14 @@ int score(const ScoreOptions& options) {
                             {"passes_ms", r.value("passes", nlohmann::json::object())},
                             {"plugin_bytes", r.value("plugin_bytes", 0)},
                             {"warnings", r.value("warnings", 0)},
-                            {"background_kept", keptFraction}};
+                            {"sky_pixels", sky.size()},
+                            {"sky_kept", skyKept}};
     report.push_back(entry);
-    std::snprintf(buffer, sizeof buffer, "| `%s` | %.2f | %.2f | %.2f | %.2f | %.0f | %.2f | %.1f | %.1f | %.4f |\n",
+    std::snprintf(buffer, sizeof buffer, "| `%s` | %.2f | %.2f | %.2f | %.2f | %.0f | %.2f | %.1f | %.1f | %s |\n",
                   row.capture["spec"].get<std::string>().c_str(), row.metrics.psnrDb, row.metrics.edgePsnrDb,
                   row.metrics.interiorPsnrDb, entry["evaluations_per_pixel"].get<double>(), wall,
                   offWall > 0 ? wall / offWall : 0.0, passMs, entry["plugin_bytes"].get<double>() / 1048576.0,
-                  keptFraction);
+                  skyKept.is_null() ? "–" : std::to_string(skyKept.get<double>()).substr(0, 6).c_str());
     md << buffer;
     if (options.cropSize > 0)
       writeCrop(row.image, options.cropX, options.cropY, options.cropSize, 4,
@@ -177,7 +187,9 @@ int score(const ScoreOptions& options) {
     writeImage8(out + "/reference.png", reference.width, reference.height, rgba);
   }
   md << "\nReference: " << options.reference << " box-filtered " << options.factor << "×" << options.factor
-     << " in linear light; " << std::count(edges.begin(), edges.end(), 1) << " edge pixels (luma spread > 0.03).\n";
+     << " in linear light; " << std::count(edges.begin(), edges.end(), 1) << " edge pixels (luma spread > 0.03); "
+     << sky.size()
+     << " sky pixels (no geometry within a pixel of them in the reference), kept = within 1/255 of off.\n";
   std::ofstream(out + "/report.md") << md.str();
   std::ofstream(out + "/report.json") << report.dump(2) << "\n";
   std::printf("%s", md.str().c_str());

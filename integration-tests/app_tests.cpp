@@ -239,8 +239,9 @@ TEST(Cli, EdgeFiguresOfAFrameWithoutEdgesAreNotApplicable) {
 
 TEST(Cli, ScoreRatesAForeignEnginesCapturesAgainstItsSupersampledReference) {
   // A 4x reference of a hard vertical edge at x = 8.5 pixels (of 16): black left, white right. The
-  // capture `exact` is its box filter, `jagged` snaps the edge pixel to black, `bright` lifts every
-  // pixel left of the edge by 2/255.
+  // capture `exact` is its box filter, `jagged` snaps the edge pixel to black, `dimmed` lowers the
+  // pixels from x = 12 on by 2/255. The reference's background.png marks x >= 40 (capture x >= 10) as
+  // having no geometry (the sky).
   const std::string dir = temp("score");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -260,19 +261,26 @@ TEST(Cli, ScoreRatesAForeignEnginesCapturesAgainstItsSupersampledReference) {
   // Half the edge pixel's sub-pixels are white: 0.5 in linear light is 188 in sRGB.
   capture("exact", [](int x) { return uint8_t(x < 8 ? 0 : x == 8 ? 188 : 255); });
   capture("jagged", [](int x) { return uint8_t(x <= 8 ? 0 : 255); });
-  capture("bright", [](int x) { return uint8_t(x < 8 ? 2 : x == 8 ? 188 : 255); });
+  capture("dimmed", [](int x) { return uint8_t(x < 8 ? 0 : x == 8 ? 188 : x < 12 ? 255 : 253); });
+  std::vector<uint8_t> background(reference.size(), 255);
+  for (int y = 0; y < h * f; ++y)
+    for (int x = 0; x < w * f; ++x)
+      for (int c = 0; c < 3; ++c) background[(size_t(y) * w * f + x) * 4 + c] = x >= 40 ? 255 : 0;
+  std::filesystem::create_directories(dir + "/ref");
+  app::writeImage8(dir + "/ref/background.png", w * f, h * f, background);
+  app::writeImage8(dir + "/ref/reference.png", w * f, h * f, reference);
   std::ofstream(dir + "/capture.jsonl")
       << R"({"spec": "off", "image": "jagged.png", "wall_ms": 10, "gl_errors": 0, "retroaa": {}})"
       << "\n"
       << R"({"spec": "edge", "image": "exact.png", "wall_ms": 25, "gl_errors": 0,)"
       << R"( "retroaa": {"evaluations_per_pixel": 1.25, "plugin_bytes": 1048576, "passes": {"resolve": 1.5}}})"
       << "\n"
-      << R"({"spec": "fxaa", "image": "bright.png", "wall_ms": 12})"
+      << R"({"spec": "fxaa", "image": "dimmed.png", "wall_ms": 12})"
       << "\n"
       << R"({"spec": "broken", "error": "not selected"})"
       << "\n";
 
-  CliRun r = runCli("score " + dir + " --reference " + dir + "/reference.png --factor 4");
+  CliRun r = runCli("score " + dir + " --reference " + dir + "/ref/reference.png --factor 4");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("broken was not captured: not selected"), std::string::npos) << r.output;
   nlohmann::json report;
@@ -284,9 +292,10 @@ TEST(Cli, ScoreRatesAForeignEnginesCapturesAgainstItsSupersampledReference) {
   EXPECT_GT(report[1]["edge_psnr_db"].get<double>(), 45.0) << "the box filter itself";
   EXPECT_DOUBLE_EQ(report[1]["wall_vs_off"].get<double>(), 2.5);
   EXPECT_DOUBLE_EQ(report[1]["evaluations_per_pixel"].get<double>(), 1.25);
-  // Off equals the reference away from the edge; `bright` changes the black half of those pixels.
-  EXPECT_DOUBLE_EQ(report[1]["background_kept"].get<double>(), 1.0);
-  EXPECT_NEAR(report[2]["background_kept"].get<double>(), 0.5, 0.07);
+  // Sky pixels: x = 11..14 (all 3x3 neighbours marked), rows 1..10. `dimmed` changes x = 12..14.
+  EXPECT_EQ(report[0]["sky_pixels"], 40);
+  EXPECT_DOUBLE_EQ(report[1]["sky_kept"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(report[2]["sky_kept"].get<double>(), 0.25);
 
   r = runCli("score " + dir + " --reference " + dir + "/reference.png --factor 2");
   EXPECT_EQ(r.exitCode, 2);

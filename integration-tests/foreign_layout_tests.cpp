@@ -39,7 +39,9 @@ struct MiniatureStk {
   host::Texture depth = host::makeTexture2D(GL_DEPTH24_STENCIL8, kWidth, kHeight, "mini.depth");
   host::Texture diffuse = host::makeTexture2D(GL_R11F_G11F_B10F, kWidth, kHeight, "mini.diffuse");
   host::Texture specular = host::makeTexture2D(GL_R11F_G11F_B10F, kWidth, kHeight, "mini.specular");
-  GLuint gbuffer = 0, light = 0;
+  host::Texture display = host::makeTexture2D(GL_RGBA8, kWidth, kHeight, "mini.display");
+  GLuint gbuffer = 0, light = 0, displayTarget = 0;
+  float curvature = 0;  // surface A's normal turns by this (in x) per pixel: a curved surface
 
   MiniatureStk() {
     glCreateFramebuffers(1, &gbuffer);
@@ -52,10 +54,13 @@ struct MiniatureStk {
     glNamedFramebufferTexture(light, GL_COLOR_ATTACHMENT0, diffuse, 0);
     glNamedFramebufferTexture(light, GL_COLOR_ATTACHMENT1, specular, 0);
     glNamedFramebufferDrawBuffers(light, 2, buffers);
+    glCreateFramebuffers(1, &displayTarget);
+    glNamedFramebufferTexture(displayTarget, GL_COLOR_ATTACHMENT0, display, 0);
   }
   ~MiniatureStk() {
     glDeleteFramebuffers(1, &gbuffer);
     glDeleteFramebuffers(1, &light);
+    glDeleteFramebuffers(1, &displayTarget);
   }
 
   retroaa::GBufferLayout layout() const {
@@ -71,6 +76,8 @@ struct MiniatureStk {
     layout.lightFramebuffer = light;
     layout.lightTexture = diffuse;
     layout.extraLightTextures = {specular};
+    layout.displayFramebuffer = displayTarget;
+    layout.displayTexture = display;
     return layout;
   }
 
@@ -87,15 +94,18 @@ struct MiniatureStk {
     glDepthFunc(GL_ALWAYS);
     const std::string source = std::string("#version 450 core\n") + kShared + R"(
 uniform vec3 uAlbedoA, uAlbedoB, uNormalA, uNormalB;
+uniform float uCurvature;
 layout(location = 0) out vec4 outAlbedo;
 layout(location = 1) out vec4 outNormal;
 void main() {
   bool a = onA(floor(gl_FragCoord.xy) + gl_SamplePosition);  // reading it runs this once per sample
   outAlbedo = vec4(a ? uAlbedoA : uAlbedoB, 0.0);
-  outNormal = vec4(0.5 * EncodeNormal(a ? uNormalA : uNormalB) + 0.5, 0.25, 0.75);
+  vec3 normalA = normalize(uNormalA + vec3(uCurvature * floor(gl_FragCoord.x), 0.0, 0.0));
+  outNormal = vec4(0.5 * EncodeNormal(a ? normalA : uNormalB) + 0.5, 0.25, 0.75);
   gl_FragDepth = a ? 0.9 : 0.99;
 })";
-    drawWithFragment(source.c_str(), [](GLuint p) {
+    drawWithFragment(source.c_str(), [this](GLuint p) {
+      glProgramUniform1f(p, glGetUniformLocation(p, "uCurvature"), curvature);
       glProgramUniform3fv(p, glGetUniformLocation(p, "uAlbedoA"), 1, &kAlbedoA.x);
       glProgramUniform3fv(p, glGetUniformLocation(p, "uAlbedoB"), 1, &kAlbedoB.x);
       glProgramUniform3fv(p, glGetUniformLocation(p, "uNormalA"), 1, &kNormalA.x);
@@ -145,7 +155,8 @@ std::unique_ptr<retroaa::Plugin> createPlugin(const MiniatureStk& host, const st
 
 void runFrame(MiniatureStk& host, retroaa::Plugin& plugin) {
   host.solidPass(plugin.geometryFramebuffer());
-  ASSERT_TRUE(plugin.resolve({1.396f, 1.0f, 1200.0f}));  // SuperTuxKart's planes
+  ASSERT_TRUE(plugin.resolve({1.396f, 1.0f, 1200.0f}));                             // SuperTuxKart's planes
+  if (const GLuint prepass = plugin.prepassFramebuffer()) host.solidPass(prepass);  // coverage, reconstruct
   ASSERT_TRUE(plugin.shade([&](GLuint target) { host.lighting(target); }));
   ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
@@ -258,4 +269,36 @@ TEST(ForeignLayout, AModelPassWithMultisamplingOffIsNamedInAWarningOnce) {
   runFrame(host, *plugin);
   glEnable(GL_MULTISAMPLE);
   EXPECT_EQ(multisampleWarnings(), 1);
+}
+
+TEST(ForeignLayout, ReconstructTakesTheSpheremapNormalsOfItsPrepass) {
+  // The stock single-sample frame, "tonemapped" as the light itself into the display; reconstruct then
+  // rebuilds sub-samples from its MSAA prepass, whose normals are STK's spheremap pairs. Pixels whose
+  // every sub-sample lies on their own surface keep their colour exactly; the edge's pixels change.
+  testing_support::context();
+  MiniatureStk host;
+  host.curvature = -0.15f;  // shading varies from pixel to pixel inside surface A
+  auto plugin = createPlugin(host, "reconstruct@samples=4");
+  ASSERT_TRUE(plugin);
+  runFrame(host, *plugin);
+  glBlitNamedFramebuffer(host.light, host.displayTarget, 0, 0, kWidth, kHeight, 0, 0, kWidth, kHeight,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  const auto before = host.read(host.display);
+  ASSERT_TRUE(plugin->post());
+  const auto after = host.read(host.display);
+  int interior = 0, changedEdge = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const float line = x + 0.37f * y;
+      const size_t p = size_t(y) * kWidth + x;
+      if (line < 10.3f - 2.5f || line > 10.3f + 1.5f) {
+        ++interior;
+        EXPECT_EQ(glm::vec3(after[p]), glm::vec3(before[p])) << "interior pixel " << x << "," << y;
+      } else {
+        changedEdge += glm::vec3(after[p]) != glm::vec3(before[p]);
+      }
+    }
+  EXPECT_GT(interior, kWidth * kHeight / 2);
+  EXPECT_GT(changedEdge, kHeight / 2) << "the edge's pixels mix both surfaces";
+  EXPECT_TRUE(plugin->warnings().empty()) << plugin->warnings().front();
 }

@@ -50,6 +50,10 @@ bool isEdge(ivec2 pixel) {
     differs = differs || abs(FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).w -
                              FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, 0).w) > 1.0 / 512.0;
 #endif
+#if NORMAL_ATTACHMENT >= 0 && NORMAL_ENCODING == NORMAL_SPHEREMAP  // zw: the host's material (STK: roughness, metallic)
+    differs = differs || any(greaterThan(abs(FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).zw -
+                                             FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, 0).zw), vec2(1.0 / 512.0)));
+#endif
     if (differs) return true;
 #elif EDGE_DETECTOR == DETECTOR_COVERAGE
     // The host's model shader runs once per pixel and primitive; every sample one primitive covers
