@@ -1,5 +1,6 @@
 // The host engine: context, depth encoding, scene files, model loading, the demo render, ground truth.
 #include "depth_codec.h"
+#include "image_io.h"
 #include "test_support.h"
 
 #include <nlohmann/json.hpp>
@@ -279,4 +280,43 @@ TEST(Record, FitOrbitsACameraThatFramesTheModels) {
   EXPECT_NEAR(target[2].get<float>(), -200.0f, 1e-3f);
   const CliRun empty = runCli("record --fit --scene /dev/null --out " + (dir / "x.json").string());
   EXPECT_EQ(empty.exitCode, 2) << empty.output;
+}
+
+TEST(Scene, NestingBeyondThirtyTwoLevelsIsRefusedAtOnce) {
+  // Under the 64 MiB cap, a file of nested arrays used to take gigabytes before its error.
+  std::string nested = R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "materials": [], "comment": )";
+  nested += std::string(200000, '[') + std::string(200000, ']') + "}";
+  const std::string error = sceneErrorOf(nested);
+  EXPECT_NE(error.find("nested more than 32 levels deep"), std::string::npos) << error.substr(0, 200);
+  // A scene nested as deep as any real one still parses.
+  EXPECT_EQ(sceneErrorOf(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "materials": [{"name": "m"}],
+                             "objects": [], "comment": [[[[[["deep enough"]]]]]]})"),
+            "");
+}
+
+TEST(Model, TexturesNamedWithBackslashesAreFoundAndAMissingOneIsNamed) {
+  // OBJ and COLLADA files written on Windows name their textures ".\tex.png", "..\dir\tex.png".
+  const auto dir = std::filesystem::temp_directory_path() / "retroaa_backslash_model";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "maps");
+  std::vector<uint8_t> texels(4 * 4 * 4, 200);
+  app::writeImage8((dir / "maps" / "tex.png").string(), 4, 4, texels);
+  auto writeModel = [&](const std::string& textureName) {
+    std::ofstream(dir / "m.mtl") << "newmtl painted\nKd 1 1 1\nmap_Kd " << textureName << "\n";
+    std::ofstream(dir / "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n"
+                                    "usemtl painted\nf 1/1/1 2/2/1 3/3/1\n";
+  };
+  writeModel(".\\maps\\tex.png");
+  const std::vector<host::ModelPart> parts = host::loadModel((dir / "m.obj").string());
+  ASSERT_FALSE(parts.empty());
+  bool textured = false;
+  for (const host::ModelPart& part : parts) textured = textured || part.maps.albedo != nullptr;
+  EXPECT_TRUE(textured) << "the backslash path reached the texture";
+  writeModel(".\\maps\\missing.png");
+  try {
+    host::loadModel((dir / "m.obj").string());
+    ADD_FAILURE() << "no error for a missing texture";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("missing.png: texture does not exist"), std::string::npos) << e.what();
+  }
 }

@@ -45,6 +45,7 @@ SharedTextureImage readTextureFile(const std::string& path) {
   // Only regular files of bounded size: /dev/zero or a FIFO would never end.
   constexpr std::uintmax_t kMaxTextureFileBytes = 256u << 20;
   std::error_code error;
+  if (!std::filesystem::exists(path, error)) throw TextureError(path + ": texture does not exist");
   if (!std::filesystem::is_regular_file(path, error)) throw TextureError(path + ": texture is not a regular file");
   if (std::filesystem::file_size(path, error) > kMaxTextureFileBytes)
     throw TextureError(path + ": texture file is larger than 256 MiB");
@@ -57,8 +58,8 @@ SharedTextureImage decodeTextureBytes(const uint8_t* data, size_t size, const st
                                       const std::string& label) {
   OIIO::Filesystem::IOMemReader memory(const_cast<uint8_t*>(data), size);
   // The name only picks the format reader; the texels come from `memory`.
-  auto input = OIIO::ImageInput::open("embedded." + (formatHint.empty() ? std::string("png") : formatHint), nullptr,
-                                      &memory);
+  auto input =
+      OIIO::ImageInput::open("embedded." + (formatHint.empty() ? std::string("png") : formatHint), nullptr, &memory);
   if (!input) throw TextureError(label + ": cannot decode embedded texture: " + OIIO::geterror());
   return readRgba8(*input, label);
 }

@@ -264,7 +264,10 @@ SharedTextureImage readMaterialTexture(const aiScene& scene, const aiMaterial& m
       image = raw;
     }
   } else {
-    image = readTextureFile((modelDirectory / key).string());
+    // Files written on Windows name their textures with backslashes (".\\tex.jpg"): a separator here too.
+    std::string relative = key;
+    std::replace(relative.begin(), relative.end(), '\\', '/');
+    image = readTextureFile((modelDirectory / relative).string());
   }
   size_t bytes = image->rgba.size();
   for (const auto& [other, held] : cache) bytes += held->rgba.size();
@@ -279,9 +282,9 @@ std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::strin
   Assimp::Importer importer;
   // FlipUVs: assimp turns glTF's top-down coordinates (and OBJ's bottom-up ones) into bottom-up; images
   // are uploaded top-down, so every format is brought back to top-down.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                                     aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                                                     aiProcess_FlipUVs);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_SortByPType | aiProcess_FlipUVs);
   if (!scene || !scene->mRootNode) throw ModelLoadError(path + ": cannot load model: " + importer.GetErrorString());
   std::vector<Mesh> meshes(std::max(1u, scene->mNumMaterials));
   std::vector<std::tuple<std::string, unsigned, unsigned>> dropped;

@@ -305,10 +305,23 @@ size_t Scene::triangleCount() const {
 Scene parseScene(const std::string& jsonText, const std::string& fileName, const std::string& baseDirectory,
                  bool requireCameraPath) {
   json document;
+  // A scene is a few levels deep; a file of nested arrays under the size cap would otherwise take
+  // gigabytes and seconds before any error. The parser stops at the first value past the depth.
+  constexpr int kMaxSceneNesting = 32;
+  bool tooDeep = false;
   try {
-    document = json::parse(jsonText);
+    document = json::parse(jsonText, [&tooDeep](int depth, json::parse_event_t event, json&) {
+      if (depth > kMaxSceneNesting &&
+          (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start))
+        tooDeep = true;
+      if (tooDeep) throw std::length_error("nesting");
+      return true;
+    });
   } catch (const json::exception& e) {  // syntax errors, and numbers beyond double's range
     throw SceneError(fileName, "(document)", std::string("not valid JSON: ") + e.what());
+  } catch (const std::length_error&) {
+    if (!tooDeep) throw;
+    throw SceneError(fileName, "(document)", "nested more than " + std::to_string(kMaxSceneNesting) + " levels deep");
   }
   const Reader root(fileName, document, "$");
   root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient", "sky_color",
