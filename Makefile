@@ -44,7 +44,7 @@ stk: build stk-deps
 
 # Every method in SuperTuxKart on two of its tracks at 640x480 4x against its stock render at 2560x1920
 # box-filtered: out/stk/<track>/report.md (+ .json, the images and crops).
-STK_TRACKS ?= cornfield_crossing lighthouse
+STK_TRACKS ?= cornfield_crossing olivermath
 STK_FRAME ?= 40
 STK_REPORT_METHODS = off stk-mlaa fxaa smaa resolve resolve/front resolve/back resolve/fso coverage reconstruct \
   edge adaptive aggregate smaa-s2x per-sample resolve+fxaa resolve+smaa resolve+coverage resolve+reconstruct \

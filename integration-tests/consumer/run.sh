@@ -47,6 +47,10 @@ cmake -S "$source" -B "$work/library-only" -DRETROAA_BUILD_TOOLS=OFF -DCMAKE_DIS
   -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON -DCMAKE_DISABLE_FIND_PACKAGE_glfw3=ON >/dev/null
 [ -f "$work/library-only/plugin/Makefile" ] && [ ! -d "$work/library-only/engine-patch" ] && [ ! -d "$work/library-only/app" ] || { echo "library-only: unexpected tree"; exit 1; }
 echo "library-only: configured (plugin only)"
+# With GoogleTest installed, -DRETROAA_BUILD_TOOLS=OFF still builds no test.
+cmake -S "$source" -B "$work/library-with-gtest" -DRETROAA_BUILD_TOOLS=OFF >/dev/null
+[ ! -d "$work/library-with-gtest/plugin/tests" ] || { echo "library-only: builds the unit tests"; exit 1; }
+echo "library-only: no tests where GoogleTest is installed"
 echo "== a shared library (BUILD_SHARED_LIBS=ON): the public API exported, nothing else of retroaa's"
 cmake -S "$source" -B "$work/shared" -DRETROAA_BUILD_TOOLS=OFF -DBUILD_SHARED_LIBS=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/shared" -j2 >/dev/null
