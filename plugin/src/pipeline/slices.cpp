@@ -222,23 +222,27 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     }
     {
       ScopedPass timed(context, "slices.composite");
-      context.beginFullscreenPass(compositeTarget_.get());
-      sliceStencil(slice);            // slice 0 overwrites the whole target, later slices add
-      glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB light target (a display lit directly) adds in linear light
-      if (slice > 0) {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ONE);
-      }
-      glBindTextureUnit(1, counts_.get());
-      if (plan.compositeProgram) {
-        plan.compositeProgram->use();
-        if (plan.bindCompositeInputs) plan.bindCompositeInputs();
-        plan.compositeProgram->set("uSlice", slice);
-      } else {
-        composite_.use();
-      }
-      glBindTextureUnit(0, sliceLight);
-      context.drawFullscreen();
+      // weight × light into `target`: slice 0 overwrites the whole target, later slices add.
+      auto composite = [&](GLuint target, GLuint light) {
+        context.beginFullscreenPass(target);
+        sliceStencil(slice);
+        glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB light target (a display lit directly) adds in linear light
+        if (slice > 0) {
+          glEnable(GL_BLEND);
+          glBlendFunc(GL_ONE, GL_ONE);
+        }
+        glBindTextureUnit(1, counts_.get());
+        if (plan.compositeProgram) {
+          plan.compositeProgram->use();
+          if (plan.bindCompositeInputs) plan.bindCompositeInputs();
+          plan.compositeProgram->set("uSlice", slice);
+        } else {
+          composite_.use();
+        }
+        glBindTextureUnit(0, light);
+        context.drawFullscreen();
+      };
+      composite(compositeTarget_.get(), sliceLight);
       // The host's further light outputs, each through the same weights.
       for (size_t k = 0; k < extraLight_.size(); ++k) {
         GLuint extraLight = extraLight_[k].get();
@@ -246,22 +250,8 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
           auto filtered = plan.filterSliceLight(slice, extraLight);
           if (!filtered) return filtered.error();
           extraLight = filtered.value();
-          if (plan.compositeProgram)
-            plan.compositeProgram->use();
-          else
-            composite_.use();
-          if (plan.bindCompositeInputs) plan.bindCompositeInputs();
-          glBindTextureUnit(1, counts_.get());
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, extraCompositeTarget_[k].get());
-        sliceStencil(slice);
-        glEnable(GL_FRAMEBUFFER_SRGB);
-        if (slice > 0) {
-          glEnable(GL_BLEND);
-          glBlendFunc(GL_ONE, GL_ONE);
-        }
-        glBindTextureUnit(0, extraLight);
-        context.drawFullscreen();
+        composite(extraCompositeTarget_[k].get(), extraLight);
       }
     }
     if (skippable) glEndConditionalRender();
