@@ -110,6 +110,10 @@ int runRender(const RenderOptions& options) {
     radiance = truth.radiance;
   } else {
     session.configure(options.method.empty() ? options.base : parseMethodSpec(options.method, options.base).config);
+    // A history (temporal) converges over frames: the camera held still for as many as it needs.
+    const int stillFrames = historyWarmUpFrames(session.config);
+    if (stillFrames > 0) std::fprintf(stderr, "render: %d frames of a still camera accumulated first\n", stillFrames);
+    for (int i = 0; i < stillFrames; ++i) session.renderer->renderFrame(camera);
     session.renderer->renderFrame(camera);
     display = session.renderer->readDisplay();
     radiance = session.renderer->readLight();

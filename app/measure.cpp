@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace app {
 
@@ -130,6 +131,11 @@ double measureShadingFloor(Session& session, const host::Camera& camera) {
   }
   session.configure(previous, previousMethod);
   return mean;
+}
+
+int historyWarmUpFrames(const retroaa::Config& config) {
+  if (config.method != retroaa::Method::Temporal && !config.temporalFilter) return 0;
+  return std::max(2 * config.temporalJitterLength, int(std::ceil(4.0f / config.temporalBlend)));
 }
 
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,

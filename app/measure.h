@@ -41,6 +41,10 @@ struct Measurement {
   ErrorMetrics error;                                      // against the ground truth, edge figures on its edges
   std::optional<double> psnrVsPerSampleDb;
 };
+// Frames of one camera a method that carries a history (temporal) renders before it is judged: two
+// rounds of its jitter sequence and 4 / temporal_blend frames (the history's weight of its first frame
+// then below e^-4 ≈ 2 %); 0 for every other method.
+int historyWarmUpFrames(const retroaa::Config& config);
 // Renders `camera` with the session's config: `wallFrames` back-to-back frames with every statistic
 // off and no wait until the last (wall_ms: the time an engine sees), then `warmUpFrames` frames
 // (shader compilation, first-touch allocation), then `timedFrames` with GPU timers and the plugin's

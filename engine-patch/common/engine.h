@@ -50,11 +50,17 @@ class Engine {
   bool measureTime = false;  // timer queries around each pass (waits for the GPU)
   const HostTimings& timings() const { return timings_; }
   // The material textures' LOD bias (0 by default); the ground truth sets −log2 of its samples per axis.
-  void setTextureLodBias(float bias) { materialTextures_->setLodBias(bias); }
+  // An AA module's own bias (FrameHooks::textureLodBias) adds to it in each frame.
+  void setTextureLodBias(float bias) {
+    textureLodBias_ = bias;
+    materialTextures_->setLodBias(bias);
+  }
   void setMaterialMapsOn(bool on) { materialTextures_->setMapsOn(on); }
   const MaterialTextures& materialTextures() const { return *materialTextures_; }
 
  protected:
+  void applyTextureLodBias(float moduleBias) { materialTextures_->setLodBias(textureLodBias_ + moduleBias); }
+  float textureLodBias_ = 0.0f;
   HostTimings timings_;
   std::unique_ptr<MaterialTextures> materialTextures_;  // created with the scene's meshes
 };

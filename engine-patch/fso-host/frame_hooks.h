@@ -30,6 +30,7 @@ struct FrameView {
   int width = 0, height = 0;
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres
   glm::mat4 view{1.0f};                     // world to view
+  glm::mat4 projection{1.0f};               // view to clip, without an AA module's jitter
 };
 
 // Draws the frame's models again into `target` with the model shaders; the target's draw buffers
@@ -45,6 +46,11 @@ class FrameHooks {
   virtual ~FrameHooks() = default;
   // opengl_setup_scene_textures(): the host (re)created its targets.
   virtual void targetsCreated(const HostTargets&) {}
+  // gr_set_proj_matrix(): a sub-pixel shift, in pixels, of this frame's projection (temporal AA).
+  virtual glm::vec2 projectionJitter() { return glm::vec2(0.0f); }
+  // The material samplers' mip bias the AA module asks for (temporal AA: sharper mips, which the history
+  // averages); FSO sets its samplers' bias in opengl_tcache_set() (GL_TEXTURE_LOD_BIAS).
+  virtual float textureLodBias() { return 0.0f; }
   // gr_opengl_deferred_lighting_begin(): the framebuffer the background and models render into.
   virtual GLuint modelPassFramebuffer(GLuint stockGbuffer) { return stockGbuffer; }
   // ...and how many times the host's width and height that framebuffer is (the model pass's viewport).

@@ -116,7 +116,8 @@ void Renderer::setStockPath(bool stock) {
 void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   const int width = targets_.width, height = targets_.height;
   const glm::mat4 view = camera.view();
-  const glm::mat4 projection = camera.projection(width, height, jitterPixels);
+  const glm::mat4 projection = camera.projection(width, height, jitterPixels + hooks_->projectionJitter());
+  applyTextureLodBias(hooks_->textureLodBias());
   GLuint timestamps[5] = {};
   if (measureTime) glGenQueries(5, timestamps);
   if (measureTime) glQueryCounter(timestamps[0], GL_TIMESTAMP);
@@ -159,6 +160,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   frameView.nearPlane = camera.nearPlane;
   frameView.farPlane = camera.farPlane;
   frameView.view = view;
+  frameView.projection = camera.projection(width, height, jitterPixels);
   hooks_->modelPassEnd(frameView);
   hooks_->modelPrepass([&](GLuint target) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 4, -1, "host.model_prepass");

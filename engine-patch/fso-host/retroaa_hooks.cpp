@@ -5,6 +5,9 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
+
+#include <glm/gtc/type_ptr.hpp>
 
 namespace patch {
 
@@ -38,6 +41,16 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
   layout.displayFramebuffer = targets.displayFramebuffer;
   layout.displayTexture = targets.displayTexture;
   return layout;
+}
+
+retroaa::FrameInfo frameInfo(const host::FrameView& view) {
+  retroaa::FrameInfo frame;
+  frame.verticalFovRadians = view.verticalFovRadians;  // FSO passes its projection's fov
+  frame.nearPlane = view.nearPlane;
+  frame.farPlane = view.farPlane;
+  std::memcpy(frame.viewMatrix, glm::value_ptr(view.view), sizeof frame.viewMatrix);
+  std::memcpy(frame.projectionMatrix, glm::value_ptr(view.projection), sizeof frame.projectionMatrix);
+  return frame;
 }
 
 retroaa::Result<std::unique_ptr<RetroaaHooks>> RetroaaHooks::create(const host::HostTargets& targets,
@@ -75,11 +88,7 @@ GLuint RetroaaHooks::modelPassFramebuffer(GLuint) { return plugin_->geometryFram
 
 // gr_opengl_deferred_lighting_msaa(): the depth-aware resolve replaces FSO's.
 void RetroaaHooks::modelPassEnd(const host::FrameView& view) {
-  retroaa::FrameInfo frame;
-  frame.verticalFovRadians = view.verticalFovRadians;  // FSO passes its projection's fov
-  frame.nearPlane = view.nearPlane;
-  frame.farPlane = view.farPlane;
-  report(plugin_->resolve(frame));
+  report(plugin_->resolve(frameInfo(view)));
 }
 
 // (no FSO call site yet: a second model loop into the plugin's prepass; see docs/methods/coverage.md)

@@ -13,6 +13,8 @@ namespace patch {
 
 // The host's G-buffer described to the plugin by role (FSO's layout and depth encoding).
 retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets);
+// The frame's camera as the plugin takes it (both in-repo hosts hand their camera over as a FrameView).
+retroaa::FrameInfo frameInfo(const host::FrameView& view);
 
 class RetroaaHooks : public host::FrameHooks {
  public:
@@ -25,6 +27,8 @@ class RetroaaHooks : public host::FrameHooks {
   void targetsCreated(const host::HostTargets& targets) override;
   GLuint modelPassFramebuffer(GLuint stockGbuffer) override;
   int modelPassScale() override { return plugin_->geometryScale(); }
+  glm::vec2 projectionJitter() override { return {plugin_->jitter().x, plugin_->jitter().y}; }
+  float textureLodBias() override { return plugin_->textureLodBias(); }
   void modelPassEnd(const host::FrameView& view) override;
   void modelPrepass(const host::ModelPrepass& pass) override;
   void lighting(const host::LightingPass& pass, GLuint stockLightFramebuffer) override;

@@ -1,6 +1,7 @@
 // The second host's patch: the only code of that host that knows retroaa (with second_host_patch.cpp).
 #pragma once
 #include "retroaa/plugin.h"
+#include "retroaa_hooks.h"
 #include "second_renderer.h"
 
 #include <cstdio>
@@ -15,8 +16,10 @@ class SecondHostHooks : public host::SecondSeams {
   void targetsCreated(const host::SecondTargets& t) override { report(plugin_->resize(describeSecondHost(t))); }
   GLuint geometryTarget(GLuint) override { return plugin_->geometryFramebuffer(); }
   int geometryScale() override { return plugin_->geometryScale(); }
+  glm::vec2 projectionJitter() override { return {plugin_->jitter().x, plugin_->jitter().y}; }
+  float textureLodBias() override { return plugin_->textureLodBias(); }
   void geometryDone(const host::FrameView& v) override {
-    report(plugin_->resolve({v.verticalFovRadians, v.nearPlane, v.farPlane}));
+    report(plugin_->resolve(frameInfo(v)));
   }
   void geometryAgain(const std::function<void(GLuint)>& draw) override {
     if (const GLuint target = plugin_->prepassFramebuffer()) draw(target);  // coverage, reconstruct

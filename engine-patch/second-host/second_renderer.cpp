@@ -108,8 +108,10 @@ void SecondRenderer::drawObjects(const Program& program, const glm::mat4& viewPr
   materialTextures_->unbind();
 }
 
-void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
+void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 hostJitter) {
   const int width = targets_.width, height = targets_.height;
+  const glm::vec2 jitterPixels = hostJitter + seams_->projectionJitter();
+  applyTextureLodBias(seams_->textureLodBias());
   const glm::mat4 viewProjection = projection(camera, jitterPixels) * camera.view();
   GLuint timestamps[5] = {};  // frame start, geometry, its hooks, lighting, frame end
   if (measureTime) glGenQueries(5, timestamps);
@@ -148,6 +150,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   view.nearPlane = camera.nearPlane;
   view.farPlane = camera.farPlane;
   view.view = camera.view();
+  view.projection = projection(camera, hostJitter);
   seams_->geometryDone(view);
   seams_->geometryAgain([&](GLuint target) { geometryInto(target, 1); });
   stamp(2);

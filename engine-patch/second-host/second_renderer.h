@@ -33,7 +33,9 @@ class SecondSeams {
   virtual void targetsCreated(const SecondTargets&) {}
   // The framebuffer the geometry pass clears and draws into (same draw buffers as the host's own).
   virtual GLuint geometryTarget(GLuint own) { return own; }
-  virtual int geometryScale() { return 1; }  // how many times the host's size that target is
+  virtual int geometryScale() { return 1; }
+  virtual glm::vec2 projectionJitter() { return glm::vec2(0.0f); }  // this frame's sub-pixel shift (temporal AA)
+  virtual float textureLodBias() { return 0.0f; }                   // added to the material samplers' mip bias  // how many times the host's size that target is
   virtual void geometryDone(const FrameView&) {}
   // After the geometry pass: an AA module that wants the geometry drawn once more (a multisampled depth
   // and normal prepass) gets `draw`, which clears the framebuffer it is given and draws into it.

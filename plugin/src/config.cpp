@@ -283,6 +283,38 @@ const std::vector<Setter>& setters() {
         "full-screen pass with a warning)"},
        [](Config& c, const std::string& v) { return parseBool("reconstruct_compute", v, c.reconstructCompute); },
        [](const Config& c) { return std::string(c.reconstructCompute ? "on" : "off"); }},
+      {{"temporal_filter", "off", "on, off",
+        "temporal accumulation on top of another method (resolve+temporal, reconstruct+temporal): the host "
+        "jitters its projection by Plugin::jitter()"},
+       [](Config& c, const std::string& v) { return parseBool("temporal_filter", v, c.temporalFilter); },
+       [](const Config& c) { return std::string(c.temporalFilter ? "on" : "off"); }},
+      {{"temporal_blend", "0.1", "0.02 .. 1",
+        "temporal: the current frame's weight in the history; smaller is smoother and converges over more frames "
+        "(about 2/weight), ghosting longer; 1 keeps no history; free per frame"},
+       [](Config& c, const std::string& v) { return parseFloat("temporal_blend", v, 0.02f, 1.0f, c.temporalBlend); },
+       [](const Config& c) { return formatFloat(c.temporalBlend); }},
+      {{"temporal_jitter_length", "8", "1 .. 64",
+        "temporal: frames in the Halton (2, 3) jitter sequence, the sub-pixel positions a still pixel is sampled at; "
+        "1 is no jitter; resets the history"},
+       [](Config& c, const std::string& v) {
+         return parseInt("temporal_jitter_length", v, 1, 64, c.temporalJitterLength);
+       },
+       [](const Config& c) { return std::to_string(c.temporalJitterLength); }},
+      {{"temporal_lod_bias", "-1", "-3 .. 0",
+        "temporal: the mip bias the host adds to its material samplers (Plugin::textureLodBias): sharper mips whose "
+        "detail the history averages over the jitter; FSR 2 advises -1 at native resolution"},
+       [](Config& c, const std::string& v) {
+         return parseFloat("temporal_lod_bias", v, -3.0f, 0.0f, c.temporalLodBias);
+       },
+       [](const Config& c) { return formatFloat(c.temporalLodBias); }},
+      {{"temporal_before_tonemap", "on", "on, off",
+        "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather than on "
+        "the display (where the layout has no single float light target, after tonemapping with a warning); resets "
+        "the history"},
+       [](Config& c, const std::string& v) {
+         return parseBool("temporal_before_tonemap", v, c.temporalBeforeTonemap);
+       },
+       [](const Config& c) { return std::string(c.temporalBeforeTonemap ? "on" : "off"); }},
       {{"restore_gbuffer_after_shade", "on", "on, off",
         "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "
         "surface, not the last slice; off saves one resolve pass"},

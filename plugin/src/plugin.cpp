@@ -407,6 +407,17 @@ GLuintHandle Plugin::geometryFramebuffer() const {
   return impl_->msaa ? impl_->msaa->framebuffer() : impl_->context.layout.gbufferFramebuffer;
 }
 
+Jitter Plugin::jitter() const {
+  const PluginContext& context = impl_->context;
+  if (!runsTemporal(context.config)) return {};
+  return temporalJitter(context.statistics->framesStarted() + 1, context.config.temporalJitterLength);
+}
+
+float Plugin::textureLodBias() const {
+  const Config& config = impl_->context.config;
+  return runsTemporal(config) ? config.temporalLodBias : 0.0f;
+}
+
 Status Plugin::resolve(const FrameInfo& frame) {
   PluginContext& context = impl_->context;
   impl_->beginFrame();
@@ -503,6 +514,12 @@ Status Plugin::reconfigure(const Config& config) {
     }
   }
   impl_->configureBudget(previous);
+  // A history (temporal) starts anew when the image changes: not for the statistics or the blend weight.
+  Config sameImage = previous;
+  sameImage.measureGpuTime = context.config.measureGpuTime;
+  sameImage.temporalBlend = context.config.temporalBlend;
+  if (toConfigText(sameImage) != toConfigText(context.config))
+    for (ActiveTechnique& active : impl_->techniques) active.technique->resetHistory();
   // Figures measured under another config would be reported as this one's.
   if (toConfigText(context.config) != toConfigText(previous)) context.statistics->release();
   return status;

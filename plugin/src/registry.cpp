@@ -15,6 +15,7 @@ Result<std::unique_ptr<Technique>> createCoverageTechnique(PluginContext&, Share
 Result<std::unique_ptr<Technique>> createReconstructTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createSmaaTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createSmaaS2xTechnique(PluginContext&, SharedTargets&);
+Result<std::unique_ptr<Technique>> createTemporalTechnique(PluginContext&, SharedTargets&);
 
 namespace {
 
@@ -60,6 +61,14 @@ std::vector<TechniqueRow>& rows() {
        kStoragePostTarget,
        createReconstructTechnique,
        [](const Config& c) { return c.reconstructFilter && usesMsaa(c.method); },
+       kStoragePostTarget},
+      {{Method::Temporal, "temporal",
+        "jittered projection; each frame blended into a reprojected, neighbourhood-clipped history", false, 1,
+        "temporal,resolve+temporal,reconstruct+temporal", "temporal",
+        "temporal@temporal_blend=0.2,temporal,temporal@temporal_blend=0.05", "temporal_filter"},
+       kStoragePostTarget,
+       createTemporalTechnique,
+       [](const Config& c) { return c.temporalFilter; },
        kStoragePostTarget},
       {{Method::Edge, "edge", "edge pixels (a detector decides) lit once per sample through slices", true, 1, "edge",
         "edge", "edge@samples=2,edge,edge@samples=8,edge@edge_detector=plane"},

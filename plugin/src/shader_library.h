@@ -28,6 +28,9 @@ class ShaderProgram {
   void set(const char* name, float value) const { glProgramUniform1f(get(), location(name), value); }
   void set(const char* name, float x, float y) const { glProgramUniform2f(get(), location(name), x, y); }
   void setVec4(const char* name, const float* xyzw) const { glProgramUniform4fv(get(), location(name), 1, xyzw); }
+  void setMatrix4(const char* name, const float* columnMajor) const {
+    glProgramUniformMatrix4fv(get(), location(name), 1, GL_FALSE, columnMajor);
+  }
   void setVec2Array(const char* name, int count, const float* xy) const {
     glProgramUniform2fv(get(), location(name), count, xy);
   }

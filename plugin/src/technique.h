@@ -38,6 +38,9 @@ class Technique {
   // Whether budget_ms can steer this technique under `config` (through PluginContext::budgetScale).
   virtual bool followsBudget(const Config&) const { return false; }
   virtual uint64_t bytes() const { return 0; }
+  // The config changed in a way that changes the image (Plugin::reconfigure): state carried from frame
+  // to frame (a history) starts anew.
+  virtual void resetHistory() {}
   // Whether the GL objects built for the config it was created under still serve `config`; if not,
   // the plugin rebuilds the technique. (A new sample count or layout rebuilds every technique.)
   virtual bool keepsObjectsFor(const Config& config) const = 0;
@@ -111,6 +114,11 @@ struct TechniqueRow {
   uint32_t stackedStorage = kStorageNone;
   bool postLast = false;  // its post pass runs after every other active technique's
 };
+
+// `temporal`'s jitter for frame `frame` (frames started, counting this one) of a sequence of `length`
+// (methods/temporal.cpp), and whether `config` runs it (as the method or stacked).
+Jitter temporalJitter(uint64_t frame, int length);
+bool runsTemporal(const Config& config);
 
 // Every method, in the order listings use.
 const std::vector<TechniqueRow>& techniqueRegistry();

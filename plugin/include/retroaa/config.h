@@ -28,6 +28,8 @@ enum class Method : uint8_t {
   Smaa,         // Jimenez et al.: SMAA 1x after tonemapping (FreeSpace Open's -post_process_aa, -aa_preset 3..6) (1)
   SmaaS2x,      // SMAA S2x: SMAA 1x on two single-sample slices of the MSAA G-buffer, blended 50/50 (2)
   Ssaa,         // ordered-grid supersampling: an m×m supersampled G-buffer, every sub-position lit (m²)
+  Temporal,     // Karis-style TAA: the stock path with a jittered projection (Plugin::jitter), each frame blended
+                // into a reprojected, neighbourhood-clipped history (1)
 };
 
 // How `edge` decides that a pixel's samples see more than one surface.
@@ -138,6 +140,23 @@ struct Config {
   // every searching pixel holds up its neighbours' lanes. The same image. Where the target's format
   // takes no image stores (a three-channel or sRGB target), the full-screen pass, with a warning.
   bool reconstructCompute = false;
+  // Temporal accumulation stacked on another method (`resolve+temporal`, `reconstruct+temporal`): the
+  // host jitters its projection by Plugin::jitter() and the plugin blends each frame into a history.
+  bool temporalFilter = false;
+  // The weight of the current frame in the history, [0.02, 1]: smaller converges to a smoother image
+  // over more frames (≈ 2/weight) and ghosts longer; 1 keeps no history. Free to change every frame.
+  float temporalBlend = 0.1f;
+  // Frames in the jitter sequence (Halton 2, 3), [1, 64]: the sub-pixel positions a static pixel is
+  // sampled at. 1: no jitter (history only smooths flicker). Changing it resets the history.
+  int temporalJitterLength = 8;
+  // The mip bias the host adds to its material samplers (Plugin::textureLodBias), [-3, 0]: the history
+  // averages the sharper mips' detail over the jitter. FSR 2 advises -1 at native resolution.
+  float temporalLodBias = -1.0f;
+  // Accumulate on the host's HDR light target between lighting and tonemapping (radiance, as the ground
+  // truth averages; 0.5 dB closer to it than after tonemapping on the demo frame) rather than on the
+  // display. Where the layout has no single float light target (several light outputs, lighting
+  // straight into the display), after tonemapping with a warning. Resets the history.
+  bool temporalBeforeTonemap = true;
   // After a slice method's shade(), resolve the MSAA G-buffer into the host's G-buffer again, so passes
   // after lighting that read it (SSAO, fog, debug views) see the resolved surface, not the last slice's
   // samples. Off saves one resolve pass per frame where nothing reads the G-buffer after lighting.

@@ -63,7 +63,18 @@ class RETROAA_API Plugin {
   // NormalGloss attachment's location (every other draw buffer is GL_NONE). 0 when the method needs no
   // such pass. Valid until the next reconfigure() or resize().
   GLuintHandle prepassFramebuffer() const;
-  // After the model pass. Returns the first error of a pass (none are expected once create succeeded).
+  // Where `temporal` runs (as the method or stacked): this frame's sub-pixel offset of the projection,
+  // Halton (2, 3) over temporal_jitter_length frames; (0, 0) otherwise. Call it once before the model
+  // pass and shift the projection every pass of the frame uses (model pass, prepass, lighting) by it:
+  //   projection[2][0] += 2 * jitter.x / width;  projection[2][1] += 2 * jitter.y / height;
+  // (column-major; width and height of the layout). FrameInfo::projectionMatrix stays unshifted.
+  Jitter jitter() const;
+  // The mip bias to add to the host's material texture samplers while this method runs: where
+  // `temporal` runs, temporal_lod_bias (the history averages the sharper mips' detail over the jitter, as
+  // FSR 2 advises for native-resolution AA); 0 otherwise.
+  float textureLodBias() const;
+  // After the model pass, every frame and for every method (it also begins the frame). Returns the
+  // first error of a pass (none are expected once create succeeded).
   Status resolve(const FrameInfo& frame);
   // Runs `lighting` once per slice and composites; for single-slice methods, once into the host's
   // light framebuffer. Errors: WrongCallOrder when a method with an MSAA G-buffer is shaded without

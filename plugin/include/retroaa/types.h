@@ -150,8 +150,22 @@ struct FrameInfo {
   // Eq. 1's pixel footprint uses the horizontal one, derived from this and the layout's aspect ratio.
   float verticalFovRadians = 1.0f;
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres, for DepthBufferEncoding (and DepthSource::DepthBuffer)
-  // World to view, column-major as GL and GLM store it (DepthSource::WorldPosition only).
+  // World to view, column-major as GL and GLM store it (DepthSource::WorldPosition, and `temporal`).
   float viewMatrix[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  // `temporal`: the frame's perspective projection without the jitter, column-major (view to clip, GL
+  // conventions; reversed-Z and infinite far planes included). The plugin keeps the previous frame's
+  // view and projection itself and reprojects with them. All zero (the default): not given, and
+  // `temporal` keeps no history (with one warning).
+  float projectionMatrix[16] = {};
+  // `temporal`: the view does not continue the previous frame's (a cut, a teleport, a new level): the
+  // history is dropped and this frame starts a new one.
+  bool cameraCut = false;
+};
+
+// `temporal`: the sub-pixel offset, in pixels (x right, y up), by which the host shifts this frame's
+// projection (Plugin::jitter).
+struct Jitter {
+  float x = 0, y = 0;
 };
 
 // One plugin pass of a measured frame (Config::measureGpuTime).

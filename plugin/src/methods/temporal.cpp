@@ -1,0 +1,269 @@
+// `temporal`: jittered temporal accumulation (Karis, "High Quality Temporal Supersampling", SIGGRAPH
+// 2014; Salvi, "An Excursion in Temporal Supersampling", GDC 2016). The host shifts its projection each
+// frame by Plugin::jitter() (Halton 2, 3); this technique reprojects the previous output from the
+// host's depth and the two frames' matrices, clips it to this frame's neighbourhood and blends this
+// frame in (shaders/temporal/). As the method it runs on the stock single-sample path; stacked
+// (`temporal_filter=on`) after any other method's own passes. On the display after tonemapping, or on
+// the HDR light target before it (temporal_before_tonemap).
+#include <array>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "../shared_constants.h"
+#include "../technique.h"
+
+namespace retroaa {
+
+namespace {
+
+using Matrix4 = std::array<float, 16>;  // column-major, as GL stores it
+
+Matrix4 toMatrix(const float (&m)[16]) {
+  Matrix4 out;
+  for (int i = 0; i < 16; ++i) out[size_t(i)] = m[i];
+  return out;
+}
+
+Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
+  Matrix4 out{};
+  for (int column = 0; column < 4; ++column)
+    for (int row = 0; row < 4; ++row) {
+      double sum = 0;
+      for (int k = 0; k < 4; ++k) sum += double(a[size_t(k * 4 + row)]) * b[size_t(column * 4 + k)];
+      out[size_t(column * 4 + row)] = float(sum);
+    }
+  return out;
+}
+
+// Gauss-Jordan with partial pivoting, in double (a view matrix far from the origin loses digits in
+// float). False for a singular or non-finite matrix.
+bool invert(const Matrix4& m, Matrix4& out) {
+  double a[4][8];
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) {
+      a[row][column] = m[size_t(column * 4 + row)];
+      a[row][column + 4] = row == column ? 1.0 : 0.0;
+    }
+  for (int column = 0; column < 4; ++column) {
+    int pivot = column;
+    for (int row = column + 1; row < 4; ++row)
+      if (std::fabs(a[row][column]) > std::fabs(a[pivot][column])) pivot = row;
+    if (!(std::fabs(a[pivot][column]) > 1e-12)) return false;
+    for (int k = 0; k < 8; ++k) std::swap(a[column][k], a[pivot][k]);
+    const double scale = 1.0 / a[column][column];
+    for (int k = 0; k < 8; ++k) a[column][k] *= scale;
+    for (int row = 0; row < 4; ++row)
+      if (row != column) {
+        const double factor = a[row][column];
+        for (int k = 0; k < 8; ++k) a[row][k] -= factor * a[column][k];
+      }
+  }
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) out[size_t(column * 4 + row)] = float(a[row][column + 4]);
+  return true;
+}
+
+bool allZero(const Matrix4& m) {
+  for (float v : m)
+    if (v != 0.0f) return false;
+  return true;
+}
+
+bool allFinite(const Matrix4& m) {
+  for (float v : m)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+float halton(uint32_t index, uint32_t base) {
+  float fraction = 1.0f, result = 0.0f;
+  for (; index > 0; index /= base) {
+    fraction /= float(base);
+    result += fraction * float(index % base);
+  }
+  return result;
+}
+
+// Why the layout's light target cannot hold the history's input (empty: it can): the accumulation
+// needs one float target that is not the display.
+std::string whyNotBeforeTonemap(const GBufferLayout& layout) {
+  if (!layout.lightTexture) return "the layout names no lightTexture";
+  if (!layout.extraLightTextures.empty())
+    return "the layout's lighting writes " + std::to_string(1 + layout.extraLightTextures.size()) +
+           " outputs (extraLightTextures), which tonemapping combines";
+  GLint redType = 0;
+  glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
+  if (redType != GL_FLOAT) return "the layout's lightTexture holds no floats (lit straight into the display?)";
+  return "";
+}
+
+class TemporalTechnique : public Technique {
+ public:
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
+    auto technique = std::make_unique<TemporalTechnique>();
+    TemporalTechnique& t = *technique;
+    const GBufferLayout& layout = context.layout;
+    t.beforeTonemapRequested_ = context.config.temporalBeforeTonemap;
+    t.jitterLength_ = context.config.temporalJitterLength;
+    if (t.beforeTonemapRequested_) {
+      if (const std::string why = whyNotBeforeTonemap(layout); why.empty()) {
+        GLint format = GL_RGBA16F;
+        glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+        t.current_ =
+            makeTexture(context, GLenum(format), layout.width, layout.height, 0, "temporal.current", t.bytes_);
+        t.output_ = layout.lightTexture;
+        t.beforeTonemap_ = true;
+      } else {
+        context.warn("temporal_before_tonemap=on: " + why + "; accumulating the display after tonemapping instead");
+      }
+    }
+    if (!t.beforeTonemap_) {
+      t.output_ = shared.post->input(layout);
+      t.linearInput_ = shared.post->linearCopyOfInput() != 0;
+    }
+    const float zero[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 2; ++i) {
+      t.history_[i] = makeTexture(context, GL_RGBA16F, layout.width, layout.height, 0, "temporal.history", t.bytes_);
+      glTextureParameteri(t.history_[i].get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // the Catmull-Rom taps
+      glTextureParameteri(t.history_[i].get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glClearTexImage(t.history_[i].get(), 0, GL_RGBA, GL_FLOAT, zero);
+      t.framebuffers_[i] = makeFramebuffer(context, "temporal.output");
+      glNamedFramebufferTexture(t.framebuffers_[i].get(), GL_COLOR_ATTACHMENT0, t.output_, 0);
+      glNamedFramebufferTexture(t.framebuffers_[i].get(), GL_COLOR_ATTACHMENT1, t.history_[i].get(), 0);
+      const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+      glNamedFramebufferDrawBuffers(t.framebuffers_[i].get(), 2, drawBuffers);
+      if (Status status = checkFramebuffer(t.framebuffers_[i].get(), "temporal.output"); !status)
+        return status.error();
+    }
+    auto program = context.shaders->program(
+        "common/fullscreen.vert", "temporal/temporal.frag",
+        depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_),
+        {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uBlend", "uHistoryValid"});
+    if (!program) return program.error();
+    t.program_ = std::move(program.value());
+    return std::unique_ptr<Technique>(std::move(technique));
+  }
+
+  Status afterLighting(PluginContext& context, SharedTargets&, const FrameInfo& frame) override {
+    if (!beforeTonemap_) return Status::ok();
+    ScopedPass timed(context, "temporal");
+    const GBufferLayout& layout = context.layout;
+    glCopyImageSubData(layout.lightTexture, GL_TEXTURE_2D, 0, 0, 0, 0, current_.get(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       layout.width, layout.height, 1);
+    run(context, frame, current_.get());
+    return Status::ok();
+  }
+
+  Status post(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
+    if (beforeTonemap_) return Status::ok();
+    ScopedPass timed(context, "temporal");
+    shared.post->copyInputAside(context.layout);
+    run(context, frame, linearInput_ ? shared.post->linearCopyOfInput() : shared.post->copyOfInput());
+    return Status::ok();
+  }
+
+  void resetHistory() override { historyValid_ = false; }
+  bool keepsObjectsFor(const Config& config) const override {
+    return config.temporalBeforeTonemap == beforeTonemapRequested_ && config.temporalJitterLength == jitterLength_;
+  }
+  uint64_t bytes() const override { return bytes_; }
+
+ private:
+  // Whether this frame can reproject the history: its matrices are given and usable, and the previous
+  // frame's were. Warns once per cause.
+  bool reprojectable(PluginContext& context, const FrameInfo& frame, Matrix4& viewToPreviousClip) {
+    const Matrix4 view = toMatrix(frame.viewMatrix), projection = toMatrix(frame.projectionMatrix);
+    Matrix4 inverseView{};
+    bool usable = true;
+    if (allZero(projection)) {
+      usable = false;
+      warnOnce(context, warnedNoProjection_,
+               "temporal: FrameInfo::projectionMatrix is not set, so the history cannot be reprojected; each frame "
+               "is shown as rendered (docs/methods/temporal.md)");
+    } else if (!allFinite(projection) || !allFinite(view) || !invert(view, inverseView) ||
+               !(projection[0] != 0.0f && projection[5] != 0.0f)) {
+      usable = false;
+      warnOnce(context, warnedBadMatrices_,
+               "temporal: FrameInfo's view or projection matrix is singular or not finite; the history is dropped "
+               "for such frames");
+    }
+    const bool continues = usable && historyValid_ && previousUsable_ && !frame.cameraCut;
+    if (continues) viewToPreviousClip = multiply(multiply(previousProjection_, previousView_), inverseView);
+    previousUsable_ = usable;
+    previousView_ = view;
+    previousProjection_ = projection;
+    projectionTerms_[0] = projection[0];  // P[0][0]
+    projectionTerms_[1] = projection[5];  // P[1][1]
+    projectionTerms_[2] = projection[8];  // P[2][0]
+    projectionTerms_[3] = projection[9];  // P[2][1]
+    return continues;
+  }
+
+  static void warnOnce(PluginContext& context, bool& warned, const std::string& message) {
+    if (warned) return;
+    warned = true;
+    context.warn(message);
+  }
+
+  // The pass: `input` (this frame) on unit 0, the previous history on 1, the host's depth on 2; the
+  // output and the next history written together.
+  void run(PluginContext& context, const FrameInfo& frame, GLuint input) {
+    const GBufferLayout& layout = context.layout;
+    Matrix4 viewToPreviousClip{};
+    const bool valid = reprojectable(context, frame, viewToPreviousClip);
+    const int previous = historyIndex_, next = 1 - historyIndex_;
+    context.beginFullscreenPass(framebuffers_[next].get());
+    program_.use();
+    glBindTextureUnit(0, input);
+    glBindSampler(0, 0);
+    glBindTextureUnit(1, history_[previous].get());
+    glBindSampler(1, 0);
+    glBindTextureUnit(2, layout.depthStencilTexture);
+    program_.setMatrix4("uViewToPreviousClip", viewToPreviousClip.data());
+    program_.setVec4("uProjection", projectionTerms_);
+    // A new history averages its first frames evenly (1/n) until temporal_blend takes over: a cut or a
+    // reset converges in a few frames instead of fading in over ~2/blend.
+    program_.set("uBlend", valid ? std::max(context.config.temporalBlend, 1.0f / float(framesAccumulated_ + 1)) : 1.0f);
+    program_.set("uHistoryValid", valid ? 1.0f : 0.0f);
+    program_.setDepthPlanes(context);
+    context.drawFullscreen();
+    historyIndex_ = next;
+    historyValid_ = previousUsable_;
+    framesAccumulated_ = valid ? framesAccumulated_ + 1 : 1;
+  }
+
+  ShaderProgram program_;
+  GlTexture history_[2];  // RGBA16F: linear colour, view depth in w; ping-pong
+  GlFramebuffer framebuffers_[2];
+  GlTexture current_;  // before tonemapping: this frame's light, read while the target is written
+  GLuint output_ = 0;  // the display (post's input()) or the light target
+  int historyIndex_ = 0;
+  bool beforeTonemap_ = false;           // on the light target (asked for, and the layout allows it)
+  bool beforeTonemapRequested_ = false;  // temporal_before_tonemap as created
+  bool linearInput_ = false;
+  int jitterLength_ = 8;
+  bool historyValid_ = false;  // false: the next frame starts a new history
+  int framesAccumulated_ = 0;  // frames in the history since it started
+  bool previousUsable_ = false;
+  Matrix4 previousView_{}, previousProjection_{};
+  float projectionTerms_[4] = {1, 1, 0, 0};  // P[0][0], P[1][1], P[2][0], P[2][1]
+  bool warnedNoProjection_ = false, warnedBadMatrices_ = false;
+  uint64_t bytes_ = 0;
+};
+
+}  // namespace
+
+Jitter temporalJitter(uint64_t frame, int length) {
+  if (length <= 1) return {};
+  const uint32_t index = uint32_t(frame % uint64_t(length)) + 1;  // Halton's index 0 is the corner
+  return {halton(index, 2) - 0.5f, halton(index, 3) - 0.5f};
+}
+
+bool runsTemporal(const Config& config) { return config.method == Method::Temporal || config.temporalFilter; }
+
+Result<std::unique_ptr<Technique>> createTemporalTechnique(PluginContext& context, SharedTargets& shared) {
+  return TemporalTechnique::create(context, shared);
+}
+
+}  // namespace retroaa

@@ -1,0 +1,151 @@
+#version 450 core
+// `temporal`: one frame of temporal accumulation (Karis, "High Quality Temporal Supersampling", 2014;
+// Salvi's variance clipping, 2016). The host rendered this frame with its projection shifted by the
+// plugin's jitter; each pixel finds where its surface was in the previous frame (view depth and the two
+// frames' matrices), fetches the history there (Catmull-Rom), clips it to the box of this frame's 3×3
+// neighbourhood in YCoCg, rejects it where the surface was hidden (depth) or off screen, and blends.
+// Writes the pixel (location 0) and the new history (location 1: linear colour, view depth in w).
+//
+// Defines: LINEAR_INPUT (the display is read through its sRGB view, which the texture unit decodes, so
+// the output is encoded again) and the depth buffer's encoding. The history always holds linear colour.
+#include "common/depth_buffer.glsl"
+
+layout(binding = 0) uniform sampler2D uInput;    // a copy of this frame (display or light target)
+layout(binding = 1) uniform sampler2D uHistory;  // the previous output, bilinear; w the view depth (m), -1 sky
+layout(binding = 2) uniform sampler2D uDepth;    // the host's single-sample depth buffer
+
+uniform mat4 uViewToPreviousClip;  // previous projection × previous view × inverse(this view)
+uniform vec4 uProjection;          // P[0][0], P[1][1], P[2][0], P[2][1] of this frame's unjittered projection
+uniform float uBlend;              // the current frame's weight
+uniform float uHistoryValid;       // 0 on the first frame after a reset (cut, new config, no matrices)
+
+layout(location = 0) out vec4 outColour;
+layout(location = 1) out vec4 outHistory;
+
+const float kSkyDepth = -1.0;
+const float kDepthSlack = 0.01;  // relative: history depth within the footprint's range ± 1 % matches
+// The clip box: mean ± γσ of the neighbourhood (Salvi), within its min-max box. γ = 1 where the
+// history moved a pixel or more; wider for a still one, whose reprojection is exact and whose jittered
+// neighbourhood misses sub-pixel detail the history holds (a tight box would cut it every frame).
+// (γ = 2 still: on the demo frame every wider box measured the same, and 1 lost 0.2-0.3 dB.)
+const float kStillClipGamma = 2.0, kMovingClipGamma = 1.0;
+
+vec3 encode(vec3 c) {
+#if LINEAR_INPUT
+  // The display target is written without GL_FRAMEBUFFER_SRGB: encode by hand (IEC 61966-2-1).
+  c = clamp(c, 0.0, 1.0);
+  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+#else
+  return c;
+#endif
+}
+
+vec3 toYCoCg(vec3 c) {
+  return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
+}
+vec3 fromYCoCg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
+
+bool finite3(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
+
+// Catmull-Rom through 5 bilinear fetches: the 4×4 taps' weights merged per axis where two neighbouring
+// taps share a sign, the four corner taps (weights near 0) dropped and the rest renormalised.
+vec3 historyCatmullRom(vec2 uv) {
+  vec2 size = vec2(textureSize(uHistory, 0));
+  vec2 position = uv * size;
+  vec2 centre1 = floor(position - 0.5) + 0.5;
+  vec2 f = position - centre1;
+  vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+  vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+  vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+  vec2 w3 = f * f * (-0.5 + 0.5 * f);
+  vec2 w12 = w1 + w2;
+  vec2 uv0 = (centre1 - 1.0) / size, uv3 = (centre1 + 2.0) / size, uv12 = (centre1 + w2 / w12) / size;
+  vec3 sum = textureLod(uHistory, vec2(uv12.x, uv0.y), 0.0).rgb * (w12.x * w0.y) +
+             textureLod(uHistory, vec2(uv0.x, uv12.y), 0.0).rgb * (w0.x * w12.y) +
+             textureLod(uHistory, uv12, 0.0).rgb * (w12.x * w12.y) +
+             textureLod(uHistory, vec2(uv3.x, uv12.y), 0.0).rgb * (w3.x * w12.y) +
+             textureLod(uHistory, vec2(uv12.x, uv3.y), 0.0).rgb * (w12.x * w3.y);
+  float weight = w12.x * w0.y + w0.x * w12.y + w12.x * w12.y + w3.x * w12.y + w12.x * w3.y;
+  return max(sum / weight, vec3(0.0));  // the negative lobes may undershoot
+}
+
+// Where the history is not the same surface: no texel of the 3×3 footprint around `uv`'s nearest
+// holds a depth near `expected` (the sky matches only the sky). 3×3, not the bilinear 2×2: a
+// silhouette pixel's jittered samples see the surface in front in some frames and the one behind in
+// others, and its history's depth may be either.
+bool disoccluded(vec2 uv, float expected) {
+  ivec2 size = textureSize(uHistory, 0);
+  ivec2 nearest = ivec2(floor(uv * vec2(size)));
+  float low = 1e30, high = -1e30;
+  bool sky = false, geometry = false;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      float depth = texelFetch(uHistory, clamp(nearest + ivec2(x, y), ivec2(0), size - 1), 0).w;
+      if (depth < 0.0) {
+        sky = true;
+      } else {
+        geometry = true;
+        low = min(low, depth);
+        high = max(high, depth);
+      }
+    }
+  if (expected < 0.0) return !sky;
+  return !geometry || expected < low * (1.0 - kDepthSlack) || expected > high * (1.0 + kDepthSlack);
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 last = textureSize(uInput, 0) - 1;
+  // This frame's 3×3 neighbourhood: the clip box's moments.
+  vec3 current = texelFetch(uInput, pixel, 0).rgb;
+  vec3 mean = vec3(0.0), squares = vec3(0.0), lowest = vec3(1e30), highest = vec3(-1e30);
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      vec3 c = toYCoCg(texelFetch(uInput, clamp(pixel + ivec2(x, y), ivec2(0), last), 0).rgb);
+      mean += c;
+      squares += c * c;
+      lowest = min(lowest, c);
+      highest = max(highest, c);
+    }
+  // Where this pixel's surface was a frame ago. The history holds unjittered pixel centres: the point
+  // under this pixel's centre (at the depth its jittered sample saw) is reprojected, so a still camera
+  // reads the history where it writes it and never resamples it; this frame's sample, off the centre by
+  // the jitter, is blended in there, and over the sequence the pixel averages its whole area. The sky
+  // reprojects as a direction.
+  float z = texelFetch(uDepth, pixel, 0).r;
+  bool sky = depthBufferIsFar(z);
+  float depth = sky ? kSkyDepth : depthBufferToMetres(z);
+  vec2 ndc = (vec2(pixel) + 0.5) / vec2(last + 1) * 2.0 - 1.0;
+  vec2 ray = (ndc + uProjection.zw) / uProjection.xy;  // view-space x/d and y/d (any perspective projection)
+  vec4 viewPoint = sky ? vec4(ray, -1.0, 0.0) : vec4(ray * depth, -depth, 1.0);
+  vec4 previousClip = uViewToPreviousClip * viewPoint;
+  vec2 previousUv = previousClip.xy / previousClip.w * 0.5 + 0.5;
+  // A perspective projection's clip w is the view depth.
+  float expectedDepth = sky ? kSkyDepth : previousClip.w;
+
+  mean /= 9.0;
+  vec3 sigma = sqrt(max(squares / 9.0 - mean * mean, vec3(0.0)));
+  float motion = length((previousUv - (vec2(pixel) + 0.5) / vec2(last + 1)) * vec2(last + 1));
+  float gamma = mix(kStillClipGamma, kMovingClipGamma, clamp(motion, 0.0, 1.0));
+  vec3 boxLow = max(lowest, mean - gamma * sigma), boxHigh = min(highest, mean + gamma * sigma);
+
+  vec3 result = current;
+  bool usable = uHistoryValid > 0.5 && previousClip.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0))) &&
+                all(lessThanEqual(previousUv, vec2(1.0))) && !disoccluded(previousUv, expectedDepth);
+  if (usable) {
+    vec3 history = historyCatmullRom(previousUv);
+    if (finite3(history)) {
+      // Clip towards the box's centre (Salvi), not per channel: keeps the history's hue.
+      vec3 h = toYCoCg(history);
+      vec3 centre = 0.5 * (boxLow + boxHigh), extent = max(0.5 * (boxHigh - boxLow), vec3(1e-5));
+      vec3 toHistory = h - centre;
+      vec3 units = abs(toHistory / extent);
+      float outside = max(units.x, max(units.y, units.z));
+      if (outside > 1.0) h = centre + toHistory / outside;
+      result = mix(fromYCoCg(h), current, uBlend);
+    }
+  }
+  if (!finite3(result)) result = finite3(current) ? current : vec3(0.0);
+  outColour = vec4(encode(result), texelFetch(uInput, pixel, 0).a);
+  outHistory = vec4(result, depth);
+}
