@@ -217,7 +217,8 @@ void Renderer::drawModels(const Camera& camera, const glm::mat4& projection) {
     setUniform(modelProgram_.uniform("uGloss"), material.gloss);
     setUniform(modelProgram_.uniform("uEmissive"), material.emissive);
     setUniform(modelProgram_.uniform("uUvScale"), material.maps.uvScale);
-    setUniform(modelProgram_.uniform("uNormalMapped"), materialTextures_->normalMapped(size_t(object.material)) ? 1 : 0);
+    setUniform(modelProgram_.uniform("uNormalMapped"),
+               materialTextures_->normalMapped(size_t(object.material)) ? 1 : 0);
     materialTextures_->bind(size_t(object.material));
     glBindVertexArray(meshes_[i].vertexArray);
     glDrawElements(GL_TRIANGLES, meshes_[i].indexCount, GL_UNSIGNED_INT, nullptr);

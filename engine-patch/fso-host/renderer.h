@@ -57,8 +57,7 @@ class Renderer : public Engine {
   HostTargets targets_;
   Texture color_, position_, normal_, specular_, emissive_, depthStencil_, light_, display_;
   Framebuffer gbufferFramebuffer_, lightFramebuffer_, displayFramebuffer_;
-  Program modelProgram_, backgroundProgram_, ambientProgram_, pointProgram_, emissiveProgram_,
-      tonemapProgram_;
+  Program modelProgram_, backgroundProgram_, ambientProgram_, pointProgram_, emissiveProgram_, tonemapProgram_;
   std::vector<GpuMesh> meshes_;
   GpuMesh sphereVolume_, boxVolume_;
   VertexArray emptyVertexArray_;

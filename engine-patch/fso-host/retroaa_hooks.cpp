@@ -87,9 +87,7 @@ void RetroaaHooks::targetsCreated(const host::HostTargets& targets) {
 GLuint RetroaaHooks::modelPassFramebuffer(GLuint) { return plugin_->geometryFramebuffer(); }
 
 // gr_opengl_deferred_lighting_msaa(): the depth-aware resolve replaces FSO's.
-void RetroaaHooks::modelPassEnd(const host::FrameView& view) {
-  report(plugin_->resolve(frameInfo(view)));
-}
+void RetroaaHooks::modelPassEnd(const host::FrameView& view) { report(plugin_->resolve(frameInfo(view))); }
 
 // (no FSO call site yet: a second model loop into the plugin's prepass; see docs/methods/coverage.md)
 void RetroaaHooks::modelPrepass(const host::ModelPrepass& pass) {

@@ -18,9 +18,7 @@ class SecondHostHooks : public host::SecondSeams {
   int geometryScale() override { return plugin_->geometryScale(); }
   glm::vec2 projectionJitter() override { return {plugin_->jitter().x, plugin_->jitter().y}; }
   float textureLodBias() override { return plugin_->textureLodBias(); }
-  void geometryDone(const host::FrameView& v) override {
-    report(plugin_->resolve(frameInfo(v)));
-  }
+  void geometryDone(const host::FrameView& v) override { report(plugin_->resolve(frameInfo(v))); }
   void geometryAgain(const std::function<void(GLuint)>& draw) override {
     if (const GLuint target = plugin_->prepassFramebuffer()) draw(target);  // coverage, reconstruct
   }

@@ -19,9 +19,9 @@ namespace host {
 
 struct SecondTargets {
   int width = 0, height = 0;
-  GLuint gbufferFramebuffer = 0;          // normal (location 0) + albedoSpecular (location 1) + depth
-  GLuint normal = 0, albedoSpecular = 0;  // RG16F octahedral world normal; RGBA8 albedo, specular in a
-  GLuint depth = 0;                       // GL_DEPTH_COMPONENT32F, reversed-Z
+  GLuint gbufferFramebuffer = 0;               // normal (location 0) + albedoSpecular (location 1) + depth
+  GLuint normal = 0, albedoSpecular = 0;       // RG16F octahedral world normal; RGBA8 albedo, specular in a
+  GLuint depth = 0;                            // GL_DEPTH_COMPONENT32F, reversed-Z
   GLuint displayFramebuffer = 0, display = 0;  // GL_SRGB8_ALPHA8 + the same depth (forward pass)
   GLuint worldPosition = 0;                    // RGBA32F world position at location 2, when asked for (0: none)
 };
@@ -35,7 +35,9 @@ class SecondSeams {
   virtual GLuint geometryTarget(GLuint own) { return own; }
   virtual int geometryScale() { return 1; }
   virtual glm::vec2 projectionJitter() { return glm::vec2(0.0f); }  // this frame's sub-pixel shift (temporal AA)
-  virtual float textureLodBias() { return 0.0f; }                   // added to the material samplers' mip bias  // how many times the host's size that target is
+  virtual float textureLodBias() {
+    return 0.0f;
+  }  // added to the material samplers' mip bias  // how many times the host's size that target is
   virtual void geometryDone(const FrameView&) {}
   // After the geometry pass: an AA module that wants the geometry drawn once more (a multisampled depth
   // and normal prepass) gets `draw`, which clears the framebuffer it is given and draws into it.

@@ -311,9 +311,7 @@ const std::vector<Setter>& setters() {
         "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather than on "
         "the display (where the layout has no single float light target, after tonemapping with a warning); resets "
         "the history"},
-       [](Config& c, const std::string& v) {
-         return parseBool("temporal_before_tonemap", v, c.temporalBeforeTonemap);
-       },
+       [](Config& c, const std::string& v) { return parseBool("temporal_before_tonemap", v, c.temporalBeforeTonemap); },
        [](const Config& c) { return std::string(c.temporalBeforeTonemap ? "on" : "off"); }},
       {{"restore_gbuffer_after_shade", "on", "on, off",
         "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "

@@ -137,7 +137,10 @@ void main() {
     if (finite3(history)) {
       // Clip towards the box's centre (Salvi), not per channel: keeps the history's hue.
       vec3 h = toYCoCg(history);
-      vec3 centre = 0.5 * (boxLow + boxHigh), extent = max(0.5 * (boxHigh - boxLow), vec3(1e-5));
+      // A flat neighbourhood has a box of no extent: a floor of 1 % of its luma keeps the history's
+      // storage rounding (half floats) from counting as far outside it.
+      vec3 centre = 0.5 * (boxLow + boxHigh);
+      vec3 extent = max(0.5 * (boxHigh - boxLow), vec3(0.01 * abs(centre.x) + 1e-4));
       vec3 toHistory = h - centre;
       vec3 units = abs(toHistory / extent);
       float outside = max(units.x, max(units.y, units.z));

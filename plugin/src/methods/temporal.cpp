@@ -5,8 +5,8 @@
 // frame in (shaders/temporal/). As the method it runs on the stock single-sample path; stacked
 // (`temporal_filter=on`) after any other method's own passes. On the display after tonemapping, or on
 // the HDR light target before it (temporal_before_tonemap).
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -110,8 +110,7 @@ class TemporalTechnique : public Technique {
       if (const std::string why = whyNotBeforeTonemap(layout); why.empty()) {
         GLint format = GL_RGBA16F;
         glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-        t.current_ =
-            makeTexture(context, GLenum(format), layout.width, layout.height, 0, "temporal.current", t.bytes_);
+        t.current_ = makeTexture(context, GLenum(format), layout.width, layout.height, 0, "temporal.current", t.bytes_);
         t.output_ = layout.lightTexture;
         t.beforeTonemap_ = true;
       } else {
@@ -133,8 +132,7 @@ class TemporalTechnique : public Technique {
       glNamedFramebufferTexture(t.framebuffers_[i].get(), GL_COLOR_ATTACHMENT1, t.history_[i].get(), 0);
       const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
       glNamedFramebufferDrawBuffers(t.framebuffers_[i].get(), 2, drawBuffers);
-      if (Status status = checkFramebuffer(t.framebuffers_[i].get(), "temporal.output"); !status)
-        return status.error();
+      if (Status status = checkFramebuffer(t.framebuffers_[i].get(), "temporal.output"); !status) return status.error();
     }
     auto program = context.shaders->program(
         "common/fullscreen.vert", "temporal/temporal.frag",
@@ -256,7 +254,8 @@ class TemporalTechnique : public Technique {
 
 Jitter temporalJitter(uint64_t frame, int length) {
   if (length <= 1) return {};
-  const uint32_t index = uint32_t(frame % uint64_t(length)) + 1;  // Halton's index 0 is the corner
+  // Frame 1 takes the sequence's first point, Halton index 1 (index 0 is the pixel's corner).
+  const uint32_t index = frame == 0 ? 1u : uint32_t((frame - 1) % uint64_t(length)) + 1;
   return {halton(index, 2) - 0.5f, halton(index, 3) - 0.5f};
 }
 

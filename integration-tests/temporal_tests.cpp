@@ -1,0 +1,241 @@
+// `temporal`: the jitter sequence and how the hosts apply it, a still frame converging, and the history
+// rejected where it must be (a cut, a surface that was not there, a frame without matrices), on
+// hand-written G-buffers and on both in-repo hosts.
+#include "second_host_patch.h"
+#include "test_support.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace testing_support;
+
+namespace {
+
+// The radical inverse of `index` in `base` (Halton's sequence), written from its definition.
+float radicalInverse(uint32_t index, uint32_t base) {
+  double digitWeight = 1.0, value = 0.0;
+  for (; index; index /= base) value += (digitWeight /= base) * (index % base);
+  return float(value);
+}
+
+bool warned(const retroaa::Plugin& plugin, const std::string& text) {
+  const std::vector<std::string> warnings = plugin.warnings();
+  return std::count_if(warnings.begin(), warnings.end(),
+                       [&text](const std::string& w) { return w.find(text) != std::string::npos; }) > 0;
+}
+
+double maxDifference(const app::DisplayImage& a, const app::DisplayImage& b) {
+  double most = 0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) most = std::max(most, double(std::fabs(a.rgb[i] - b.rgb[i])));
+  return most;
+}
+
+// A still camera over a hand-written G-buffer (the FSO-shaped host's layout, lit by albedoAsLight), one
+// frame at a time, the temporal pass included; the light target (temporal before tonemapping) read back.
+struct HandWrittenFrames {
+  SyntheticFrame frame{8, 8};
+  std::unique_ptr<patch::RetroaaHooks> hooks;
+  retroaa::FrameInfo info;
+
+  explicit HandWrittenFrames(retroaa::Config config = {}) {
+    config.method = retroaa::Method::Temporal;
+    hooks = frame.attach(config);
+    info.verticalFovRadians = 1.0f;
+    info.nearPlane = 0.1f;  // surfaceSample's logarithmic depth
+    info.farPlane = 2.0e6f;
+    const glm::mat4 projection = glm::perspective(1.0f, 1.0f, 0.1f, 2.0e6f);
+    std::memcpy(info.projectionMatrix, glm::value_ptr(projection), sizeof info.projectionMatrix);
+  }
+  std::vector<glm::vec4> run(const std::vector<std::vector<SyntheticSample>>& pixels) {
+    retroaa::Plugin& plugin = hooks->plugin();
+    fillGeometry(plugin, frame.width, frame.height, pixels);
+    EXPECT_TRUE(plugin.resolve(info));
+    const GLuint color = frame.renderer->targets().color;
+    EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, frame.width, frame.height); }));
+    EXPECT_TRUE(plugin.post());
+    info.cameraCut = false;
+    return frame.read(frame.renderer->targets().lightTexture);
+  }
+};
+
+const glm::vec3 kRed(1, 0, 0), kBlue(0, 0, 1);
+
+// Every pixel at `depth` metres; columns from `firstColumn` on at `otherDepth` in red and blue alternating.
+std::vector<std::vector<SyntheticSample>> wall(float depth, glm::vec3 albedo, int firstColumn = 8,
+                                               float otherDepth = 0) {
+  std::vector<std::vector<SyntheticSample>> pixels(64);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x)
+      pixels[size_t(y * 8 + x)] = {x < firstColumn ? surfaceSample(depth, {0, 0, 1}, albedo)
+                                                   : surfaceSample(otherDepth, {0, 0, 1}, (x + y) % 2 ? kRed : kBlue)};
+  return pixels;
+}
+
+}  // namespace
+
+TEST(Temporal, JitterIsHaltonTwoThreeOverItsLengthAndZeroForOtherMethods) {
+  HandWrittenFrames frames;
+  retroaa::Plugin& plugin = frames.hooks->plugin();
+  EXPECT_EQ(plugin.textureLodBias(), -1.0f);
+  const auto red = wall(10, kRed);
+  for (int frame = 0; frame < 20; ++frame) {
+    const retroaa::Jitter jitter = plugin.jitter();
+    const uint32_t index = uint32_t(frame % 8) + 1;  // the sequence's first point is index 1: index 0 is (0, 0)
+    EXPECT_FLOAT_EQ(jitter.x, radicalInverse(index, 2) - 0.5f) << "frame " << frame;
+    EXPECT_FLOAT_EQ(jitter.y, radicalInverse(index, 3) - 0.5f) << "frame " << frame;
+    frames.run(red);
+  }
+  retroaa::Config other;
+  other.method = retroaa::Method::Resolve;
+  ASSERT_TRUE(plugin.reconfigure(other));
+  EXPECT_EQ(plugin.jitter().x, 0.0f);
+  EXPECT_EQ(plugin.jitter().y, 0.0f);
+  EXPECT_EQ(plugin.textureLodBias(), 0.0f);
+  other.temporalFilter = true;  // resolve+temporal jitters too
+  ASSERT_TRUE(plugin.reconfigure(other));
+  EXPECT_NE(plugin.jitter().x, 0.0f);
+}
+
+TEST(Temporal, AStillWallConvergesAndACutStartsAgainFromTheCurrentFrame) {
+  HandWrittenFrames frames;
+  std::vector<glm::vec4> light;
+  for (int i = 0; i < 12; ++i) light = frames.run(wall(10, kRed));
+  for (const glm::vec4& pixel : light) EXPECT_NEAR(pixel.r, 1.0f, 1e-3f);
+  // The same surface turns into a red and blue checkerboard (a box around every pixel's neighbourhood
+  // holds red): without a cut the red history weighs in the blue pixels; after one, every pixel shows
+  // exactly what was lit.
+  light = frames.run(wall(10, kRed, 0, 10.0f));
+  EXPECT_GT(light[0].r, 0.5f) << "the history should carry into a frame without a cut";
+  for (int i = 0; i < 12; ++i) frames.run(wall(10, kRed));
+  frames.info.cameraCut = true;
+  light = frames.run(wall(10, kRed, 0, 10.0f));
+  for (int i = 0; i < 64; ++i) EXPECT_EQ(glm::vec3(light[size_t(i)]), (i / 8 + i % 8) % 2 ? kRed : kBlue) << i;
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST(Temporal, ASurfaceThatWasNotThereTakesNoHistory) {
+  HandWrittenFrames frames;
+  for (int i = 0; i < 12; ++i) frames.run(wall(10, kRed));
+  // Columns 4.. now show a nearer surface, red and blue in a checkerboard: the neighbourhood's box holds
+  // red, so only the depth test keeps the red history out of the blue pixels.
+  const std::vector<glm::vec4> light = frames.run(wall(10, kRed, 4, 5.0f));
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      const glm::vec4& pixel = light[size_t(y * 8 + x)];
+      const glm::vec3 expected = x < 4 || (x + y) % 2 ? kRed : kBlue;
+      // The old surface keeps its (red) history; the new one is exactly this frame.
+      if (x >= 4) {
+        EXPECT_EQ(glm::vec3(pixel), expected) << x << "," << y;
+      } else if (x < 3) {
+        EXPECT_NEAR(pixel.r, 1.0f, 1e-3f) << x << "," << y;
+      }
+    }
+  // The same change at the old depth is no disocclusion: the red history weighs in the blue pixels.
+  for (int i = 0; i < 12; ++i) frames.run(wall(10, kRed));
+  const std::vector<glm::vec4> sameDepth = frames.run(wall(10, kRed, 4, 10.0f));
+  EXPECT_GT(sameDepth[size_t(0 * 8 + 4)].r, 0.5f);
+}
+
+TEST(Temporal, WithoutMatricesOrWithBrokenOnesEachFrameIsShownAsRenderedWithOneWarning) {
+  HandWrittenFrames frames;
+  std::memset(frames.info.projectionMatrix, 0, sizeof frames.info.projectionMatrix);
+  frames.run(wall(10, kRed));
+  std::vector<glm::vec4> light;
+  for (int i = 0; i < 3; ++i) light = frames.run(wall(10, kBlue));
+  for (const glm::vec4& pixel : light) EXPECT_EQ(glm::vec3(pixel), kBlue);
+  const std::vector<std::string> warnings = frames.hooks->plugin().warnings();
+  EXPECT_EQ(
+      std::count_if(warnings.begin(), warnings.end(),
+                    [](const std::string& w) { return w.find("projectionMatrix is not set") != std::string::npos; }),
+      1);
+  // NaN in the view: no history, finite pixels, one warning.
+  const glm::mat4 projection = glm::perspective(1.0f, 1.0f, 0.1f, 2.0e6f);
+  std::memcpy(frames.info.projectionMatrix, glm::value_ptr(projection), sizeof frames.info.projectionMatrix);
+  frames.info.viewMatrix[12] = std::nanf("");
+  for (int i = 0; i < 2; ++i) light = frames.run(wall(10, kRed));
+  for (const glm::vec4& pixel : light) EXPECT_EQ(glm::vec3(pixel), kRed);
+  EXPECT_TRUE(warned(frames.hooks->plugin(), "singular or not finite"));
+}
+
+TEST(Temporal, TheFsoHostJittersItsProjectionAndAStillFrameConvergesNearSupersampling) {
+  PatchedHost host("default", 160, 120);
+  const ScoringTruth truth = host.scoringTruth(4);
+  // With blend 1 the output is the current frame: the host's stock frame at the same jitter and mip bias.
+  retroaa::Config passThrough;
+  passThrough.temporalBlend = 1.0f;
+  host.render("temporal", passThrough);
+  const retroaa::Jitter next = host.hooks->plugin().jitter();
+  ASSERT_NE(next.x, 0.0f);
+  const app::DisplayImage jittered = host.render("temporal", passThrough);
+  host.renderer->setStockPath(true);
+  host.renderer->setTextureLodBias(-1.0f);
+  host.renderer->renderFrame(host.scene.camera, glm::vec2(next.x, next.y));
+  const app::DisplayImage stock = app::DisplayImage::fromRgba8(160, 120, host.renderer->readDisplay());
+  host.renderer->renderFrame(host.scene.camera);
+  const app::DisplayImage unjittered = app::DisplayImage::fromRgba8(160, 120, host.renderer->readDisplay());
+  host.renderer->setTextureLodBias(0.0f);
+  host.renderer->setStockPath(false);
+  EXPECT_LE(maxDifference(jittered, stock), 1.0 / 255.0 + 1e-6);
+  EXPECT_GT(maxDifference(jittered, unjittered), 0.1) << "the jitter should move the image";
+
+  const double off = truth.score(host.render("off")).psnrDb;
+  const double ssaa = truth.score(host.render("ssaa@supersample=2")).psnrDb;
+  retroaa::Config temporal;
+  temporal.method = retroaa::Method::Temporal;
+  ASSERT_TRUE(host.hooks->plugin().reconfigure(temporal));
+  std::vector<double> psnr;
+  for (int frame = 0; frame < 40; ++frame) {
+    host.renderer->renderFrame(host.scene.camera);
+    psnr.push_back(truth.score(app::DisplayImage::fromRgba8(160, 120, host.renderer->readDisplay())).psnrDb);
+  }
+  EXPECT_GT(psnr.back(), off + 2.0) << "off " << off;
+  EXPECT_GT(psnr.back(), ssaa - 1.0) << "ssaa@supersample=2 " << ssaa;
+  // Converged: the last round of the jitter sequence scores as the one before (a single frame swings a
+  // few tenths of a dB with the newest sample's position).
+  double lastRound = 0, roundBefore = 0;
+  for (int frame = 0; frame < 8; ++frame)
+    lastRound += psnr[size_t(32 + frame)] / 8, roundBefore += psnr[size_t(24 + frame)] / 8;
+  EXPECT_NEAR(lastRound, roundBefore, 0.1) << "converged";
+  // Switched off, it holds nothing more than before and left no GL error.
+  const int objectsOff = [&] {
+    host.render("off");
+    return host.hooks->plugin().stats().glObjectsHeld;
+  }();
+  host.render("temporal");
+  EXPECT_GT(host.hooks->plugin().stats().bytesHeld, 0u);
+  host.render("off");
+  EXPECT_EQ(host.hooks->plugin().stats().glObjectsHeld, objectsOff);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST(Temporal, TheSecondHostJittersAndAccumulatesAfterTonemappingWhereItLightsIntoTheDisplay) {
+  context();
+  host::Scene scene = host::loadScene("default");
+  host::SecondRenderer renderer(scene, 160, 120);
+  retroaa::Config config;
+  config.method = retroaa::Method::Temporal;
+  auto created = patch::SecondHostHooks::create(renderer.targets(), config);
+  ASSERT_TRUE(created) << created.error().message;
+  patch::SecondHostHooks& hooks = *created.value();
+  renderer.setSeams(&hooks);
+  EXPECT_TRUE(warned(hooks.plugin(), "accumulating the display after tonemapping instead"));
+  const host::GroundTruth truth = host::renderGroundTruth(renderer, scene.camera, 4);
+  const app::DisplayImage reference = app::DisplayImage::fromRgba8(160, 120, truth.display);
+  const std::vector<uint8_t> edges = app::edgeMaskFromSpread(truth.lumaStdDev);
+  auto score = [&] {
+    return app::compare(app::DisplayImage::fromRgba8(160, 120, renderer.readDisplay()), reference, edges).psnrDb;
+  };
+  renderer.setSeams(nullptr);
+  renderer.renderFrame(scene.camera);
+  const double off = score();
+  renderer.setSeams(&hooks);
+  for (int frame = 0; frame < 40; ++frame) renderer.renderFrame(scene.camera);
+  EXPECT_GT(score(), off + 2.0);
+  EXPECT_TRUE(hooks.lastError().empty()) << hooks.lastError();
+  renderer.setSeams(nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
