@@ -273,9 +273,20 @@ int runBench(const BenchOptions& options) {
   for (const MethodSpec& spec : specs) {
     std::fprintf(stderr, "bench: %s\n", spec.name.c_str());
     session.configure(spec.config, spec.name);
+    // A history (temporal): how it converges on this still frame, then measured converged.
+    std::optional<Convergence> convergence;
+    if (const int frames = historyWarmUpFrames(spec.config); frames > 0)
+      convergence = measureConvergence(session, camera, reference, 2 * frames, spec.config.temporalJitterLength);
     const Measurement m = measure(session, camera, reference, options.repeats, 1, options.wallFrames);
     json row = figures(m);
     row["method"] = spec.name;
+    if (convergence) {
+      row["converged_psnr_db"] = convergence->convergedPsnrDb;
+      row["frames_to_within_1db"] = convergence->framesToWithinOneDb;
+      row["psnr_db_by_frame"] = convergence->psnrDb;
+      std::fprintf(stderr, "bench: %s converges to %.2f dB on this still frame, within 1 dB of it from frame %d\n",
+                   spec.name.c_str(), convergence->convergedPsnrDb, convergence->framesToWithinOneDb);
+    }
     rows.push_back(row);
     if (!options.imagesDirectory.empty()) {
       const std::string stem = options.imagesDirectory + "/" + imageFileStem(spec.name);

@@ -138,6 +138,26 @@ int historyWarmUpFrames(const retroaa::Config& config) {
   return std::max(2 * config.temporalJitterLength, int(std::ceil(4.0f / config.temporalBlend)));
 }
 
+Convergence measureConvergence(Session& session, const host::Camera& camera, const FrameReference& reference,
+                               int frames, int round) {
+  const retroaa::Config config = session.config;
+  const std::string method = session.method;
+  session.configure(retroaa::Config{}, "off");  // frees the history: the next frame starts a new one
+  session.configure(config, method);
+  Convergence result;
+  const int w = session.renderer->width(), h = session.renderer->height();
+  for (int i = 0; i < frames; ++i) {
+    session.renderer->renderFrame(camera);
+    const DisplayImage image = DisplayImage::fromRgba8(w, h, session.renderer->readDisplay());
+    result.psnrDb.push_back(compare(image, reference.truth, reference.edges).psnrDb);
+  }
+  const int last = std::max(1, std::min(round, frames));
+  for (int i = frames - last; i < frames; ++i) result.convergedPsnrDb += result.psnrDb[size_t(i)] / last;
+  for (int i = frames; i > 0 && std::fabs(result.psnrDb[size_t(i - 1)] - result.convergedPsnrDb) <= 1.0; --i)
+    result.framesToWithinOneDb = i;
+  return result;
+}
+
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
                     int warmUpFrames, int wallFrames) {
   host::Engine& renderer = *session.renderer;

@@ -45,6 +45,15 @@ struct Measurement {
 // rounds of its jitter sequence and 4 / temporal_blend frames (the history's weight of its first frame
 // then below e^-4 ≈ 2 %); 0 for every other method.
 int historyWarmUpFrames(const retroaa::Config& config);
+// How a history (temporal) converges on a still camera: `frames` frames of it from a fresh history,
+// each scored against the ground truth.
+struct Convergence {
+  std::vector<double> psnrDb;    // after each frame
+  double convergedPsnrDb = 0;    // the mean over the last `round` frames (a round of the jitter sequence)
+  int framesToWithinOneDb = -1;  // the first frame from which every frame scores within 1 dB of it
+};
+Convergence measureConvergence(Session& session, const host::Camera& camera, const FrameReference& reference,
+                               int frames, int round);
 // Renders `camera` with the session's config: `wallFrames` back-to-back frames with every statistic
 // off and no wait until the last (wall_ms: the time an engine sees), then `warmUpFrames` frames
 // (shader compilation, first-touch allocation), then `timedFrames` with GPU timers and the plugin's

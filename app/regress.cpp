@@ -241,7 +241,14 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
   for (const MethodSpec& spec : specs) {
     session.configure(spec.config, spec.name);
     MethodTotals totals;
+    const int historyFrames = historyWarmUpFrames(spec.config);
     for (size_t fi = 0; fi < frames.size(); ++fi) {
+      // A method with a history (temporal) is judged as an engine would run it: the path played through
+      // every frame, from historyFrames before the first measured one (its first camera held before the
+      // path starts).
+      if (historyFrames > 0)
+        for (int f = fi == 0 ? frames[0] - historyFrames : frames[fi - 1] + 1; f < frames[fi]; ++f)
+          session.renderer->renderFrame(session.camera(std::max(f, 0)));
       const Measurement m = measure(session, session.camera(frames[fi]), references[fi], 1, fi == 0 ? 1 : 0,
                                     fi == 0 ? options.wallFrames : 0);
       totals.add(m, references[fi]);
