@@ -111,8 +111,9 @@ TEST(Registry, EveryEnumValueHasOneRowAndEveryRowParses) {
     for (const char* specs : {row.sweepSpecs, row.regressSpec, row.tuneSpecs})
       for (const std::string& spec : app::expandMethodList(specs)) {
         const retroaa::Config parsed = app::parseMethodSpec(spec, {}).config;
-        EXPECT_TRUE(parsed.method == row.method ||
-                    (parsed.method == retroaa::Method::Resolve && spec.find('+') != std::string::npos))
+        // (a stacked spec, `resolve+NAME` or `reconstruct+temporal`, turns the row's stack key on instead)
+        EXPECT_TRUE(parsed.method == row.method || (spec.find('+') != std::string::npos && *row.stackKey &&
+                                                    retroaa::readSetting(parsed, row.stackKey) == "on"))
             << spec;
       }
   }
@@ -189,7 +190,43 @@ TEST(PluginErrors, ATargetTheDriverRefusesIsAnIncompleteFramebuffer) {
   description.config.method = retroaa::Method::Resolve;
   auto created = retroaa::Plugin::create(description);
   ASSERT_FALSE(created);
-  expectError(created.error(), retroaa::ErrorCode::IncompleteFramebuffer, "msaa_gbuffer");
+  expectError(created.error(), retroaa::ErrorCode::IncompleteFramebuffer, "attachment 0 (Albedo, format 0x8c3d)");
+}
+
+TEST(PluginLayout, UnsizedFormatsTakeTheSizedOnesOfTheHostsOwnObjects) {
+  PatchedHost host("default", 32, 24);
+  // A specular texture made the old way (unsized GL_RGBA) and a GL_DEPTH_COMPONENT depth renderbuffer.
+  GLuint specular = 0, depth = 0;
+  glGenTextures(1, &specular);
+  glBindTexture(GL_TEXTURE_2D, specular);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 32, 24, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glCreateRenderbuffers(1, &depth);
+  glNamedRenderbufferStorage(depth, GL_DEPTH_COMPONENT, 32, 24);
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  description.layout.attachments[3] = {retroaa::AttachmentRole::Specular, GL_RGBA, specular};
+  description.layout.depthStencilTexture = 0;
+  description.layout.depthStencilRenderbuffer = depth;
+  description.config.method = retroaa::Method::Resolve;
+  {
+    auto created = retroaa::Plugin::create(description);
+    ASSERT_TRUE(created) << created.error().message;
+    EXPECT_TRUE(created.value()->resolve({}));
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
+  // Declared unsized over a texture whose format cannot be rendered into: refused at create, naming the
+  // attachment, its role and the format the texture has.
+  GLuint odd = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &odd);
+  glTextureStorage2D(odd, 1, GL_RGB9_E5, 32, 24);
+  description.layout.attachments[3] = {retroaa::AttachmentRole::Specular, GL_RGB, odd};
+  auto refused = retroaa::Plugin::create(description);
+  ASSERT_FALSE(refused);
+  expectError(refused.error(), retroaa::ErrorCode::IncompleteFramebuffer, "attachment 3 (Specular, format 0x8c3d)");
+  glDeleteTextures(1, &specular);
+  glDeleteTextures(1, &odd);
+  glDeleteRenderbuffers(1, &depth);
 }
 
 TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {

@@ -46,10 +46,12 @@ class FrameHooks {
   virtual ~FrameHooks() = default;
   // opengl_setup_scene_textures(): the host (re)created its targets.
   virtual void targetsCreated(const HostTargets&) {}
-  // gr_set_proj_matrix(): a sub-pixel shift, in pixels, of this frame's projection (temporal AA).
+  // gr_set_proj_matrix() (code/graphics/matrix.cpp, for the 3D scene): a sub-pixel shift, in pixels, of
+  // this frame's projection (temporal AA).
   virtual glm::vec2 projectionJitter() { return glm::vec2(0.0f); }
   // The material samplers' mip bias the AA module asks for (temporal AA: sharper mips, which the history
-  // averages); FSO sets its samplers' bias in opengl_tcache_set() (GL_TEXTURE_LOD_BIAS).
+  // averages). FSO sets no bias today: the patch adds GL_TEXTURE_LOD_BIAS where it sets its model
+  // textures' sampling state.
   virtual float textureLodBias() { return 0.0f; }
   // gr_opengl_deferred_lighting_begin(): the framebuffer the background and models render into.
   virtual GLuint modelPassFramebuffer(GLuint stockGbuffer) { return stockGbuffer; }

@@ -143,6 +143,66 @@ GLenum sizedDepthFormat(GLuint texture) {
   return depthBits > 16 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT16;
 }
 
+const char* roleName(AttachmentRole role) {
+  switch (role) {
+    case AttachmentRole::Albedo: return "Albedo";
+    case AttachmentRole::ViewPosition: return "ViewPosition";
+    case AttachmentRole::NormalGloss: return "NormalGloss";
+    case AttachmentRole::Specular: return "Specular";
+    case AttachmentRole::Emissive: return "Emissive";
+    case AttachmentRole::Other: return "Other";
+  }
+  return "?";
+}
+
+namespace {
+bool isUnsizedColour(GLenum format) {
+  return format == GL_RGBA || format == GL_RGB || format == GL_RG || format == GL_RED;
+}
+}  // namespace
+
+GLenum sizedColourFormat(GLuint texture, GLenum declared) {
+  if (!isUnsizedColour(declared)) return declared;
+  if (!texture || !glIsTexture(texture)) return 0;
+  GLint format = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  if (!isUnsizedColour(GLenum(format))) return GLenum(format);  // the driver reports the sized one
+  GLint sizes[4] = {}, type = 0;
+  const GLenum sizeQueries[4] = {GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE,
+                                 GL_TEXTURE_ALPHA_SIZE};
+  for (int c = 0; c < 4; ++c) glGetTextureLevelParameteriv(texture, 0, sizeQueries[c], &sizes[c]);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_RED_TYPE, &type);
+  const int channels = sizes[3] ? 4 : sizes[2] ? 3 : sizes[1] ? 2 : sizes[0] ? 1 : 0;
+  struct Row {
+    int channels, bits;
+    GLint type;
+    GLenum format;
+  };
+  static const Row rows[] = {
+      {4, 8, GL_UNSIGNED_NORMALIZED, GL_RGBA8}, {3, 8, GL_UNSIGNED_NORMALIZED, GL_RGB8},
+      {2, 8, GL_UNSIGNED_NORMALIZED, GL_RG8},   {1, 8, GL_UNSIGNED_NORMALIZED, GL_R8},
+      {4, 16, GL_UNSIGNED_NORMALIZED, GL_RGBA16}, {4, 16, GL_FLOAT, GL_RGBA16F},
+      {3, 16, GL_FLOAT, GL_RGB16F},             {2, 16, GL_FLOAT, GL_RG16F},
+      {1, 16, GL_FLOAT, GL_R16F},               {4, 32, GL_FLOAT, GL_RGBA32F},
+      {3, 32, GL_FLOAT, GL_RGB32F},             {2, 32, GL_FLOAT, GL_RG32F},
+      {1, 32, GL_FLOAT, GL_R32F},
+  };
+  for (const Row& row : rows)
+    if (row.channels == channels && row.bits == sizes[0] && row.type == type) return row.format;
+  return 0;
+}
+
+GLenum sizedDepthRenderbufferFormat(GLuint renderbuffer) {
+  GLint format = 0, depthBits = 0, stencilBits = 0;
+  glGetNamedRenderbufferParameteriv(renderbuffer, GL_RENDERBUFFER_INTERNAL_FORMAT, &format);
+  if (format != GL_DEPTH_COMPONENT && format != GL_DEPTH_STENCIL) return GLenum(format);
+  glGetNamedRenderbufferParameteriv(renderbuffer, GL_RENDERBUFFER_DEPTH_SIZE, &depthBits);
+  glGetNamedRenderbufferParameteriv(renderbuffer, GL_RENDERBUFFER_STENCIL_SIZE, &stencilBits);
+  // A renderbuffer reports no depth type: 32 bits is taken as float (the only 32-bit depth-stencil format).
+  if (stencilBits > 0) return depthBits > 24 ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
+  return depthBits > 24 ? GL_DEPTH_COMPONENT32F : depthBits > 16 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT16;
+}
+
 bool hasStencil(GLenum depthFormat) {
   return depthFormat == GL_DEPTH24_STENCIL8 || depthFormat == GL_DEPTH32F_STENCIL8;
 }

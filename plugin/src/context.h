@@ -83,6 +83,14 @@ GlFramebuffer makeFramebuffer(PluginContext& context, const char* label);
 // host keeps its precision).
 GLenum sizedDepthFormat(GLuint texture);
 bool hasStencil(GLenum depthFormat);
+const char* roleName(AttachmentRole role);  // "Albedo", "NormalGloss", … as messages name it
+// The sized colour format of the host's texture: `declared` when it is sized, else the one the texture's
+// channel sizes and types say (a host that created it as GL_RGBA, GL_RGB, GL_RG or GL_RED). 0 where
+// neither says one (no texture, or sizes no sized format has).
+GLenum sizedColourFormat(GLuint texture, GLenum declared);
+// The sized format of a host's depth(-stencil) renderbuffer, from its depth and stencil sizes when it
+// was created unsized (GL_DEPTH_COMPONENT, GL_DEPTH_STENCIL).
+GLenum sizedDepthRenderbufferFormat(GLuint renderbuffer);
 
 // The driver's sample positions of `framebuffer` into `positionsXY` (x, y pairs in [0, 1)); entries
 // past the framebuffer's own GL_SAMPLES keep their value. Binds the framebuffer.

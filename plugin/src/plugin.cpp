@@ -106,12 +106,11 @@ struct DepthMirror {
   }
   static Result<std::unique_ptr<DepthMirror>> create(PluginContext& context, const GBufferLayout& layout) {
     auto mirror = std::make_unique<DepthMirror>();
-    GLint format = 0;
-    glGetNamedRenderbufferParameteriv(layout.depthStencilRenderbuffer, GL_RENDERBUFFER_INTERNAL_FORMAT, &format);
+    const GLenum format = sizedDepthRenderbufferFormat(layout.depthStencilRenderbuffer);
     mirror->width = layout.width;
     mirror->height = layout.height;
     mirror->texture =
-        makeTexture(context, GLenum(format), layout.width, layout.height, 0, "depth_mirror", mirror->bytes);
+        makeTexture(context, format, layout.width, layout.height, 0, "depth_mirror", mirror->bytes);
     mirror->hostDepth = makeFramebuffer(context, "depth_mirror.host");
     glNamedFramebufferRenderbuffer(mirror->hostDepth.get(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
                                    layout.depthStencilRenderbuffer);
@@ -342,6 +341,22 @@ struct Plugin::Impl {
       if (!created) return created.error();
       mirror = std::move(created.value());
       layout.depthStencilTexture = mirror->texture.get();
+    }
+    // Unsized formats (GL_RGBA, …) become the sized ones the host's textures have: the plugin's copies
+    // need sized storage.
+    for (Attachment& attachment : layout.attachments) {
+      if (!attachment.texture) continue;  // validateLayout names it
+      const GLenum sized = sizedColourFormat(attachment.texture, attachment.internalFormat);
+      if (!sized) {
+        char hex[16];
+        std::snprintf(hex, sizeof hex, "0x%04x", unsigned(attachment.internalFormat));
+        return Error{ErrorCode::InvalidLayout, std::string("attachment ") + roleName(attachment.role) +
+                                                   " has the unsized format " + hex + " and texture " +
+                                                   std::to_string(attachment.texture) +
+                                                   " has no sized format a copy could take (give a sized one, e.g. "
+                                                   "GL_RGBA8, GL_RGBA16F)"};
+      }
+      attachment.internalFormat = sized;
     }
     if (Status status = validateLayout(layout); !status) return status;
     context.layout = layout;

@@ -35,7 +35,24 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   glNamedFramebufferTexture(gbuffer->framebuffer(),
                             hasStencil(depthFormat) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                             gbuffer->depthStencil(), 0);
-  if (Status status = checkFramebuffer(gbuffer->framebuffer(), "msaa_gbuffer"); !status) return status.error();
+  if (Status status = checkFramebuffer(gbuffer->framebuffer(), "msaa_gbuffer"); !status) {
+    // Name what the driver refuses: each attachment alone in a framebuffer of its own.
+    for (size_t i = 0; i < layout.attachments.size(); ++i) {
+      GLuint probe = 0;
+      glCreateFramebuffers(1, &probe);
+      glNamedFramebufferTexture(probe, GL_COLOR_ATTACHMENT0, gbuffer->attachment(i), 0);
+      const GLenum alone = glCheckNamedFramebufferStatus(probe, GL_FRAMEBUFFER);
+      glDeleteFramebuffers(1, &probe);
+      if (alone == GL_FRAMEBUFFER_COMPLETE) continue;
+      char format[16];
+      std::snprintf(format, sizeof format, "0x%04x", unsigned(layout.attachments[i].internalFormat));
+      return Error{ErrorCode::IncompleteFramebuffer,
+                   std::string("the driver cannot render into a ") + (storageSamples ? "multisampled " : "") +
+                       "copy of attachment " + std::to_string(i) + " (" + roleName(layout.attachments[i].role) +
+                       ", format " + format + "): give that attachment a colour-renderable format"};
+    }
+    return status.error();
+  }
   GLint allocated = 1;
   if (storageSamples > 0) glGetTextureLevelParameteriv(gbuffer->depthStencil(), 0, GL_TEXTURE_SAMPLES, &allocated);
   gbuffer->samples_ = scale > 1 ? scale * scale : std::max(allocated, 1);
