@@ -110,10 +110,14 @@ int runRender(const RenderOptions& options) {
     radiance = truth.radiance;
   } else {
     session.configure(options.method.empty() ? options.base : parseMethodSpec(options.method, options.base).config);
-    // A history (temporal) converges over frames: the camera held still for as many as it needs.
-    const int stillFrames = historyWarmUpFrames(session.config);
-    if (stillFrames > 0) std::fprintf(stderr, "render: %d frames of a still camera accumulated first\n", stillFrames);
-    for (int i = 0; i < stillFrames; ++i) session.renderer->renderFrame(camera);
+    // A history (temporal) builds over frames: a path frame is reached by playing the path up to it (its
+    // first camera held before it starts), the scene's camera by holding it still.
+    const int historyFrames = historyWarmUpFrames(session.config);
+    if (historyFrames > 0)
+      std::fprintf(stderr, "render: %d frames accumulated first (%s)\n", historyFrames,
+                   options.frame < 0 ? "a still camera" : "the path up to this frame");
+    for (int i = historyFrames; i > 0; --i)
+      session.renderer->renderFrame(options.frame < 0 ? camera : session.camera(std::max(options.frame - i, 0)));
     session.renderer->renderFrame(camera);
     display = session.renderer->readDisplay();
     radiance = session.renderer->readLight();
