@@ -136,6 +136,20 @@ TEST(ModelLoading, ReadsObjAndGltf) {
   EXPECT_THROW(host::loadModel(testDataPath("fixtures/not_a_model.obj")), host::ModelLoadError);
 }
 
+TEST(ModelLoading, AGltfFaceWithAnIndexPastItsVerticesIsLeftOutWithAWarning) {
+  // Two triangles over three vertices, the second indexing vertex 7: assimp drops it inside its importer.
+  std::vector<std::string> warnings;
+  const host::Mesh mesh =
+      host::mergeParts(host::loadModel(testDataPath("fixtures/index_out_of_range.gltf"), &warnings));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("index_out_of_range.gltf: Some faces had out-of-range indices"), std::string::npos)
+      << warnings[0];
+  warnings.clear();
+  host::loadModel(testDataPath("fixtures/triangle.gltf"), &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings[0];
+}
+
 TEST(DemoRender, IsNeitherBlackNorSaturatedAndProbesMatch) {
   PatchedHost host("default", 320, 240);
   const app::DisplayImage image = host.render("off");

@@ -98,9 +98,10 @@ TEST(Temporal, JitterIsHaltonTwoThreeOverItsLengthAndZeroForOtherMethods) {
   EXPECT_EQ(plugin.jitter().x, 0.0f);
   EXPECT_EQ(plugin.jitter().y, 0.0f);
   EXPECT_EQ(plugin.textureLodBias(), 0.0f);
-  other.temporalFilter = true;  // resolve+temporal jitters too
+  other.temporalFilter = true;  // resolve+temporal jitters too, from the sequence's first point again
   ASSERT_TRUE(plugin.reconfigure(other));
-  EXPECT_NE(plugin.jitter().x, 0.0f);
+  EXPECT_FLOAT_EQ(plugin.jitter().x, radicalInverse(1, 2) - 0.5f);
+  EXPECT_FLOAT_EQ(plugin.jitter().y, radicalInverse(1, 3) - 0.5f);
 }
 
 TEST(Temporal, AStillWallConvergesAndACutStartsAgainFromTheCurrentFrame) {

@@ -2,7 +2,9 @@
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -276,16 +278,50 @@ SharedTextureImage readMaterialTexture(const aiScene& scene, const aiMaterial& m
   return cache[key] = image;
 }
 
+// Some of what assimp leaves out it says only in its log: a glTF face whose index lies past its
+// vertices is dropped inside the importer, before appendNode could count it. While it lives, this
+// collects the log's warnings about data dropped so that the loader can pass them on.
+class DroppedDataLog : public Assimp::LogStream {
+ public:
+  DroppedDataLog() : ownsLogger_(Assimp::DefaultLogger::isNullLogger()) {
+    if (ownsLogger_) Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(this, Assimp::Logger::Warn | Assimp::Logger::Err);
+  }
+  ~DroppedDataLog() override {
+    Assimp::DefaultLogger::get()->detachStream(this, Assimp::Logger::Warn | Assimp::Logger::Err);
+    if (ownsLogger_) Assimp::DefaultLogger::kill();
+  }
+  void write(const char* message) override {
+    std::string text = message;
+    if (text.find("dropped") == std::string::npos && text.find("out-of-range") == std::string::npos) return;
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    const size_t colon = text.find(": ");  // "Warn,  T0: …": the level and thread are assimp's
+    messages.push_back(colon == std::string::npos ? text : text.substr(colon + 2));
+  }
+  std::vector<std::string> messages;
+
+ private:
+  bool ownsLogger_;
+};
+
 }  // namespace
 
 std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::string>* warnings) {
   Assimp::Importer importer;
+  DroppedDataLog log;
   // FlipUVs: assimp turns glTF's top-down coordinates (and OBJ's bottom-up ones) into bottom-up; images
   // are uploaded top-down, so every format is brought back to top-down.
   const aiScene* scene =
       importer.ReadFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
                                   aiProcess_SortByPType | aiProcess_FlipUVs);
   if (!scene || !scene->mRootNode) throw ModelLoadError(path + ": cannot load model: " + importer.GetErrorString());
+  auto warn = [warnings](const std::string& what) {
+    if (warnings)
+      warnings->push_back(what);
+    else
+      std::fprintf(stderr, "retroaa: warning: %s\n", what.c_str());
+  };
+  for (const std::string& message : log.messages) warn(path + ": " + message);
   std::vector<Mesh> meshes(std::max(1u, scene->mNumMaterials));
   std::vector<std::tuple<std::string, unsigned, unsigned>> dropped;
   appendNode(meshes, *scene, *scene->mRootNode, glm::mat4(1.0f), dropped);
@@ -296,10 +332,7 @@ std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::strin
                              std::to_string(triangles) +
                              " triangles have non-finite positions or normals or indices out of range";
     if (indices == 0) throw ModelLoadError(what + "; nothing of the model is usable");
-    if (warnings)
-      warnings->push_back(what + "; they are left out");
-    else
-      std::fprintf(stderr, "retroaa: warning: %s; they are left out\n", what.c_str());
+    warn(what + "; they are left out");
   }
   if (indices == 0) throw ModelLoadError(path + ": model has no triangles");
 

@@ -425,7 +425,8 @@ GLuintHandle Plugin::geometryFramebuffer() const {
 Jitter Plugin::jitter() const {
   const PluginContext& context = impl_->context;
   if (!runsTemporal(context.config)) return {};
-  return temporalJitter(context.statistics->framesStarted() + 1, context.config.temporalJitterLength);
+  return temporalJitter(context.statistics->framesStarted() + 1 - context.jitterOrigin,
+                        context.config.temporalJitterLength);
 }
 
 float Plugin::textureLodBias() const {
@@ -534,7 +535,7 @@ Status Plugin::reconfigure(const Config& config) {
   sameImage.measureGpuTime = context.config.measureGpuTime;
   sameImage.temporalBlend = context.config.temporalBlend;
   if (toConfigText(sameImage) != toConfigText(context.config))
-    for (ActiveTechnique& active : impl_->techniques) active.technique->resetHistory();
+    for (ActiveTechnique& active : impl_->techniques) active.technique->resetHistory(context);
   // Figures measured under another config would be reported as this one's.
   if (toConfigText(context.config) != toConfigText(previous)) context.statistics->release();
   return status;

@@ -62,10 +62,11 @@ std::vector<TechniqueRow>& rows() {
        createReconstructTechnique,
        [](const Config& c) { return c.reconstructFilter && usesMsaa(c.method); },
        kStoragePostTarget},
+      // The tuner leaves temporal out: it judges single frames, where a history converged on a still
+      // camera wins, and a preset must not depend on the host's jitter line (docs/methods/temporal.md).
       {{Method::Temporal, "temporal",
         "jittered projection; each frame blended into a reprojected, neighbourhood-clipped history", false, 1,
-        "temporal,resolve+temporal,reconstruct+temporal", "temporal",
-        "temporal@temporal_blend=0.2,temporal,temporal@temporal_blend=0.05", "temporal_filter"},
+        "temporal,resolve+temporal,reconstruct+temporal", "temporal", "", "temporal_filter"},
        kStoragePostTarget,
        createTemporalTechnique,
        [](const Config& c) { return c.temporalFilter; },

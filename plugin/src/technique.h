@@ -40,7 +40,7 @@ class Technique {
   virtual uint64_t bytes() const { return 0; }
   // The config changed in a way that changes the image (Plugin::reconfigure): state carried from frame
   // to frame (a history) starts anew.
-  virtual void resetHistory() {}
+  virtual void resetHistory(PluginContext&) {}
   // Whether the GL objects built for the config it was created under still serve `config`; if not,
   // the plugin rebuilds the technique. (A new sample count or layout rebuilds every technique.)
   virtual bool keepsObjectsFor(const Config& config) const = 0;
@@ -115,8 +115,8 @@ struct TechniqueRow {
   bool postLast = false;  // its post pass runs after every other active technique's
 };
 
-// `temporal`'s jitter for frame `frame` (frames started, counting this one) of a sequence of `length`
-// (methods/temporal.cpp), and whether `config` runs it (as the method or stacked).
+// `temporal`'s jitter for frame `frame` of its sequence (1: the first after the sequence began) of a
+// sequence of `length` (methods/temporal.cpp), and whether `config` runs it (as the method or stacked).
 Jitter temporalJitter(uint64_t frame, int length);
 bool runsTemporal(const Config& config);
 

@@ -103,6 +103,7 @@ class TemporalTechnique : public Technique {
   static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
     auto technique = std::make_unique<TemporalTechnique>();
     TemporalTechnique& t = *technique;
+    context.jitterOrigin = context.statistics->framesStarted();
     const GBufferLayout& layout = context.layout;
     t.beforeTonemapRequested_ = context.config.temporalBeforeTonemap;
     t.jitterLength_ = context.config.temporalJitterLength;
@@ -161,7 +162,10 @@ class TemporalTechnique : public Technique {
     return Status::ok();
   }
 
-  void resetHistory() override { historyValid_ = false; }
+  void resetHistory(PluginContext& context) override {
+    historyValid_ = false;
+    context.jitterOrigin = context.statistics->framesStarted();
+  }
   bool keepsObjectsFor(const Config& config) const override {
     return config.temporalBeforeTonemap == beforeTonemapRequested_ && config.temporalJitterLength == jitterLength_;
   }
