@@ -11,10 +11,12 @@ namespace {
 }
 }  // namespace
 
-void writeImage8(const std::string& path, int, int, const std::vector<uint8_t>&, const std::map<std::string, std::string>&) {
+void writeImage8(const std::string& path, int, int, const std::vector<uint8_t>&,
+                 const std::map<std::string, std::string>&) {
   unavailable(path);
 }
-void writeImageFloat(const std::string& path, int, int, const std::vector<float>&, const std::map<std::string, std::string>&) {
+void writeImageFloat(const std::string& path, int, int, const std::vector<float>&,
+                     const std::map<std::string, std::string>&) {
   unavailable(path);
 }
 std::vector<float> readImageRgb(const std::string& path, int&, int&) { unavailable(path); }

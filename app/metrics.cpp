@@ -21,12 +21,9 @@ float DisplayImage::luma(int x, int y) const {
   return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
 }
 
-double psnrFromMse(double mse) {
-  return mse <= 0 ? kPsnrCapDb : std::min(kPsnrCapDb, 10.0 * std::log10(1.0 / mse));
-}
+double psnrFromMse(double mse) { return mse <= 0 ? kPsnrCapDb : std::min(kPsnrCapDb, 10.0 * std::log10(1.0 / mse)); }
 
-ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference,
-                     const std::vector<uint8_t>& edgeMask) {
+ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference, const std::vector<uint8_t>& edgeMask) {
   if (image.width != reference.width || image.height != reference.height)
     throw std::invalid_argument("compare: image sizes differ");
   ErrorMetrics m;
@@ -101,8 +98,7 @@ double ssim(const DisplayImage& a, const DisplayImage& b) {
         m[k] = s;
       }
       const double varA = m[2] - m[0] * m[0], varB = m[3] - m[1] * m[1], cov = m[4] - m[0] * m[1];
-      total += ((2 * m[0] * m[1] + c1) * (2 * cov + c2)) /
-               ((m[0] * m[0] + m[1] * m[1] + c1) * (varA + varB + c2));
+      total += ((2 * m[0] * m[1] + c1) * (2 * cov + c2)) / ((m[0] * m[0] + m[1] * m[1] + c1) * (varA + varB + c2));
       ++count;
     }
   return total / count;

@@ -271,8 +271,10 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
 void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
   const std::string dir = scene["directory"];
   html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
-       << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>wall ms (frame 1)</th><th>plugin overhead ms</th><th>plugin B/px</th><th>PSNR dB</th>"
-       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>interior PSNR dB</th><th>PSNR vs per-sample</th><th>SSIM</th><th>max "
+       << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>wall ms (frame 1)</th><th>plugin "
+          "overhead ms</th><th>plugin B/px</th><th>PSNR dB</th>"
+       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>interior PSNR dB</th><th>PSNR vs "
+          "per-sample</th><th>SSIM</th><th>max "
           "err</th><th>flicker</th></tr>\n";
   for (const auto& r : scene["rows"]) {
     html << "<tr><td>" << htmlEscape(r["method"]) << "</td>";

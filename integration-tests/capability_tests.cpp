@@ -14,7 +14,8 @@ TEST(Capabilities, WithoutMultisamplingEveryMsaaMethodFallsBackToFxaa) {
     EXPECT_EQ(hooks->plugin().config().method, retroaa::Method::Fxaa) << method;
     const auto warnings = hooks->plugin().warnings();
     ASSERT_FALSE(warnings.empty()) << method;
-    EXPECT_NE(warnings.back().find(std::string("method ") + method + " needs multisampling"), std::string::npos) << warnings.back();
+    EXPECT_NE(warnings.back().find(std::string("method ") + method + " needs multisampling"), std::string::npos)
+        << warnings.back();
     EXPECT_NE(warnings.back().find("GL_MAX_SAMPLES is 1; falling back to fxaa"), std::string::npos) << warnings.back();
     host.renderer->renderFrame(host.scene.camera);
     EXPECT_EQ(app::DisplayImage::fromRgba8(96, 72, host.renderer->readDisplay()).rgb, fxaa.rgb) << method;
@@ -45,7 +46,8 @@ TEST(Capabilities, WithoutTimerQueriesNoPassTimesAndSaysSo) {
   host.renderer->renderFrame(host.scene.camera);
   EXPECT_TRUE(hooks->plugin().waitForStats().passes.empty());
   bool said = false;
-  for (const std::string& w : hooks->plugin().warnings()) said = said || w.find("no timer queries") != std::string::npos;
+  for (const std::string& w : hooks->plugin().warnings())
+    said = said || w.find("no timer queries") != std::string::npos;
   EXPECT_TRUE(said);
   // And with them, the same config measures its passes.
   auto measured = installHooks(host, config, 0, 0);

@@ -384,7 +384,11 @@ TEST(Plugin, TakesADepthRenderbufferThroughATextureMirror) {
     const std::unique_ptr<retroaa::Plugin> plugin = resolveUniform(description, w, h, sample);
     ASSERT_TRUE(plugin);
     EXPECT_EQ(plugin->stats().bytesHeld, bytesWithTexture + uint64_t(w) * h * 4);
+    // `off` holds nothing, the mirror neither; a method that reads depth again takes a new one.
+    ASSERT_TRUE(plugin->reconfigure(retroaa::Config{}));
+    EXPECT_EQ(plugin->stats().bytesHeld, 0u);
     ASSERT_TRUE(plugin->reconfigure(app::parseMethodSpec("fxaa", {}).config));  // post() reads it back
+    EXPECT_GT(plugin->stats().bytesHeld, 0u);
     ASSERT_TRUE(plugin->post());
   }
   glCreateFramebuffers(1, &readBack);

@@ -64,11 +64,12 @@ TEST(Ssaa, AdaptiveRefinesStarsTheFirstSubPositionMisses) {
   // inside the window, and with the quality shading scale brings adaptive within 40 dB of ssaa at well
   // under the 60 % of its samples the paper's Table 1 allows. A starless sky still takes one.
   auto sky = [](int starDensity) {
-    const std::string scene = (std::filesystem::temp_directory_path() /
-                               ("retroaa_star_sky" + std::to_string(starDensity) + ".json"))
-                                  .string();
+    const std::string scene =
+        (std::filesystem::temp_directory_path() / ("retroaa_star_sky" + std::to_string(starDensity) + ".json"))
+            .string();
     std::ofstream(scene) << R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0], "fov_y_deg": 60},
-      "star_density": )" << starDensity << R"(, "sky_color": [0.01, 0.012, 0.03],
+      "star_density": )" << starDensity
+                         << R"(, "sky_color": [0.01, 0.012, 0.03],
       "materials": [{"name": "hull", "albedo": [0.5, 0.5, 0.5]}],
       "objects": [{"name": "box", "generator": {"type": "box", "size": [0.2, 0.2, 0.2]}, "material": "hull",
                    "transform": {"translate": [1.5, 1.0, 0]}}],

@@ -21,7 +21,10 @@ class BlockingCallSpy {
  public:
   BlockingCallSpy() {
     calls().clear();
-    swap(epoxy_glFinish, finish_, "glFinish", [] { note("glFinish"); real().finish(); });
+    swap(epoxy_glFinish, finish_, "glFinish", [] {
+      note("glFinish");
+      real().finish();
+    });
     swap(epoxy_glGetQueryObjectuiv, queryUiv_, "glGetQueryObjectuiv", [](GLuint id, GLenum pname, GLuint* out) {
       if (pname == GL_QUERY_RESULT) note("glGetQueryObjectuiv(GL_QUERY_RESULT)");
       real().queryUiv(id, pname, out);
@@ -30,11 +33,10 @@ class BlockingCallSpy {
       if (pname == GL_QUERY_RESULT) note("glGetQueryObjectiv(GL_QUERY_RESULT)");
       real().queryIv(id, pname, out);
     });
-    swap(epoxy_glGetQueryObjectui64v, queryUi64v_, "glGetQueryObjectui64v",
-         [](GLuint id, GLenum pname, GLuint64* out) {
-           if (pname == GL_QUERY_RESULT) note("glGetQueryObjectui64v(GL_QUERY_RESULT)");
-           real().queryUi64v(id, pname, out);
-         });
+    swap(epoxy_glGetQueryObjectui64v, queryUi64v_, "glGetQueryObjectui64v", [](GLuint id, GLenum pname, GLuint64* out) {
+      if (pname == GL_QUERY_RESULT) note("glGetQueryObjectui64v(GL_QUERY_RESULT)");
+      real().queryUi64v(id, pname, out);
+    });
     swap(epoxy_glGetQueryObjecti64v, queryI64v_, "glGetQueryObjecti64v", [](GLuint id, GLenum pname, GLint64* out) {
       if (pname == GL_QUERY_RESULT) note("glGetQueryObjecti64v(GL_QUERY_RESULT)");
       real().queryI64v(id, pname, out);
@@ -117,8 +119,12 @@ class BlockingCallSpy {
       return reinterpret_cast<F>(table.at(name));
     }
     void finish() const { get<PFNGLFINISHPROC>("glFinish")(); }
-    void queryUiv(GLuint id, GLenum p, GLuint* o) const { get<PFNGLGETQUERYOBJECTUIVPROC>("glGetQueryObjectuiv")(id, p, o); }
-    void queryIv(GLuint id, GLenum p, GLint* o) const { get<PFNGLGETQUERYOBJECTIVPROC>("glGetQueryObjectiv")(id, p, o); }
+    void queryUiv(GLuint id, GLenum p, GLuint* o) const {
+      get<PFNGLGETQUERYOBJECTUIVPROC>("glGetQueryObjectuiv")(id, p, o);
+    }
+    void queryIv(GLuint id, GLenum p, GLint* o) const {
+      get<PFNGLGETQUERYOBJECTIVPROC>("glGetQueryObjectiv")(id, p, o);
+    }
     void queryUi64v(GLuint id, GLenum p, GLuint64* o) const {
       get<PFNGLGETQUERYOBJECTUI64VPROC>("glGetQueryObjectui64v")(id, p, o);
     }

@@ -26,7 +26,8 @@ std::string writeScene(const std::string& name, const std::string& json) {
 std::string boxScene(const std::string& model, const std::string& material) {
   return writeScene("textured_box", R"({"camera": "fit", "ambient": [0.3, 0.3, 0.3],
     "materials": [{"name": "grey", "albedo": [0.5, 0.5, 0.5]}],
-    "objects": [{"name": "box", "model": ")" + model + "\"" +
+    "objects": [{"name": "box", "model": ")" +
+                                        model + "\"" +
                                         (material.empty() ? "" : R"(, "material": ")" + material + "\"") + R"(}],
     "lights": [{"type": "directional", "direction": [-0.3, -0.5, -1], "intensity": 2}]})");
 }
@@ -113,7 +114,8 @@ TEST(Textures, ProceduralMapsAreDeterministicAndDifferBySeed) {
   auto scene = [](int seed) {
     return host::loadScene(writeScene("procedural_" + std::to_string(seed), R"({"camera": "fit",
       "materials": [{"name": "m", "procedural": {"pattern": "panels", "texels": 64, "seed": )" +
-                                                std::to_string(seed) + R"(, "glow": 0.5}}],
+                                                                                std::to_string(seed) +
+                                                                                R"(, "glow": 0.5}}],
       "objects": [{"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m"}]})"));
   };
   const host::Scene a = scene(1), b = scene(1), c = scene(2);
@@ -162,7 +164,8 @@ TEST(Textures, GroundTruthFiltersTexturesPerSupersampleAndConverges) {
   const app::DisplayImage gt4Pixel = truth(4, host::TextureFootprint::Pixel);
   const double ssaaBiased = app::compare(ssaa, gt4, {}).psnrDb, ssaaPixel = app::compare(ssaa, gt4Pixel, {}).psnrDb;
   EXPECT_GT(ssaaBiased, ssaaPixel + 3.0);
-  std::printf("8x8 vs 16x16: %.1f dB; pixel-footprint 8x8 vs 16x16: %.1f dB; ssaa m=4 vs 4x4: %.1f dB (%.1f dB "
-              "at the pixel footprint)\n",
-              converged, app::compare(pixelFootprint, gt16, {}).psnrDb, ssaaBiased, ssaaPixel);
+  std::printf(
+      "8x8 vs 16x16: %.1f dB; pixel-footprint 8x8 vs 16x16: %.1f dB; ssaa m=4 vs 4x4: %.1f dB (%.1f dB "
+      "at the pixel footprint)\n",
+      converged, app::compare(pixelFootprint, gt16, {}).psnrDb, ssaaBiased, ssaaPixel);
 }

@@ -179,12 +179,18 @@ GLenum sizedColourFormat(GLuint texture, GLenum declared) {
     GLenum format;
   };
   static const Row rows[] = {
-      {4, 8, GL_UNSIGNED_NORMALIZED, GL_RGBA8}, {3, 8, GL_UNSIGNED_NORMALIZED, GL_RGB8},
-      {2, 8, GL_UNSIGNED_NORMALIZED, GL_RG8},   {1, 8, GL_UNSIGNED_NORMALIZED, GL_R8},
-      {4, 16, GL_UNSIGNED_NORMALIZED, GL_RGBA16}, {4, 16, GL_FLOAT, GL_RGBA16F},
-      {3, 16, GL_FLOAT, GL_RGB16F},             {2, 16, GL_FLOAT, GL_RG16F},
-      {1, 16, GL_FLOAT, GL_R16F},               {4, 32, GL_FLOAT, GL_RGBA32F},
-      {3, 32, GL_FLOAT, GL_RGB32F},             {2, 32, GL_FLOAT, GL_RG32F},
+      {4, 8, GL_UNSIGNED_NORMALIZED, GL_RGBA8},
+      {3, 8, GL_UNSIGNED_NORMALIZED, GL_RGB8},
+      {2, 8, GL_UNSIGNED_NORMALIZED, GL_RG8},
+      {1, 8, GL_UNSIGNED_NORMALIZED, GL_R8},
+      {4, 16, GL_UNSIGNED_NORMALIZED, GL_RGBA16},
+      {4, 16, GL_FLOAT, GL_RGBA16F},
+      {3, 16, GL_FLOAT, GL_RGB16F},
+      {2, 16, GL_FLOAT, GL_RG16F},
+      {1, 16, GL_FLOAT, GL_R16F},
+      {4, 32, GL_FLOAT, GL_RGBA32F},
+      {3, 32, GL_FLOAT, GL_RGB32F},
+      {2, 32, GL_FLOAT, GL_RG32F},
       {1, 32, GL_FLOAT, GL_R32F},
   };
   for (const Row& row : rows)

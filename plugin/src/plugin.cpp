@@ -42,7 +42,7 @@ Status validateLayout(const GBufferLayout& layout) {
   if (depth.kind == DepthEncoding::Kind::FsoCompressedViewZ &&
       !(depth.farDistance > 100000.0f && std::isfinite(depth.farDistance)))
     return invalid("depthEncoding.farDistance must be above 100000 m for FsoCompressedViewZ (FSO's GLOBAL_FAR_Z)");
-  if (!layout.gbufferFramebuffer || !layout.depthStencilTexture)
+  if (!layout.gbufferFramebuffer || (!layout.depthStencilTexture && !layout.depthStencilRenderbuffer))
     return invalid("layout is missing the host's G-buffer (gbufferFramebuffer, depthStencilTexture)");
   if (!layout.displayFramebuffer != !layout.displayTexture)
     return invalid(
@@ -64,7 +64,7 @@ Status validateLayout(const GBufferLayout& layout) {
                        std::to_string(layout.extraLightTextures[k]) +
                        ") is not a texture that holds floats (e.g. GL_R11F_G11F_B10F, GL_RGBA16F)");
   }
-  if (!sizedDepthFormat(layout.depthStencilTexture)) {
+  if (!layout.depthStencilRenderbuffer && !sizedDepthFormat(layout.depthStencilTexture)) {
     GLint format = 0;
     if (glIsTexture(layout.depthStencilTexture))
       glGetTextureLevelParameteriv(layout.depthStencilTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
@@ -109,8 +109,7 @@ struct DepthMirror {
     const GLenum format = sizedDepthRenderbufferFormat(layout.depthStencilRenderbuffer);
     mirror->width = layout.width;
     mirror->height = layout.height;
-    mirror->texture =
-        makeTexture(context, format, layout.width, layout.height, 0, "depth_mirror", mirror->bytes);
+    mirror->texture = makeTexture(context, format, layout.width, layout.height, 0, "depth_mirror", mirror->bytes);
     mirror->hostDepth = makeFramebuffer(context, "depth_mirror.host");
     glNamedFramebufferRenderbuffer(mirror->hostDepth.get(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
                                    layout.depthStencilRenderbuffer);
@@ -279,6 +278,17 @@ struct Plugin::Impl {
     const std::vector<const TechniqueRow*> rows = activeRows(config);
     const uint32_t storage = storageOf(config, rows);
     const bool needMsaa = storage & kStorageMsaaGBuffer;
+    // A host's depth renderbuffer: the passes read its texture mirror, held only while any pass runs.
+    if (context.layout.depthStencilRenderbuffer) {
+      if (storage == kStorageNone) {
+        depthMirror.reset();
+      } else if (!depthMirror) {
+        auto created = DepthMirror::create(context, context.layout);
+        if (!created) return created.error();
+        depthMirror = std::move(created.value());
+      }
+      context.layout.depthStencilTexture = depthMirror ? depthMirror->texture.get() : 0;
+    }
     if (rebuildAll || !needMsaa ||
         (msaa &&
          (msaa->requestedSamples() != config.samples || msaa->supersample() != std::max(config.supersample, 1)))) {
@@ -331,17 +341,11 @@ struct Plugin::Impl {
     return Status::ok();
   }
 
-  // Validates `host` and makes it the layout every pass uses: a depth renderbuffer replaced by its mirror.
+  // Validates `host` and makes it the layout every pass uses. A depth renderbuffer is mirrored in a
+  // texture only while a method runs (allocate(): `off` holds nothing).
   Status setLayout(const GBufferLayout& host) {
     if (Status status = DepthMirror::validate(host); !status) return status;
     GBufferLayout layout = host;
-    std::unique_ptr<DepthMirror> mirror;
-    if (host.depthStencilRenderbuffer && host.width > 0 && host.height > 0) {
-      auto created = DepthMirror::create(context, host);
-      if (!created) return created.error();
-      mirror = std::move(created.value());
-      layout.depthStencilTexture = mirror->texture.get();
-    }
     // Unsized formats (GL_RGBA, …) become the sized ones the host's textures have: the plugin's copies
     // need sized storage.
     for (Attachment& attachment : layout.attachments) {
@@ -360,7 +364,7 @@ struct Plugin::Impl {
     }
     if (Status status = validateLayout(layout); !status) return status;
     context.layout = layout;
-    depthMirror = std::move(mirror);
+    depthMirror.reset();
     return Status::ok();
   }
 

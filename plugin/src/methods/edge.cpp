@@ -16,7 +16,7 @@ namespace {
 
 EdgeDetector detectorFor(const Config& config) {
   return config.method == Method::PerSample || config.method == Method::Ssaa ? EdgeDetector::EveryPixel
-                                                                              : config.edgeDetector;
+                                                                             : config.edgeDetector;
 }
 
 class EdgeTechnique : public Technique {
