@@ -13,7 +13,7 @@ APT_PACKAGES = cmake g++ make pkg-config git python3 assimp-testmodels xvfb xaut
 # clang and its sanitizer and libFuzzer runtimes, for test-sanitize and fuzz only.
 CLANG_PACKAGES = clang libclang-rt-14-dev
 
-.PHONY: check-library-only deps deps-clang stk-deps stk stk-report test-stk build demo test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
+.PHONY: check-library-only deps deps-clang stk-deps stk stk-report test-stk build demo demo-full test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -69,7 +69,15 @@ build: deps
 	cmake --build $(BUILD) -j$(JOBS)
 
 # llvmpipe's thread count is pinned so images are byte-stable from run to run.
+# The quick table first: one spec per method on the demo frame, a few minutes after the build.
 demo: build
+	LP_NUM_THREADS=2 $(RETROAA) bench --scene default --methods each,ssaa@supersample=2 --width 320 --height 240 \
+	  --gt-samples 8 --repeats 1 --wall-frames 10 --json out/report.json --csv out/report.csv --report out/report.md \
+	  --images out/images
+	@echo "report: out/report.md (one frame, one spec per method; JSON, CSV, images beside it)"
+	@echo "every variant, a finer ground truth and the recorded path: make demo-full (about 8 min)"
+
+demo-full: build
 	LP_NUM_THREADS=2 $(RETROAA) bench --scene default --methods all --width 320 --height 240 --gt-samples 16 \
 	  --json out/report.json --csv out/report.csv --report out/report.md --images out/images
 	LP_NUM_THREADS=2 $(RETROAA) regress default --out out/regress

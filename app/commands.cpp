@@ -5,6 +5,7 @@
 #include "image_io.h"
 #include "measure.h"
 #include "metrics.h"
+#include "progress.h"
 #include "renderer.h"
 #include "retroaa_hooks.h"
 #include "scene.h"
@@ -268,14 +269,17 @@ int runBench(const BenchOptions& options) {
   std::fprintf(stderr, "bench: %s, %dx%d, %zu triangles, %zu lights; ground truth %dx%d per pixel...\n",
                session.scene.name.c_str(), w, h, session.scene.triangleCount(), session.scene.lights.size(),
                options.groundTruthSamples, options.groundTruthSamples);
+  // Each method's time is roughly the same few frames: the ETA after the reference is a fair guess.
+  Progress progress("bench", int(specs.size()) + 2);
   const FrameReference reference = renderReference(session, camera, options.groundTruthSamples, &options.base);
+  progress.step("ground truth and per-sample reference");
   session.configure(options.base);
   const double shadingFloor = measureShadingFloor(session, camera);
+  progress.step("shading floor");
   if (!options.imagesDirectory.empty()) writeReferenceImages(options.imagesDirectory, session, reference);
 
   json rows = json::array();
   for (const MethodSpec& spec : specs) {
-    std::fprintf(stderr, "bench: %s\n", spec.name.c_str());
     session.configure(spec.config, spec.name);
     // A history (temporal): how it converges on this still frame, then measured converged.
     std::optional<Convergence> convergence;
@@ -288,8 +292,9 @@ int runBench(const BenchOptions& options) {
       row["converged_psnr_db"] = convergence->convergedPsnrDb;
       row["frames_to_within_1db"] = convergence->framesToWithinOneDb;
       row["psnr_db_by_frame"] = convergence->psnrDb;
-      std::fprintf(stderr, "bench: %s converges to %.2f dB on this still frame, within 1 dB of it from frame %d\n",
-                   spec.name.c_str(), convergence->convergedPsnrDb, convergence->framesToWithinOneDb);
+      std::fprintf(stderr, "%sbench: %s converges to %.2f dB on this still frame, within 1 dB of it from frame %d\n",
+                   isatty(2) ? "\r\033[K" : "", spec.name.c_str(), convergence->convergedPsnrDb,
+                   convergence->framesToWithinOneDb);
     }
     rows.push_back(row);
     if (!options.imagesDirectory.empty()) {
@@ -297,6 +302,7 @@ int runBench(const BenchOptions& options) {
       writeImage8(stem + ".png", w, h, m.display, session.metadata(spec.name));
       writeImage8(stem + "-error.png", w, h, errorHeatmap(m.image, reference.truth));
     }
+    progress.step(spec.name);
   }
   addTimeRatios(rows);
   const double copyGigabytesPerSecond = measureCopyGigabytesPerSecond();
