@@ -121,6 +121,16 @@ TEST(Temporal, AStillWallConvergesAndACutStartsAgainFromTheCurrentFrame) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+TEST(Temporal, ALeftHandedProjectionReprojectsAsWell) {
+  // Irrlicht's (SuperTuxKart's) projections look down +z: clip w = +z. A still wall still converges.
+  HandWrittenFrames frames;
+  const glm::mat4 projection = glm::perspectiveLH(1.0f, 1.0f, 0.1f, 2.0e6f);
+  std::memcpy(frames.info.projectionMatrix, glm::value_ptr(projection), sizeof frames.info.projectionMatrix);
+  for (int i = 0; i < 12; ++i) frames.run(wall(10, kRed));
+  const std::vector<glm::vec4> light = frames.run(wall(10, kRed, 0, 10.0f));
+  EXPECT_GT(light[0].r, 0.5f) << "the red history should weigh in the blue pixel";
+}
+
 TEST(Temporal, ASurfaceThatWasNotThereTakesNoHistory) {
   HandWrittenFrames frames;
   for (int i = 0; i < 12; ++i) frames.run(wall(10, kRed));
@@ -162,7 +172,7 @@ TEST(Temporal, WithoutMatricesOrWithBrokenOnesEachFrameIsShownAsRenderedWithOneW
   frames.info.viewMatrix[12] = std::nanf("");
   for (int i = 0; i < 2; ++i) light = frames.run(wall(10, kRed));
   for (const glm::vec4& pixel : light) EXPECT_EQ(glm::vec3(pixel), kRed);
-  EXPECT_TRUE(warned(frames.hooks->plugin(), "singular or not finite"));
+  EXPECT_TRUE(warned(frames.hooks->plugin(), "singular, not finite or not a perspective projection"));
 }
 
 TEST(Temporal, TheFsoHostJittersItsProjectionAndAStillFrameConvergesNearSupersampling) {

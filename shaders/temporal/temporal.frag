@@ -16,6 +16,7 @@ layout(binding = 2) uniform sampler2D uDepth;    // the host's single-sample dep
 
 uniform mat4 uViewToPreviousClip;  // previous projection × previous view × inverse(this view)
 uniform vec4 uProjection;          // P[0][0], P[1][1], P[2][0], P[2][1] of this frame's unjittered projection
+uniform float uClipWPerViewZ;      // P[2][3]: -1 for GL's right-handed view space, +1 for a left-handed one
 uniform float uBlend;              // the current frame's weight
 uniform float uHistoryValid;       // 0 on the first frame after a reset (cut, new config, no matrices)
 
@@ -116,8 +117,11 @@ void main() {
   bool sky = depthBufferIsFar(z);
   float depth = sky ? kSkyDepth : depthBufferToMetres(z);
   vec2 ndc = (vec2(pixel) + 0.5) / vec2(last + 1) * 2.0 - 1.0;
-  vec2 ray = (ndc + uProjection.zw) / uProjection.xy;  // view-space x/d and y/d (any perspective projection)
-  vec4 viewPoint = sky ? vec4(ray, -1.0, 0.0) : vec4(ray * depth, -depth, 1.0);
+  // View-space x/d and y/d for any perspective projection: clip w = P[2][3]·z = d, so z = d / P[2][3],
+  // and ndc.x = (P[0][0]·x + P[2][0]·z) / d.
+  vec2 ray = (ndc - uProjection.zw / uClipWPerViewZ) / uProjection.xy;
+  float zPerDepth = 1.0 / uClipWPerViewZ;
+  vec4 viewPoint = sky ? vec4(ray, zPerDepth, 0.0) : vec4(ray * depth, zPerDepth * depth, 1.0);
   vec4 previousClip = uViewToPreviousClip * viewPoint;
   vec2 previousUv = previousClip.xy / previousClip.w * 0.5 + 0.5;
   // A perspective projection's clip w is the view depth.

@@ -138,7 +138,7 @@ class TemporalTechnique : public Technique {
     auto program = context.shaders->program(
         "common/fullscreen.vert", "temporal/temporal.frag",
         depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_),
-        {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uBlend", "uHistoryValid"});
+        {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ", "uBlend", "uHistoryValid"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -184,11 +184,11 @@ class TemporalTechnique : public Technique {
                "temporal: FrameInfo::projectionMatrix is not set, so the history cannot be reprojected; each frame "
                "is shown as rendered (docs/methods/temporal.md)");
     } else if (!allFinite(projection) || !allFinite(view) || !invert(view, inverseView) ||
-               !(projection[0] != 0.0f && projection[5] != 0.0f)) {
+               !(projection[0] != 0.0f && projection[5] != 0.0f && projection[11] != 0.0f)) {
       usable = false;
       warnOnce(context, warnedBadMatrices_,
-               "temporal: FrameInfo's view or projection matrix is singular or not finite; the history is dropped "
-               "for such frames");
+               "temporal: FrameInfo's view or projection matrix is singular, not finite or not a perspective "
+               "projection; the history is dropped for such frames");
     }
     const bool continues = usable && historyValid_ && previousUsable_ && !frame.cameraCut;
     if (continues) viewToPreviousClip = multiply(multiply(previousProjection_, previousView_), inverseView);
@@ -199,6 +199,7 @@ class TemporalTechnique : public Technique {
     projectionTerms_[1] = projection[5];  // P[1][1]
     projectionTerms_[2] = projection[8];  // P[2][0]
     projectionTerms_[3] = projection[9];  // P[2][1]
+    clipWPerViewZ_ = projection[11];      // P[2][3]
     return continues;
   }
 
@@ -224,6 +225,7 @@ class TemporalTechnique : public Technique {
     glBindTextureUnit(2, layout.depthStencilTexture);
     program_.setMatrix4("uViewToPreviousClip", viewToPreviousClip.data());
     program_.setVec4("uProjection", projectionTerms_);
+    program_.set("uClipWPerViewZ", clipWPerViewZ_);
     // A new history averages its first frames evenly (1/n) until temporal_blend takes over: a cut or a
     // reset converges in a few frames instead of fading in over ~2/blend.
     program_.set("uBlend", valid ? std::max(context.config.temporalBlend, 1.0f / float(framesAccumulated_ + 1)) : 1.0f);
@@ -250,6 +252,7 @@ class TemporalTechnique : public Technique {
   bool previousUsable_ = false;
   Matrix4 previousView_{}, previousProjection_{};
   float projectionTerms_[4] = {1, 1, 0, 0};  // P[0][0], P[1][1], P[2][0], P[2][1]
+  float clipWPerViewZ_ = -1.0f;              // P[2][3]
   bool warnedNoProjection_ = false, warnedBadMatrices_ = false;
   uint64_t bytes_ = 0;
 };
