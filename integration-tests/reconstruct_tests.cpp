@@ -34,7 +34,7 @@ struct ReconstructFixture {
 
   ReconstructFixture(const std::vector<uint8_t>& pixels, const std::vector<float>& pixelDepth, float tolerance = 2.0f,
                      int searchRadius = retroaa::Config{}.reconstructSearchRadius, GLenum displayFormat = GL_RGBA8,
-                     bool compute = false) {
+                     bool compute = false, bool normalsInViewSpace = true) {
     const host::HostTargets& t = frame.renderer->targets();
     retroaa::Description description;
     description.config.method = retroaa::Method::Reconstruct;
@@ -43,6 +43,7 @@ struct ReconstructFixture {
     description.config.reconstructSearchRadius = searchRadius;
     description.config.reconstructCompute = compute;
     description.layout = patch::describeHostGBuffer(t);
+    description.layout.normalsInViewSpace = normalsInViewSpace;
     display = t.displayTexture;
     if (displayFormat != GL_RGBA8) {
       glCreateTextures(GL_TEXTURE_2D, 1, &display);
@@ -228,6 +229,33 @@ TEST(Reconstruct, ASubSampleOnTheOtherFaceOfAnEdgeSkipsTheFaceItIsPerpendicularT
   for (int y = 0; y < kHeight; ++y) {
     EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0) << "row " << y << ": half A, half B";
     EXPECT_EQ(out[(y * kWidth + 8) * 4], 200) << "row " << y;
+    EXPECT_EQ(out[(y * kWidth + 9) * 4], 30) << "row " << y;
+  }
+}
+
+TEST(Reconstruct, NormalsInAnySpaceKeepTheirSignInThePrepass) {
+  // World-space normals (normalsInViewSpace off): faces A and B at one depth differ only in the sign of
+  // z, as a view-space normal never does. Kept as x and y alone (RG16F, z rebuilt as positive), B's
+  // sub-samples would match A and column 7 stay A's; kept whole, they take B's colour from column 9:
+  // column 7 is the half-and-half mix.
+  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
+  std::vector<glm::vec4> normals(kWidth * kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x <= 8 ? 200 : 30;
+      normals[y * kWidth + x] = glm::vec4(0.6f, 0.0f, x <= 8 ? 0.8f : -0.8f, 0.5f);
+    }
+  ReconstructFixture fixture(display, std::vector<float>(kWidth * kHeight, 0.5f), 2.0f,
+                             retroaa::Config{}.reconstructSearchRadius, GL_RGBA8, false, /*normalsInViewSpace=*/false);
+  fixture.setPixelNormals(normals);
+  const std::vector<uint8_t> out = fixture.run(
+      "bool onB = x >= 9 || (x == 7 && position.x > 0.6); gl_FragDepth = 0.5;"
+      " outNormal = vec4(0.6, 0.0, onB ? -0.8 : 0.8, 0.5);");
+  EXPECT_EQ(fixture.plugin->stats().bytesHeld, uint64_t(kWidth * kHeight) * (4u * 4u + 4u * 8u + 4u))
+      << "the whole RGBA16F normal per sample";
+  const float mixed = linearMix(200.0f, 30.0f, 0.5f);
+  for (int y = 0; y < kHeight; ++y) {
+    EXPECT_NEAR(out[(y * kWidth + 7) * 4], mixed, 1.0) << "row " << y << ": half A, half B";
     EXPECT_EQ(out[(y * kWidth + 9) * 4], 30) << "row " << y;
   }
 }

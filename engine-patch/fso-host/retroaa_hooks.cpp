@@ -30,6 +30,7 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
     layout.depthEncoding.knee = host::depth_codec::kKnee;
     layout.depthEncoding.backgroundAbove = host::depth_codec::kBackgroundThreshold;
   }
+  layout.normalsInViewSpace = true;  // the model shader writes view-space normals
   // The host's Blinn-Phong exponent is exp2(gloss · 10 + 1) (lighting_common.glsl).
   layout.glossEncoding = {true, 10.0f, 1.0f};
   layout.depthBufferEncoding =

@@ -48,13 +48,13 @@ class Technique {
 
 // Where a post filter finds each pixel's sub-sample depth (and normals): a multisampled prepass it owns
 // and hands the host (Plugin::prepassFramebuffer: depth, and with `withNormals` the output at the
-// NormalGloss location in RG16F, x and y of the unit normal), or, stacked on a G-buffer method, the MSAA
+// NormalGloss location, encoded as the layout says), or, stacked on a G-buffer method, the MSAA
 // G-buffer's own depth and normals. `coverage` and `reconstruct` read their sub-samples through it.
 struct SampleGeometry {
   GlTexture depthTexture, normalTexture;  // the prepass's; empty when reading the MSAA G-buffer
   GlFramebuffer prepass;
   GLuint depth = 0, normal = 0;  // what the filter reads (normal 0: none)
-  bool packedNormals = false;    // RG16F x, y (the prepass) rather than the G-buffer's xyz
+  bool packedNormals = false;    // a view-space xyz normal's x and y (the prepass, RG16F), z rebuilt
   bool ownsPrepass = false;
   int requestedSamples = 0, samples = 1;
   std::vector<float> samplePositions;  // x, y per sample, in the pixel (the driver's)

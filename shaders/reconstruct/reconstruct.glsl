@@ -81,7 +81,8 @@ Geometry sampleGeometry(ivec2 pixel, int s) {
   Geometry g;
   g.background = depthBufferIsFar(z);
   g.depth = depthBufferToMetres(z);
-// The pair encodings name the normal by xy alone, packed (RG16F) or not.
+// The pair encodings name the normal by xy alone; a view-space xyz normal comes as xy too in the prepass
+// (PACKED_SAMPLE_NORMALS, z ≥ 0 rebuilt); any other xyz normal comes whole.
 #if HAS_NORMALS && (NORMAL_ENCODING == NORMAL_OCTAHEDRAL || NORMAL_ENCODING == NORMAL_SPHEREMAP)
   g.normal = decodeNormal(vec4(texelFetch(uSampleNormal, pixel, s).xy, 0.0, 0.0));
 #elif HAS_NORMALS && PACKED_SAMPLE_NORMALS

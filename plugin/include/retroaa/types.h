@@ -100,6 +100,10 @@ struct GBufferLayout {
   int depthChannel = 2;  // channel of ViewPosition holding encoded depth (DepthSource::PositionChannel)
   DepthEncoding depthEncoding;
   NormalEncoding normalEncoding = NormalEncoding::Xyz;
+  // With NormalEncoding::Xyz: the normal is in view space, so z ≥ 0 for whatever the camera sees (FSO's).
+  // `reconstruct`'s prepass then keeps x and y alone (RG16F, 4 B a sample) and rebuilds z; otherwise
+  // (world space, or any other) it keeps the whole normal in the attachment's own format.
+  bool normalsInViewSpace = false;
   GlossEncoding glossEncoding;
   DepthBufferEncoding depthBufferEncoding = DepthBufferEncoding::Perspective;
   GLuintHandle gbufferFramebuffer = 0;   // the host's single-sample G-buffer (attachments + depth)
