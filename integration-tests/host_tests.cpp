@@ -127,6 +127,17 @@ TEST(SceneFile, ErrorsNameFileFieldAndExpectation) {
   }
 }
 
+TEST(Scene, MoreObjectsThanTheBudgetAreRefusedNamingTheObject) {
+  // Seven boxes repeated 10 000 times each: 70 000 objects, over the 65 536 a scene may hold.
+  std::string objects;
+  for (int i = 0; i < 7; ++i)
+    objects +=
+        std::string(i ? "," : "") +
+        R"({"generator": {"type": "box", "size": [1, 1, 1]}, "material": "m", "repeat": {"count": 10000, "offset": [2, 0, 0]}})";
+  const std::string error = sceneErrorOf(withObjects(objects));
+  EXPECT_NE(error.find("$.objects[6]: the scene exceeds 65536 objects"), std::string::npos) << error;
+}
+
 TEST(ModelLoading, ReadsObjAndGltf) {
   const host::Mesh obj = host::mergeParts(host::loadModel(testDataPath("fixtures/quad.obj")));
   EXPECT_EQ(obj.triangleCount(), 2u);

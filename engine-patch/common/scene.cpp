@@ -23,6 +23,8 @@ using nlohmann::json;
 
 // A scene file must not be able to exhaust memory: 20 M triangles is ~100× the demo scene.
 constexpr size_t kMaxSceneTriangles = 20'000'000;
+// Each object holds its own mesh and draw call: a million small ones took 7.6 GB before this cap.
+constexpr size_t kMaxSceneObjects = 65'536;
 
 // Reads typed fields and throws SceneError with the full field path on any mismatch.
 class Reader {
@@ -390,6 +392,9 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
 
   if (!root.has("objects")) root.fail("missing required key 'objects'");
   const Reader objects = root.child("objects");
+  if (objects.arraySize() > kMaxSceneObjects)
+    objects.fail("has " + std::to_string(objects.arraySize()) + " objects (at most " +
+                 std::to_string(kMaxSceneObjects) + ")");
   size_t triangles = 0;
   for (size_t i = 0; i < objects.arraySize(); ++i) {
     const Reader o = objects.element(i);
@@ -454,6 +459,10 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
       pieces.push_back(std::move(piece));
     }
     if (parts.empty()) pieces.push_back(std::move(object));
+    if (scene.objects.size() + pieces.size() * size_t(count) > kMaxSceneObjects)
+      o.fail("the scene exceeds " + std::to_string(kMaxSceneObjects) +
+             " objects (with its repeats and parts this one brings it to " +
+             std::to_string(scene.objects.size() + pieces.size() * size_t(count)) + ")");
     for (const Object& piece : pieces) {
       triangles += piece.mesh.triangleCount() * size_t(count);
       if (triangles > kMaxSceneTriangles)

@@ -36,6 +36,24 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
                             hasStencil(depthFormat) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                             gbuffer->depthStencil(), 0);
   if (Status status = checkFramebuffer(gbuffer->framebuffer(), "msaa_gbuffer"); !status) {
+    // A texture without storage: the driver could not allocate it (GL_OUT_OF_MEMORY). Name the size.
+    GLint allocatedWidth = 0;
+    glGetTextureLevelParameteriv(gbuffer->depthStencil(), 0, GL_TEXTURE_WIDTH, &allocatedWidth);
+    for (size_t i = 0; allocatedWidth && i < layout.attachments.size(); ++i)
+      glGetTextureLevelParameteriv(gbuffer->attachment(i), 0, GL_TEXTURE_WIDTH, &allocatedWidth);
+    if (!allocatedWidth) {
+      uint64_t bytesPerSample = bytesPerTexel(depthFormat);
+      for (const Attachment& attachment : layout.attachments)
+        bytesPerSample += bytesPerTexel(attachment.internalFormat);
+      const uint64_t requested =
+          bytesPerSample * uint64_t(width) * uint64_t(height) * uint64_t(std::max(storageSamples, 1));
+      char size[160];
+      std::snprintf(size, sizeof size, "%d x %d x %d samples x %llu B = %.2f GiB", width, height,
+                    std::max(storageSamples, 1), static_cast<unsigned long long>(bytesPerSample),
+                    double(requested) / double(1ull << 30));
+      return Error{ErrorCode::IncompleteFramebuffer, std::string("the driver could not allocate the MSAA G-buffer (") +
+                                                         size + "): ask for fewer samples or a smaller size"};
+    }
     // Name what the driver refuses: each attachment alone in a framebuffer of its own.
     for (size_t i = 0; i < layout.attachments.size(); ++i) {
       GLuint probe = 0;
