@@ -74,6 +74,11 @@ class ScopedPass {
 
 Status checkFramebuffer(GLuint framebuffer, const char* label);
 
+// For a pass that rewrites the host's light target before tonemapping and reads its neighbours: a
+// texture of the light target's format and size, and the copy of the frame's light into it.
+GlTexture makeLightTargetCopy(PluginContext& context, const char* label, uint64_t& bytes);
+void copyLightTarget(const GBufferLayout& layout, GLuint copy);
+
 // A texture with immutable storage: GL_TEXTURE_2D for `samples` = 0, GL_TEXTURE_2D_MULTISAMPLE with
 // that many samples otherwise (1 included, so N = 1 runs the same multisample path). Adds its size to `bytes`.
 GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, int height, int samples,

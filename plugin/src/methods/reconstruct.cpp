@@ -31,10 +31,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
       return Error{ErrorCode::InvalidLayout,
                    "reconstruct_before_tonemap=on filters the light target: the layout names no lightTexture"};
     if (t.beforeTonemap_) {  // a copy of the light target to read neighbours from while writing it
-      GLint format = GL_RGBA16F;
-      glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-      t.radiance_ = makeTexture(context, GLenum(format), layout.width, layout.height, 0, "reconstruct.radiance",
-                                t.geometry_.bytes);
+      t.radiance_ = makeLightTargetCopy(context, "reconstruct.radiance", t.geometry_.bytes);
     }
     t.output_ = t.beforeTonemap_ ? layout.lightTexture : shared.post->input(layout);
     GLint outputFormat = GL_RGBA8;
@@ -62,8 +59,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     if (!beforeTonemap_) return Status::ok();
     ScopedPass timed(context, "reconstruct");
     const GBufferLayout& layout = context.layout;
-    glCopyImageSubData(layout.lightTexture, GL_TEXTURE_2D, 0, 0, 0, 0, radiance_.get(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       layout.width, layout.height, 1);
+    copyLightTarget(layout, radiance_.get());
     if (!compute_) context.beginFullscreenPass(layout.lightFramebuffer);
     glBindTextureUnit(0, radiance_.get());
     run(context, frame);

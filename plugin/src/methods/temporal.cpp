@@ -109,9 +109,7 @@ class TemporalTechnique : public Technique {
     t.jitterLength_ = context.config.temporalJitterLength;
     if (t.beforeTonemapRequested_) {
       if (const std::string why = whyNotBeforeTonemap(layout); why.empty()) {
-        GLint format = GL_RGBA16F;
-        glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-        t.current_ = makeTexture(context, GLenum(format), layout.width, layout.height, 0, "temporal.current", t.bytes_);
+        t.current_ = makeLightTargetCopy(context, "temporal.current", t.bytes_);
         t.output_ = layout.lightTexture;
         t.beforeTonemap_ = true;
       } else {
@@ -135,10 +133,10 @@ class TemporalTechnique : public Technique {
       glNamedFramebufferDrawBuffers(t.framebuffers_[i].get(), 2, drawBuffers);
       if (Status status = checkFramebuffer(t.framebuffers_[i].get(), "temporal.output"); !status) return status.error();
     }
-    auto program = context.shaders->program(
-        "common/fullscreen.vert", "temporal/temporal.frag",
-        depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_),
-        {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ", "uBlend", "uHistoryValid"});
+    auto program = context.shaders->program("common/fullscreen.vert", "temporal/temporal.frag",
+                                            depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_),
+                                            {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection",
+                                             "uClipWPerViewZ", "uBlend", "uHistoryValid"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -147,9 +145,7 @@ class TemporalTechnique : public Technique {
   Status afterLighting(PluginContext& context, SharedTargets&, const FrameInfo& frame) override {
     if (!beforeTonemap_) return Status::ok();
     ScopedPass timed(context, "temporal");
-    const GBufferLayout& layout = context.layout;
-    glCopyImageSubData(layout.lightTexture, GL_TEXTURE_2D, 0, 0, 0, 0, current_.get(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       layout.width, layout.height, 1);
+    copyLightTarget(context.layout, current_.get());
     run(context, frame, current_.get());
     return Status::ok();
   }
