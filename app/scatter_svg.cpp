@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace app {
@@ -33,7 +34,25 @@ std::string xmlEscape(const std::string& text) {
 
 constexpr double kCharWidth = 6.2, kLabelHeight = 12, kPointRadius = 4;
 
+// Cheapest first; of equal cost the best first.
+std::vector<size_t> costOrder(const std::vector<ScatterPoint>& points) {
+  std::vector<size_t> order(points.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return points[a].cost != points[b].cost ? points[a].cost < points[b].cost : points[a].quality > points[b].quality;
+  });
+  return order;
+}
+
 }  // namespace
+
+std::vector<size_t> paretoFront(const std::vector<ScatterPoint>& points) {
+  std::vector<size_t> front;
+  double best = -std::numeric_limits<double>::infinity();
+  for (size_t i : costOrder(points))
+    if (points[i].quality > best) best = points[i].quality, front.push_back(i);
+  return front;
+}
 
 std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOptions& options) {
   const double w = 640, h = 380, left = 60, bottom = 62, top = 20, right = 20;
@@ -76,23 +95,14 @@ std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOpt
       << "\" text-anchor=\"end\" fill=\"#393\">target " << *options.target << "</text>";
   }
 
-  // The Pareto front: cheapest first; of equal cost the best first, so only it can join.
-  std::vector<size_t> order(points.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return points[a].cost != points[b].cost ? points[a].cost < points[b].cost : points[a].quality > points[b].quality;
-  });
   std::vector<bool> onFront(points.size(), false);
   std::ostringstream front;
   front << std::fixed;
   front.precision(1);
-  double best = -1e9;
-  for (size_t i : order)
-    if (points[i].quality > best) {
-      onFront[i] = true;
-      best = points[i].quality;
-      front << px(points[i].cost) << "," << py(points[i].quality) << " ";
-    }
+  for (size_t i : paretoFront(points)) {
+    onFront[i] = true;
+    front << px(points[i].cost) << "," << py(points[i].quality) << " ";
+  }
   s << "<polyline class=\"front\" points=\"" << front.str()
     << "\" fill=\"none\" stroke=\"#c33\" stroke-dasharray=\"4 3\"/>";
 
@@ -105,7 +115,7 @@ std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOpt
       << (p.highlighted ? "#c33" : "#246") << "\"><title>" << xmlEscape(p.label) << "</title></circle>";
   // Labels, the highlighted and front points first so that they get the nearest free places: eight
   // directions at growing distances; a label that had to move away gets a leader line.
-  std::vector<size_t> labelOrder = order;
+  std::vector<size_t> labelOrder = costOrder(points);
   std::stable_sort(labelOrder.begin(), labelOrder.end(), [&](size_t a, size_t b) {
     return int(points[a].highlighted) * 2 + int(onFront[a]) > int(points[b].highlighted) * 2 + int(onFront[b]);
   });

@@ -67,9 +67,9 @@ TuneChoice chooseCheapest(const std::vector<TunePoint>& points, const std::vecto
     if (points[a].cost != points[b].cost) return points[a].cost < points[b].cost;
     return worstFrame(points[a], primary) > worstFrame(points[b], primary);
   });
-  double best = -std::numeric_limits<double>::infinity();
-  for (int i : order)
-    if (worstFrame(points[i], primary) > best) best = worstFrame(points[i], primary), choice.front.push_back(i);
+  std::vector<ScatterPoint> costAndQuality;
+  for (const TunePoint& point : points) costAndQuality.push_back({"", point.cost, worstFrame(point, primary)});
+  for (size_t i : paretoFront(costAndQuality)) choice.front.push_back(int(i));
   // The shortfall of a point: how far its worst frame misses the targets (0 when it meets them all).
   auto shortfall = [&](const TunePoint& p) {
     double missing = 0;
