@@ -102,6 +102,20 @@ class Reader {
   std::string path_;
 };
 
+// The value a string field names, from its one table of names; an unknown name fails naming the
+// field and every allowed one.
+template <typename Enum>
+Enum namedValue(const Reader& field, const char* what, std::initializer_list<std::pair<const char*, Enum>> names) {
+  const std::string name = field.string();
+  std::string allowed;
+  for (const auto& [candidate, value] : names) {
+    if (name == candidate) return value;
+    allowed += std::string(allowed.empty() ? "" : ", ") + candidate;
+  }
+  field.fail("unknown " + std::string(what) + " '" + name + "' (allowed: " + allowed + ")");
+  return names.begin()->second;  // fail() throws
+}
+
 // A material's maps: "procedural" generates a set, the *_map keys name image files (relative to the
 // scene) and replace the generated map of their role.
 size_t textureBytes(const MaterialMaps& maps) {
@@ -340,34 +354,19 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   scene.skyColor = root.vec3Or("sky_color", scene.skyColor, 0.0f, 1e4f);
   scene.starDensity = root.numberOr("star_density", scene.starDensity, 0.0f, 10.0f);
   scene.exposure = root.numberOr("exposure", scene.exposure, 1e-4f, 1e4f);
-  if (root.has("shading")) {
-    const std::string shading = root.child("shading").string();
-    if (shading == "blinn-phong")
-      scene.shading = ShadingModel::BlinnPhong;
-    else if (shading == "ggx")
-      scene.shading = ShadingModel::GGX;
-    else
-      root.child("shading").fail("unknown shading model '" + shading + "' (allowed: blinn-phong, ggx)");
-  }
-
-  if (root.has("depth_buffer")) {
-    const std::string depth = root.child("depth_buffer").string();
-    if (depth == "logarithmic")
-      scene.depthBuffer = DepthBuffer::Logarithmic;
-    else if (depth == "perspective")
-      scene.depthBuffer = DepthBuffer::Perspective;
-    else
-      root.child("depth_buffer").fail("unknown depth buffer '" + depth + "' (allowed: logarithmic, perspective)");
-  }
+  scene.shading = root.has("shading")
+                      ? namedValue(root.child("shading"), "shading model",
+                                   {{"blinn-phong", ShadingModel::BlinnPhong}, {"ggx", ShadingModel::GGX}})
+                      : scene.shading;
+  scene.depthBuffer =
+      root.has("depth_buffer")
+          ? namedValue(root.child("depth_buffer"), "depth buffer",
+                       {{"logarithmic", DepthBuffer::Logarithmic}, {"perspective", DepthBuffer::Perspective}})
+          : scene.depthBuffer;
   if (root.has("position_depth")) {
-    const std::string encoding = root.child("position_depth").string();
-    if (encoding == "log-above-knee")
-      scene.positionDepth = PositionDepth::LogAboveKnee;
-    else if (encoding == "fso-compressed")
-      scene.positionDepth = PositionDepth::FsoCompressed;
-    else
-      root.child("position_depth")
-          .fail("unknown position depth '" + encoding + "' (allowed: log-above-knee, fso-compressed)");
+    scene.positionDepth =
+        namedValue(root.child("position_depth"), "position depth",
+                   {{"log-above-knee", PositionDepth::LogAboveKnee}, {"fso-compressed", PositionDepth::FsoCompressed}});
     // FSO's far segment divides by (100 000 m − GLOBAL_FAR_Z), the far plane.
     if (scene.positionDepth == PositionDepth::FsoCompressed && !(scene.camera.farPlane > 100000.0f))
       root.child("position_depth").fail("fso-compressed needs a camera far plane beyond 100000 m (FSO's GLOBAL_FAR_Z)");

@@ -44,17 +44,54 @@ std::string trim(const std::string& s) {
   return s.substr(begin, s.find_last_not_of(" \t\r\n") - begin + 1);
 }
 
+// One name table per enum: toString, the parser and each key's allowed list read it.
+template <typename Enum>
+struct Named {
+  Enum value;
+  const char* name;
+};
+constexpr Named<EdgeDetector> kEdgeDetectors[] = {
+    {EdgeDetector::Depth, "depth"},       {EdgeDetector::Plane, "plane"},
+    {EdgeDetector::Normal, "normal"},     {EdgeDetector::Material, "material"},
+    {EdgeDetector::Coverage, "coverage"}, {EdgeDetector::EveryPixel, "every_pixel"}};
+constexpr Named<ResolveWeighting> kWeightings[] = {
+    {ResolveWeighting::Median, "median"}, {ResolveWeighting::Front, "front"}, {ResolveWeighting::Back, "back"},
+    {ResolveWeighting::Fso, "fso"},       {ResolveWeighting::Mean, "mean"},   {ResolveWeighting::Window, "window"}};
+constexpr Named<FxaaQuality> kFxaaQualities[] = {
+    {FxaaQuality::Low, "low"}, {FxaaQuality::Medium, "medium"}, {FxaaQuality::High, "high"}};
+constexpr Named<SmaaQuality> kSmaaQualities[] = {{SmaaQuality::Low, "low"},
+                                                 {SmaaQuality::Medium, "medium"},
+                                                 {SmaaQuality::High, "high"},
+                                                 {SmaaQuality::Ultra, "ultra"}};
+constexpr Named<SmaaEdgeDetection> kSmaaEdgeDetections[] = {
+    {SmaaEdgeDetection::Luma, "luma"}, {SmaaEdgeDetection::Colour, "colour"}, {SmaaEdgeDetection::Depth, "depth"}};
+
 template <typename Enum, size_t N>
-Status parseEnum(const std::string& key, const std::string& value, const Enum (&values)[N], Enum& out) {
-  std::string allowed;
-  for (Enum candidate : values) {
-    if (value == toString(candidate)) {
-      out = candidate;
+const char* nameIn(const Named<Enum> (&table)[N], Enum value) {
+  for (const Named<Enum>& row : table)
+    if (row.value == value) return row.name;
+  return "?";
+}
+
+// "a, b, c": a key's allowed values, built once per table.
+template <typename Enum, size_t N>
+const char* namesOf(const Named<Enum> (&table)[N]) {
+  static const std::string names = [&table] {
+    std::string list;
+    for (const Named<Enum>& row : table) list += std::string(list.empty() ? "" : ", ") + row.name;
+    return list;
+  }();
+  return names.c_str();
+}
+
+template <typename Enum, size_t N>
+Status parseEnum(const std::string& key, const std::string& value, const Named<Enum> (&table)[N], Enum& out) {
+  for (const Named<Enum>& row : table)
+    if (value == row.name) {
+      out = row.value;
       return Status::ok();
     }
-    allowed += std::string(allowed.empty() ? "" : ", ") + toString(candidate);
-  }
-  return invalid("config key '" + key + "': unknown value " + quoted(value) + " (allowed: " + allowed + ")");
+  return invalid("config key '" + key + "': unknown value " + quoted(value) + " (allowed: " + namesOf(table) + ")");
 }
 
 Status parseFloat(const std::string& key, const std::string& value, float minimum, float maximum, float& out) {
@@ -104,16 +141,6 @@ const char* methodNames() {
   }();
   return names.c_str();
 }
-constexpr EdgeDetector kEdgeDetectors[] = {EdgeDetector::Depth,    EdgeDetector::Plane,    EdgeDetector::Normal,
-                                           EdgeDetector::Material, EdgeDetector::Coverage, EdgeDetector::EveryPixel};
-constexpr ResolveWeighting kWeightings[] = {ResolveWeighting::Median, ResolveWeighting::Front,
-                                            ResolveWeighting::Back,   ResolveWeighting::Fso,
-                                            ResolveWeighting::Mean,   ResolveWeighting::Window};
-constexpr FxaaQuality kFxaaQualities[] = {FxaaQuality::Low, FxaaQuality::Medium, FxaaQuality::High};
-constexpr SmaaQuality kSmaaQualities[] = {SmaaQuality::Low, SmaaQuality::Medium, SmaaQuality::High, SmaaQuality::Ultra};
-constexpr SmaaEdgeDetection kSmaaEdgeDetections[] = {SmaaEdgeDetection::Luma, SmaaEdgeDetection::Colour,
-                                                     SmaaEdgeDetection::Depth};
-
 struct Setter {
   ConfigKey key;
   Status (*apply)(Config&, const std::string& value);
@@ -153,8 +180,7 @@ const std::vector<Setter>& setters() {
          return invalid("config key 'supersample': unsupported factor " + quoted(v) + " (allowed: 0, 2, 3, 4)");
        },
        [](const Config& c) { return std::to_string(c.supersample); }},
-      {{"resolve_weighting", "median", "median, front, back, fso, mean, window",
-        "how resolve weights a pixel's samples; free per frame"},
+      {{"resolve_weighting", "median", namesOf(kWeightings), "how resolve weights a pixel's samples; free per frame"},
        [](Config& c, const std::string& v) {
          return parseEnum("resolve_weighting", v, kWeightings, c.resolveWeighting);
        },
@@ -169,7 +195,7 @@ const std::vector<Setter>& setters() {
         "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"},
        [](Config& c, const std::string& v) { return parseFloat("closeness", v, 0.0f, 100.0f, c.closeness); },
        [](const Config& c) { return formatFloat(c.closeness); }},
-      {{"edge_detector", "coverage", "depth, plane, normal, material, coverage, every_pixel",
+      {{"edge_detector", "coverage", namesOf(kEdgeDetectors),
         "how `edge` finds pixels to light per sample; free per frame"},
        [](Config& c, const std::string& v) { return parseEnum("edge_detector", v, kEdgeDetectors, c.edgeDetector); },
        [](const Config& c) { return std::string(toString(c.edgeDetector)); }},
@@ -347,7 +373,8 @@ const std::vector<Setter>& setters() {
       {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
        [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
        [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},
-      {{"fxaa_quality", "high", "low, medium, high", "FXAA edge search length (3, 6, 12 steps); cost grows with it"},
+      {{"fxaa_quality", "high", namesOf(kFxaaQualities),
+        "FXAA edge search length (3, 6, 12 steps); cost grows with it"},
        [](Config& c, const std::string& v) { return parseEnum("fxaa_quality", v, kFxaaQualities, c.fxaaQuality); },
        [](const Config& c) { return std::string(toString(c.fxaaQuality)); }},
       {{"fxaa_edge_threshold", "0.125", "0.063 .. 0.333", "FXAA local contrast needed to filter; lower softens more"},
@@ -358,12 +385,12 @@ const std::vector<Setter>& setters() {
       {{"smaa", "off", "on, off", "SMAA 1x after tonemapping, stacked on the method (before +fxaa)"},
        [](Config& c, const std::string& v) { return parseBool("smaa", v, c.smaa); },
        [](const Config& c) { return std::string(c.smaa ? "on" : "off"); }},
-      {{"smaa_quality", "high", "low, medium, high, ultra",
+      {{"smaa_quality", "high", namesOf(kSmaaQualities),
         "SMAA preset: threshold 0.15/0.1/0.1/0.05, search 8/16/32/64 px each way, diagonals and corner rounding "
         "from high on; cost grows with it (FreeSpace Open's -aa_preset 3..6)"},
        [](Config& c, const std::string& v) { return parseEnum("smaa_quality", v, kSmaaQualities, c.smaaQuality); },
        [](const Config& c) { return std::string(toString(c.smaaQuality)); }},
-      {{"smaa_edge_detection", "luma", "luma, colour, depth",
+      {{"smaa_edge_detection", "luma", namesOf(kSmaaEdgeDetections),
         "what SMAA finds edges in: luma contrast, per-channel contrast (chroma edges too), or view-depth steps "
         "(geometry only: keeps texture detail, misses shading edges)"},
        [](Config& c, const std::string& v) {
@@ -389,57 +416,11 @@ const char* toString(Method method) {
   return row ? row->name : "?";
 }
 
-const char* toString(ResolveWeighting weighting) {
-  switch (weighting) {
-    case ResolveWeighting::Median: return "median";
-    case ResolveWeighting::Front: return "front";
-    case ResolveWeighting::Back: return "back";
-    case ResolveWeighting::Fso: return "fso";
-    case ResolveWeighting::Mean: return "mean";
-    case ResolveWeighting::Window: return "window";
-  }
-  return "?";
-}
-
-const char* toString(FxaaQuality quality) {
-  switch (quality) {
-    case FxaaQuality::Low: return "low";
-    case FxaaQuality::Medium: return "medium";
-    case FxaaQuality::High: return "high";
-  }
-  return "?";
-}
-
-const char* toString(SmaaQuality quality) {
-  switch (quality) {
-    case SmaaQuality::Low: return "low";
-    case SmaaQuality::Medium: return "medium";
-    case SmaaQuality::High: return "high";
-    case SmaaQuality::Ultra: return "ultra";
-  }
-  return "?";
-}
-
-const char* toString(SmaaEdgeDetection detection) {
-  switch (detection) {
-    case SmaaEdgeDetection::Luma: return "luma";
-    case SmaaEdgeDetection::Colour: return "colour";
-    case SmaaEdgeDetection::Depth: return "depth";
-  }
-  return "?";
-}
-
-const char* toString(EdgeDetector detector) {
-  switch (detector) {
-    case EdgeDetector::Depth: return "depth";
-    case EdgeDetector::Plane: return "plane";
-    case EdgeDetector::Normal: return "normal";
-    case EdgeDetector::Material: return "material";
-    case EdgeDetector::Coverage: return "coverage";
-    case EdgeDetector::EveryPixel: return "every_pixel";
-  }
-  return "?";
-}
+const char* toString(ResolveWeighting weighting) { return nameIn(kWeightings, weighting); }
+const char* toString(FxaaQuality quality) { return nameIn(kFxaaQualities, quality); }
+const char* toString(SmaaQuality quality) { return nameIn(kSmaaQualities, quality); }
+const char* toString(SmaaEdgeDetection detection) { return nameIn(kSmaaEdgeDetections, detection); }
+const char* toString(EdgeDetector detector) { return nameIn(kEdgeDetectors, detector); }
 
 const std::vector<ConfigKey>& configKeys() {
   static const std::vector<ConfigKey> keys = [] {
@@ -556,9 +537,9 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
     // FreeSpace Open's presets: 0..2 FXAA low/medium/high, 3..6 SMAA low/medium/high/ultra.
     const bool smaa = n >= 3;
     if (smaa)
-      config.smaaQuality = kSmaaQualities[n - 3];
+      config.smaaQuality = kSmaaQualities[n - 3].value;
     else
-      config.fxaaQuality = kFxaaQualities[n];
+      config.fxaaQuality = kFxaaQualities[n].value;
     const Method post = smaa ? Method::Smaa : Method::Fxaa;
     // The last -aa_preset wins: one post filter, as in FreeSpace Open.
     if (config.method == Method::Off || config.method == Method::Fxaa || config.method == Method::Smaa) {
