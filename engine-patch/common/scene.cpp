@@ -354,19 +354,18 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   scene.skyColor = root.vec3Or("sky_color", scene.skyColor, 0.0f, 1e4f);
   scene.starDensity = root.numberOr("star_density", scene.starDensity, 0.0f, 10.0f);
   scene.exposure = root.numberOr("exposure", scene.exposure, 1e-4f, 1e4f);
-  scene.shading = root.has("shading")
-                      ? namedValue(root.child("shading"), "shading model",
-                                   {{"blinn-phong", ShadingModel::BlinnPhong}, {"ggx", ShadingModel::GGX}})
-                      : scene.shading;
-  scene.depthBuffer =
-      root.has("depth_buffer")
-          ? namedValue(root.child("depth_buffer"), "depth buffer",
-                       {{"logarithmic", DepthBuffer::Logarithmic}, {"perspective", DepthBuffer::Perspective}})
-          : scene.depthBuffer;
+  scene.shading = root.has("shading") ? namedValue<ShadingModel>(
+                                            root.child("shading"), "shading model",
+                                            {{"blinn-phong", ShadingModel::BlinnPhong}, {"ggx", ShadingModel::GGX}})
+                                      : scene.shading;
+  scene.depthBuffer = root.has("depth_buffer") ? namedValue<DepthBuffer>(root.child("depth_buffer"), "depth buffer",
+                                                                         {{"logarithmic", DepthBuffer::Logarithmic},
+                                                                          {"perspective", DepthBuffer::Perspective}})
+                                               : scene.depthBuffer;
   if (root.has("position_depth")) {
-    scene.positionDepth =
-        namedValue(root.child("position_depth"), "position depth",
-                   {{"log-above-knee", PositionDepth::LogAboveKnee}, {"fso-compressed", PositionDepth::FsoCompressed}});
+    scene.positionDepth = namedValue<PositionDepth>(
+        root.child("position_depth"), "position depth",
+        {{"log-above-knee", PositionDepth::LogAboveKnee}, {"fso-compressed", PositionDepth::FsoCompressed}});
     // FSO's far segment divides by (100 000 m − GLOBAL_FAR_Z), the far plane.
     if (scene.positionDepth == PositionDepth::FsoCompressed && !(scene.camera.farPlane > 100000.0f))
       root.child("position_depth").fail("fso-compressed needs a camera far plane beyond 100000 m (FSO's GLOBAL_FAR_Z)");
