@@ -344,4 +344,18 @@ TEST(Model, TexturesNamedWithBackslashesAreFoundAndAMissingOneIsNamed) {
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("missing.png: texture does not exist"), std::string::npos) << e.what();
   }
+  // A scene that overrides the model's material reads none of its textures, so the missing one is no
+  // error; and a scene whose objects all keep their own materials needs no "materials" key.
+  const std::string model = (dir / "m.obj").string();
+  const host::Scene overridden =
+      host::parseScene(R"({"camera": "fit", "materials": [{"name": "plain"}], "objects": [{"model": ")" + model +
+                           R"(", "material": "plain"}]})",
+                       "override.json", dir.string());
+  ASSERT_EQ(overridden.objects.size(), 1u);
+  EXPECT_EQ(overridden.materials[size_t(overridden.objects[0].material)].name, "plain");
+  writeModel(".\\maps\\tex.png");
+  const host::Scene ownMaterials =
+      host::parseScene(R"({"camera": "fit", "objects": [{"model": ")" + model + R"("}]})", "own.json", dir.string());
+  ASSERT_EQ(ownMaterials.objects.size(), 1u);
+  EXPECT_TRUE(ownMaterials.materials[size_t(ownMaterials.objects[0].material)].maps.albedo != nullptr);
 }

@@ -306,7 +306,7 @@ class DroppedDataLog : public Assimp::LogStream {
 
 }  // namespace
 
-std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::string>* warnings) {
+std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::string>* warnings, ModelTextures textures) {
   Assimp::Importer importer;
   DroppedDataLog log;
   // FlipUVs: assimp turns glTF's top-down coordinates (and OBJ's bottom-up ones) into bottom-up; images
@@ -353,15 +353,15 @@ std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::strin
         part.albedo = glm::clamp(glm::vec3(colour.r, colour.g, colour.b), 0.0f, 1.0f);
       if (material.Get(AI_MATKEY_COLOR_EMISSIVE, colour) == AI_SUCCESS)
         part.emissive = glm::clamp(glm::vec3(colour.r, colour.g, colour.b), 0.0f, 1e4f);
-      try {
-        part.maps.albedo = readMaterialTexture(*scene, material, aiTextureType_BASE_COLOR, directory, cache);
-        if (!part.maps.albedo)
-          part.maps.albedo = readMaterialTexture(*scene, material, aiTextureType_DIFFUSE, directory, cache);
-        part.maps.normal = readMaterialTexture(*scene, material, aiTextureType_NORMALS, directory, cache);
-        part.maps.emissive = readMaterialTexture(*scene, material, aiTextureType_EMISSIVE, directory, cache);
-      } catch (const TextureError& e) {
-        throw ModelLoadError(path + ": material '" + part.materialName + "': " + e.what());
-      }
+      if (textures == ModelTextures::Read) try {
+          part.maps.albedo = readMaterialTexture(*scene, material, aiTextureType_BASE_COLOR, directory, cache);
+          if (!part.maps.albedo)
+            part.maps.albedo = readMaterialTexture(*scene, material, aiTextureType_DIFFUSE, directory, cache);
+          part.maps.normal = readMaterialTexture(*scene, material, aiTextureType_NORMALS, directory, cache);
+          part.maps.emissive = readMaterialTexture(*scene, material, aiTextureType_EMISSIVE, directory, cache);
+        } catch (const TextureError& e) {
+          throw ModelLoadError(path + ": material '" + part.materialName + "': " + e.what());
+        }
       // An emissive texture with no factor: the texture is the emission.
       if (part.maps.emissive && glm::dot(part.emissive, glm::vec3(1.0f)) <= 0.0f) part.emissive = glm::vec3(1.0f);
     }

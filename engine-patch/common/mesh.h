@@ -72,7 +72,9 @@ struct ModelPart {
 // or normals, or indices out of range, are left out: with a warning naming file, mesh and counts (into
 // `warnings`, else to stderr), or ModelLoadError when nothing is left; so is a texture that cannot be
 // read (TextureError's message).
-std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::string>* warnings = nullptr);
+enum class ModelTextures { Read, Skip };  // Skip: the parts' maps stay empty (a scene overrides the material)
+std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::string>* warnings = nullptr,
+                                 ModelTextures textures = ModelTextures::Read);
 // Every part merged into one mesh (models whose materials a scene overrides).
 Mesh mergeParts(const std::vector<ModelPart>& parts);
 

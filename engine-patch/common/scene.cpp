@@ -370,8 +370,10 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
     if (scene.positionDepth == PositionDepth::FsoCompressed && !(scene.camera.farPlane > 100000.0f))
       root.child("position_depth").fail("fso-compressed needs a camera far plane beyond 100000 m (FSO's GLOBAL_FAR_Z)");
   }
-  if (!root.has("materials")) root.fail("missing required key 'materials'");
-  const Reader materials = root.child("materials");
+  // "materials" may be left out when every object is a model that keeps its own.
+  static const json kNoMaterials = json::array();
+  const Reader materials =
+      root.has("materials") ? root.child("materials") : Reader(fileName, kNoMaterials, "$.materials");
   size_t textureBudget = kMaxSceneTextureBytes;
   for (size_t i = 0; i < materials.arraySize(); ++i) {
     const Reader m = materials.element(i);
@@ -386,7 +388,6 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
     material.maps = readMaps(m, baseDirectory, textureBudget);
     scene.materials.push_back(material);
   }
-  if (scene.materials.empty()) materials.fail("at least one material is required");
 
   if (!root.has("objects")) root.fail("missing required key 'objects'");
   const Reader objects = root.child("objects");
@@ -413,7 +414,8 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
       if (!std::filesystem::is_regular_file(resolved, error))
         o.child("model").fail("'" + resolved + "' is not a regular file");
       try {
-        parts = loadModel(resolved);
+        // A "material" override replaces the model's own: its textures are not read (nor missing ones refused).
+        parts = loadModel(resolved, nullptr, o.has("material") ? ModelTextures::Skip : ModelTextures::Read);
       } catch (const ModelLoadError& e) {
         o.child("model").fail(e.what());
       }
