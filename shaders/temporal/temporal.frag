@@ -48,6 +48,14 @@ vec3 fromYCoCg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z
 
 bool finite3(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
 
+// Karis's range compression, c / (1 + luma), for the clip alone: a bright sub-pixel highlight (a star)
+// would otherwise stretch its neighbours' boxes over the halo a resampled history spreads around it.
+// The blend stays in radiance, which the ground truth averages (compressing it too cost 0.3 dB on a
+// still frame; clipping compressed gained 0.1-0.4 dB interior on every recorded path, retroaa regress).
+float lumaOf(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+vec3 compress(vec3 c) { return c / (1.0 + lumaOf(c)); }
+vec3 expand(vec3 c) { return c / max(1.0 - lumaOf(c), 1e-4); }
+
 // Catmull-Rom through 5 bilinear fetches: the 4×4 taps' weights merged per axis where two neighbouring
 // taps share a sign, the four corner taps (weights near 0) dropped and the rest renormalised.
 vec3 historyCatmullRom(vec2 uv) {
@@ -102,7 +110,7 @@ void main() {
   vec3 mean = vec3(0.0), squares = vec3(0.0), lowest = vec3(1e30), highest = vec3(-1e30);
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x) {
-      vec3 c = toYCoCg(texelFetch(uInput, clamp(pixel + ivec2(x, y), ivec2(0), last), 0).rgb);
+      vec3 c = toYCoCg(compress(max(texelFetch(uInput, clamp(pixel + ivec2(x, y), ivec2(0), last), 0).rgb, vec3(0.0))));
       mean += c;
       squares += c * c;
       lowest = min(lowest, c);
@@ -140,7 +148,7 @@ void main() {
     vec3 history = historyCatmullRom(previousUv);
     if (finite3(history)) {
       // Clip towards the box's centre (Salvi), not per channel: keeps the history's hue.
-      vec3 h = toYCoCg(history);
+      vec3 h = toYCoCg(compress(history));
       // A flat neighbourhood has a box of no extent: a floor of 1 % of its luma keeps the history's
       // storage rounding (half floats) from counting as far outside it.
       vec3 centre = 0.5 * (boxLow + boxHigh);
@@ -153,7 +161,7 @@ void main() {
       // this frame weighs, up to 0.3 (fence and engine paths: +0.3-0.6 dB interior, +0.2 dB edge).
       vec2 offCentre = abs(fract(previousUv * vec2(last + 1)) - 0.5);  // 0 on a texel's centre
       float resampled = 2.0 * max(offCentre.x, offCentre.y);
-      result = mix(fromYCoCg(h), current, mix(uBlend, max(uBlend, 0.3), resampled));
+      result = mix(expand(fromYCoCg(h)), current, mix(uBlend, max(uBlend, 0.3), resampled));
     }
   }
   if (!finite3(result)) result = finite3(current) ? current : vec3(0.0);
