@@ -176,6 +176,15 @@ TEST(SecondHost, TheMatrixNamesEveryMethod) {
     EXPECT_TRUE(kMatrix.count(row.name)) << row.name << " has no SecondHost test";
 }
 
+TEST(SecondHost, ReconstructOnWorldSpaceNormalsBeatsFxaaOnEdgesByADecibel) {
+  // This host's normals are world-space (octahedral): reconstruct's normal tests must hold in any space.
+  SecondHost host;
+  const ScoringTruth truth = scoringTruth(host);
+  const double fxaa = truth.score(host.render("fxaa")).edgePsnrDb;
+  const double reconstruct = truth.score(host.render("reconstruct")).edgePsnrDb;
+  EXPECT_GE(reconstruct, fxaa + 1.0) << "fxaa " << fxaa;
+}
+
 TEST(SecondHost, BenchTakesTheSecondHostAndRefusesAnUnknownOne) {
   const std::string json = (std::filesystem::temp_directory_path() / "retroaa_second_host_bench.json").string();
   CliRun r = runCli(
