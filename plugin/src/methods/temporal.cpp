@@ -107,17 +107,18 @@ class TemporalTechnique : public Technique {
     const GBufferLayout& layout = context.layout;
     t.beforeTonemapRequested_ = context.config.temporalBeforeTonemap;
     t.jitterLength_ = context.config.temporalJitterLength;
+    GLuint output = 0;  // what the pass rewrites: the light target or the display (post's input())
     if (t.beforeTonemapRequested_) {
       if (const std::string why = whyNotBeforeTonemap(layout); why.empty()) {
         t.current_ = makeLightTargetCopy(context, "temporal.current", t.bytes_);
-        t.output_ = layout.lightTexture;
+        output = layout.lightTexture;
         t.beforeTonemap_ = true;
       } else {
         context.warn("temporal_before_tonemap=on: " + why + "; accumulating the display after tonemapping instead");
       }
     }
     if (!t.beforeTonemap_) {
-      t.output_ = shared.post->input(layout);
+      output = shared.post->input(layout);
       t.linearInput_ = shared.post->linearCopyOfInput() != 0;
     }
     const float zero[4] = {0, 0, 0, 0};
@@ -127,7 +128,7 @@ class TemporalTechnique : public Technique {
       glTextureParameteri(t.history_[i].get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
       glClearTexImage(t.history_[i].get(), 0, GL_RGBA, GL_FLOAT, zero);
       t.framebuffers_[i] = makeFramebuffer(context, "temporal.output");
-      glNamedFramebufferTexture(t.framebuffers_[i].get(), GL_COLOR_ATTACHMENT0, t.output_, 0);
+      glNamedFramebufferTexture(t.framebuffers_[i].get(), GL_COLOR_ATTACHMENT0, output, 0);
       glNamedFramebufferTexture(t.framebuffers_[i].get(), GL_COLOR_ATTACHMENT1, t.history_[i].get(), 0);
       const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
       glNamedFramebufferDrawBuffers(t.framebuffers_[i].get(), 2, drawBuffers);
@@ -186,16 +187,11 @@ class TemporalTechnique : public Technique {
                "temporal: FrameInfo's view or projection matrix is singular, not finite or not a perspective "
                "projection; the history is dropped for such frames");
     }
-    const bool continues = usable && historyValid_ && previousUsable_ && !frame.cameraCut;
+    const bool continues = usable && historyValid_ && !frame.cameraCut;
     if (continues) viewToPreviousClip = multiply(multiply(previousProjection_, previousView_), inverseView);
-    previousUsable_ = usable;
+    historyValid_ = usable;  // the history this frame writes can be reprojected by the next
     previousView_ = view;
     previousProjection_ = projection;
-    projectionTerms_[0] = projection[0];  // P[0][0]
-    projectionTerms_[1] = projection[5];  // P[1][1]
-    projectionTerms_[2] = projection[8];  // P[2][0]
-    projectionTerms_[3] = projection[9];  // P[2][1]
-    clipWPerViewZ_ = projection[11];      // P[2][3]
     return continues;
   }
 
@@ -220,8 +216,10 @@ class TemporalTechnique : public Technique {
     glBindSampler(1, 0);
     glBindTextureUnit(2, layout.depthStencilTexture);
     program_.setMatrix4("uViewToPreviousClip", viewToPreviousClip.data());
-    program_.setVec4("uProjection", projectionTerms_);
-    program_.set("uClipWPerViewZ", clipWPerViewZ_);
+    const Matrix4& projection = previousProjection_;  // this frame's, as reprojectable() keeps it
+    const float projectionTerms[4] = {projection[0], projection[5], projection[8], projection[9]};
+    program_.setVec4("uProjection", projectionTerms);  // P[0][0], P[1][1], P[2][0], P[2][1]
+    program_.set("uClipWPerViewZ", projection[11]);    // P[2][3]
     // A new history averages its first frames evenly (1/n) until temporal_blend takes over: a cut or a
     // reset converges in a few frames instead of fading in over ~2/blend.
     program_.set("uBlend", valid ? std::max(context.config.temporalBlend, 1.0f / float(framesAccumulated_ + 1)) : 1.0f);
@@ -229,7 +227,6 @@ class TemporalTechnique : public Technique {
     program_.setDepthPlanes(context);
     context.drawFullscreen();
     historyIndex_ = next;
-    historyValid_ = previousUsable_;
     framesAccumulated_ = valid ? framesAccumulated_ + 1 : 1;
   }
 
@@ -237,18 +234,14 @@ class TemporalTechnique : public Technique {
   GlTexture history_[2];  // RGBA16F: linear colour, view depth in w; ping-pong
   GlFramebuffer framebuffers_[2];
   GlTexture current_;  // before tonemapping: this frame's light, read while the target is written
-  GLuint output_ = 0;  // the display (post's input()) or the light target
   int historyIndex_ = 0;
   bool beforeTonemap_ = false;           // on the light target (asked for, and the layout allows it)
   bool beforeTonemapRequested_ = false;  // temporal_before_tonemap as created
   bool linearInput_ = false;
   int jitterLength_ = 8;
-  bool historyValid_ = false;  // false: the next frame starts a new history
+  bool historyValid_ = false;  // false: the next frame starts a new history (reset, or unusable matrices)
   int framesAccumulated_ = 0;  // frames in the history since it started
-  bool previousUsable_ = false;
   Matrix4 previousView_{}, previousProjection_{};
-  float projectionTerms_[4] = {1, 1, 0, 0};  // P[0][0], P[1][1], P[2][0], P[2][1]
-  float clipWPerViewZ_ = -1.0f;              // P[2][3]
   bool warnedNoProjection_ = false, warnedBadMatrices_ = false;
   uint64_t bytes_ = 0;
 };
