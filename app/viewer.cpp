@@ -364,17 +364,34 @@ class Viewer {
     writeImage8(stem + "-b.png", width_, height_, b_->renderer->readDisplay(), {{"retroaa:method", b_->method}});
   }
 
-  // A combo over the values of an enumerated config key.
-  bool settingCombo(const char* label, const std::string& key, retroaa::Config& config) {
-    const std::string current = retroaa::readSetting(config, key);
-    bool changed = false;
-    if (ImGui::BeginCombo(label, current.c_str())) {
-      for (const std::string& value : retroaa::settingValues(key))
-        if (ImGui::Selectable(value.c_str(), value == current))
-          changed = bool(retroaa::applySetting(config, key, value));
+  // The widget for one config key, drawn from its description (retroaa::configKeys()): a combo over its
+  // values, a checkbox for a switch, a slider over its range (logarithmic where the range is wide).
+  bool settingWidget(const std::string& name, retroaa::Config& config) {
+    using Kind = retroaa::ConfigKey::Kind;
+    const auto& keys = retroaa::configKeys();
+    const auto key =
+        std::find_if(keys.begin(), keys.end(), [&](const retroaa::ConfigKey& k) { return name == k.name; });
+    if (key == keys.end()) return false;
+    const std::string current = retroaa::readSetting(config, name);
+    std::string chosen;
+    if (key->kind == Kind::Switch) {
+      bool on = current == "on";
+      if (ImGui::Checkbox(key->name, &on)) chosen = on ? "on" : "off";
+    } else if (key->kind == Kind::Choice && ImGui::BeginCombo(key->name, current.c_str())) {
+      for (const std::string& value : retroaa::settingValues(name))
+        if (ImGui::Selectable(value.c_str(), value == current)) chosen = value;
       ImGui::EndCombo();
+    } else if (key->kind == Kind::Number) {
+      float value = std::stof(current);
+      const bool wide = key->maximum >= 100 * std::max(key->minimum, 1.0f);
+      if (ImGui::SliderFloat(key->name, &value, key->minimum, key->maximum, "%.3g",
+                             wide ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None))
+        chosen = std::to_string(value);
+    } else if (key->kind == Kind::Integer) {
+      int value = std::stoi(current);
+      if (ImGui::SliderInt(key->name, &value, int(key->minimum), int(key->maximum))) chosen = std::to_string(value);
     }
-    return changed;
+    return !chosen.empty() && retroaa::applySetting(config, name, chosen);  // out of range: refused, unchanged
   }
 
   // The panel: method and settings, what they cost, what they buy.
@@ -392,15 +409,10 @@ class Viewer {
       ImGui::EndCombo();
     }
     retroaa::Config config = a_->config;
-    bool changed = settingCombo("samples", "samples", config);
-    changed |= settingCombo("resolve weighting", "resolve_weighting", config);
-    changed |= settingCombo("edge detector", "edge_detector", config);
-    changed |= ImGui::SliderFloat("closeness c", &config.closeness, 0.0f, 20.0f);
-    changed |= ImGui::SliderFloat("adaptive shading scale", &config.adaptiveShadingScale, 0.0f, 16.0f);
-    changed |= ImGui::SliderFloat("adaptive texture scale", &config.adaptiveTextureScale, 0.0f, 32.0f);
-    changed |= ImGui::SliderInt("aggregates c", &config.aggregateCount, 1, 4);
-    changed |= ImGui::SliderFloat("coverage tolerance", &config.coverageTolerance, 0.0f, 8.0f);
-    changed |= ImGui::Checkbox("fxaa on top", &config.fxaa);
+    bool changed = false;
+    for (const char* key : {"samples", "resolve_weighting", "edge_detector", "closeness", "adaptive_shading_scale",
+                            "adaptive_texture_scale", "aggregate_count", "coverage_tolerance", "fxaa"})
+      changed |= settingWidget(key, config);
     changed |= settingInput(config);  // every other key, by name (the config reference lists them)
     if (changed) configure(*a_, config, a_->method);
     drawStats();

@@ -28,7 +28,7 @@ TEST(Cli, BadInputExitsWithCodeTwoAndNamesTheProblem) {
 
   r = runCli("render --set samples=3 --method resolve --out " + temp("x.png"));
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_NE(r.output.find("unsupported sample count '3'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'samples': unsupported value '3'"), std::string::npos) << r.output;
 
   const std::string scene = temp("broken.json");
   std::ofstream(scene)

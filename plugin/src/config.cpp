@@ -1,9 +1,12 @@
 #include "retroaa/config.h"
 
+#include "enum_names.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -43,28 +46,6 @@ std::string trim(const std::string& s) {
   if (begin == std::string::npos) return "";
   return s.substr(begin, s.find_last_not_of(" \t\r\n") - begin + 1);
 }
-
-// One name table per enum: toString, the parser and each key's allowed list read it.
-template <typename Enum>
-struct Named {
-  Enum value;
-  const char* name;
-};
-constexpr Named<EdgeDetector> kEdgeDetectors[] = {
-    {EdgeDetector::Depth, "depth"},       {EdgeDetector::Plane, "plane"},
-    {EdgeDetector::Normal, "normal"},     {EdgeDetector::Material, "material"},
-    {EdgeDetector::Coverage, "coverage"}, {EdgeDetector::EveryPixel, "every_pixel"}};
-constexpr Named<ResolveWeighting> kWeightings[] = {
-    {ResolveWeighting::Median, "median"}, {ResolveWeighting::Front, "front"}, {ResolveWeighting::Back, "back"},
-    {ResolveWeighting::Fso, "fso"},       {ResolveWeighting::Mean, "mean"},   {ResolveWeighting::Window, "window"}};
-constexpr Named<FxaaQuality> kFxaaQualities[] = {
-    {FxaaQuality::Low, "low"}, {FxaaQuality::Medium, "medium"}, {FxaaQuality::High, "high"}};
-constexpr Named<SmaaQuality> kSmaaQualities[] = {{SmaaQuality::Low, "low"},
-                                                 {SmaaQuality::Medium, "medium"},
-                                                 {SmaaQuality::High, "high"},
-                                                 {SmaaQuality::Ultra, "ultra"}};
-constexpr Named<SmaaEdgeDetection> kSmaaEdgeDetections[] = {
-    {SmaaEdgeDetection::Luma, "luma"}, {SmaaEdgeDetection::Colour, "colour"}, {SmaaEdgeDetection::Depth, "depth"}};
 
 template <typename Enum, size_t N>
 const char* nameIn(const Named<Enum> (&table)[N], Enum value) {
@@ -133,280 +114,287 @@ Status parseMethod(const std::string& value, Method& out) {
   return invalid("config key 'method': unknown value " + quoted(value) + " (allowed: " + allowed + ")");
 }
 
-const char* methodNames() {
-  static const std::string names = [] {
-    std::string list;
-    for (const MethodInfo& row : methodTable()) list += std::string(list.empty() ? "" : ", ") + row.name;
-    return list;
-  }();
-  return names.c_str();
-}
-struct Setter {
-  ConfigKey key;
-  Status (*apply)(Config&, const std::string& value);
-  std::string (*read)(const Config&);
-};
-
-// Digits of floats written back: 6 for config text people read; validateConfig raises it so that no
-// out-of-range value rounds into range.
-thread_local int floatDigits = 6;
-
 std::string formatFloat(float v) {
   std::ostringstream out;
-  out << std::setprecision(floatDigits) << v;
+  out << v;  // 6 significant digits: config text people read
   return out.str();
 }
 
-const std::vector<Setter>& setters() {
-  static const std::vector<Setter> table = {
-      {{"method", "off", methodNames(), "which AA method runs; changing it reallocates only what it needs"},
-       [](Config& c, const std::string& v) { return parseMethod(v, c.method); },
-       [](const Config& c) { return std::string(toString(c.method)); }},
-      {{"samples", "4", "1, 2, 4, 8, 16",
-        "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"},
-       [](Config& c, const std::string& v) -> Status {
-         for (int allowed : {1, 2, 4, 8, 16})
-           if (v == std::to_string(allowed)) return c.samples = allowed, Status::ok();
-         return invalid("config key 'samples': unsupported sample count " + quoted(v) + " (allowed: 1, 2, 4, 8, 16)");
-       },
-       [](const Config& c) { return std::to_string(c.samples); }},
-      {{"supersample", "0", "0, 2, 3, 4",
-        "G-buffer methods' source: 0 multisampled (samples); m an m x m supersampled G-buffer (the host's model "
-        "pass renders at m x its viewport, Plugin::geometryScale), its m^2 sub-positions lit like samples; "
-        "reallocates"},
-       [](Config& c, const std::string& v) -> Status {
-         for (int allowed : {0, 2, 3, 4})
-           if (v == std::to_string(allowed)) return c.supersample = allowed, Status::ok();
-         return invalid("config key 'supersample': unsupported factor " + quoted(v) + " (allowed: 0, 2, 3, 4)");
-       },
-       [](const Config& c) { return std::to_string(c.supersample); }},
-      {{"resolve_weighting", "median", namesOf(kWeightings), "how resolve weights a pixel's samples; free per frame"},
-       [](Config& c, const std::string& v) {
-         return parseEnum("resolve_weighting", v, kWeightings, c.resolveWeighting);
-       },
-       [](const Config& c) { return std::string(toString(c.resolveWeighting)); }},
-      {{"resolve_compute", "off", "on, off",
-        "the resolve as a compute pass, the depth through a one-fetch full-screen pass (the same G-buffer; for "
-        "GPUs whose pixel shaders run on a small partition; where an attachment's format takes no image stores, "
-        "the full-screen pass with a warning)"},
-       [](Config& c, const std::string& v) { return parseBool("resolve_compute", v, c.resolveCompute); },
-       [](const Config& c) { return std::string(c.resolveCompute ? "on" : "off"); }},
-      {{"closeness", "5", "0 .. 100",
-        "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"},
-       [](Config& c, const std::string& v) { return parseFloat("closeness", v, 0.0f, 100.0f, c.closeness); },
-       [](const Config& c) { return formatFloat(c.closeness); }},
-      {{"edge_detector", "coverage", namesOf(kEdgeDetectors),
-        "how `edge` finds pixels to light per sample; free per frame"},
-       [](Config& c, const std::string& v) { return parseEnum("edge_detector", v, kEdgeDetectors, c.edgeDetector); },
-       [](const Config& c) { return std::string(toString(c.edgeDetector)); }},
-      {{"edge_depth_closeness", "1", "0 .. 100",
-        "c of the depth detector; smaller marks more pixels (slower, closer to per-sample)"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("edge_depth_closeness", v, 0.0f, 100.0f, c.edgeDepthCloseness);
-       },
-       [](const Config& c) { return formatFloat(c.edgeDepthCloseness); }},
-      {{"edge_normal_angle_deg", "25", "0 .. 180", "angle of the normal detector; smaller marks more pixels"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("edge_normal_angle_deg", v, 0.0f, 180.0f, c.edgeNormalAngleDegrees);
-       },
-       [](const Config& c) { return formatFloat(c.edgeNormalAngleDegrees); }},
-      {{"adaptive_depth_scale", "0.5", "0 .. 1000",
-        "adaptive: k_d per unit of depth variance (in pixel footprints²); larger refines more"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("adaptive_depth_scale", v, 0.0f, 1000.0f, c.adaptiveDepthScale);
-       },
-       [](const Config& c) { return formatFloat(c.adaptiveDepthScale); }},
-      {{"adaptive_normal_scale", "8", "0 .. 1000",
-        "adaptive: k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("adaptive_normal_scale", v, 0.0f, 1000.0f, c.adaptiveNormalScale);
-       },
-       [](const Config& c) { return formatFloat(c.adaptiveNormalScale); }},
-      {{"adaptive_shading_scale", "2", "0 .. 1000",
-        "adaptive: k_s = scale * N * luma range of the first lit sample; larger refines more"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("adaptive_shading_scale", v, 0.0f, 1000.0f, c.adaptiveShadingScale);
-       },
-       [](const Config& c) { return formatFloat(c.adaptiveShadingScale); }},
-      {{"adaptive_texture_scale", "16", "0 .. 1000",
-        "adaptive: k_t = scale * N * luma range of the first lit sample scaled by the albedo over the pixel "
-        "(texture detail inside it); larger refines more"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("adaptive_texture_scale", v, 0.0f, 1000.0f, c.adaptiveTextureScale);
-       },
-       [](const Config& c) { return formatFloat(c.adaptiveTextureScale); }},
-      {{"adaptive_threshold_min", "0.0312", "0 .. 1",
-        "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("adaptive_threshold_min", v, 0.0f, 1.0f, c.adaptiveThresholdMin);
-       },
-       [](const Config& c) { return formatFloat(c.adaptiveThresholdMin); }},
-      {{"adaptive_threshold_edge", "0.125", "0 .. 1",
-        "adaptive: luma ranges below this fraction of the local maximum never refine"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("adaptive_threshold_edge", v, 0.0f, 1.0f, c.adaptiveThresholdEdge);
-       },
-       [](const Config& c) { return formatFloat(c.adaptiveThresholdEdge); }},
-      {{"adaptive_min_samples", "1", "1 .. 16", "adaptive: floor of the per-pixel sample count; N lights every sample"},
-       [](Config& c, const std::string& v) { return parseInt("adaptive_min_samples", v, 1, 16, c.adaptiveMinSamples); },
-       [](const Config& c) { return std::to_string(c.adaptiveMinSamples); }},
-      {{"aggregate_count", "2", "1 .. 4",
-        "aggregate: at most this many aggregates per pixel (plus background); more is closer to per-sample"},
-       [](Config& c, const std::string& v) -> Status {
-         for (int allowed : {1, 2, 3, 4})
-           if (v == std::to_string(allowed)) return c.aggregateCount = allowed, Status::ok();
-         return invalid("config key 'aggregate_count': value " + quoted(v) + " is not one of 1, 2, 3, 4");
-       },
-       [](const Config& c) { return std::to_string(c.aggregateCount); }},
-      {{"aggregate_threshold", "0.1", "0 .. 10",
-        "aggregate: t, the distance beyond which a sample seeds a new aggregate; 0 splits every distinct sample"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("aggregate_threshold", v, 0.0f, 10.0f, c.aggregateThreshold);
-       },
-       [](const Config& c) { return formatFloat(c.aggregateThreshold); }},
-      {{"aggregate_length", "4", "0.01 .. 1000",
-        "aggregate: k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("aggregate_length", v, 0.01f, 1000.0f, c.aggregateLength);
-       },
-       [](const Config& c) { return formatFloat(c.aggregateLength); }},
-      {{"coverage_filter", "off", "on, off",
-        "the coverage filter on top of resolve (reuses its MSAA depth; no prepass)"},
-       [](Config& c, const std::string& v) { return parseBool("coverage_filter", v, c.coverageFilter); },
-       [](const Config& c) { return std::string(c.coverageFilter ? "on" : "off"); }},
-      {{"coverage_tolerance", "2", "0 .. 100",
-        "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("coverage_tolerance", v, 0.0f, 100.0f, c.coverageTolerance);
-       },
-       [](const Config& c) { return formatFloat(c.coverageTolerance); }},
-      {{"reconstruct_filter", "off", "on, off",
-        "sub-pixel reconstruction on top of resolve (reuses its MSAA depth and normals; no prepass)"},
-       [](Config& c, const std::string& v) { return parseBool("reconstruct_filter", v, c.reconstructFilter); },
-       [](const Config& c) { return std::string(c.reconstructFilter ? "on" : "off"); }},
-      {{"reconstruct_tolerance", "2", "0 .. 100",
-        "reconstruct: c of the depth test that ties a sub-sample to a shaded pixel"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("reconstruct_tolerance", v, 0.0f, 100.0f, c.reconstructTolerance);
-       },
-       [](const Config& c) { return formatFloat(c.reconstructTolerance); }},
-      {{"reconstruct_search_radius", "6", "1 .. 8",
-        "reconstruct: how many rings of pixels a sub-sample searches for its surface when no neighbour holds it "
-        "(sub-pixel wires: a pixel centre on the same wire lies a few pixels along it)"},
-       [](Config& c, const std::string& v) {
-         return parseInt("reconstruct_search_radius", v, 1, 8, c.reconstructSearchRadius);
-       },
-       [](const Config& c) { return std::to_string(c.reconstructSearchRadius); }},
-      {{"reconstruct_before_tonemap", "off", "on, off",
-        "reconstruct on the HDR light target before tonemapping (+8 B/px) instead of on the display"},
-       [](Config& c, const std::string& v) {
-         return parseBool("reconstruct_before_tonemap", v, c.reconstructBeforeTonemap);
-       },
-       [](const Config& c) { return std::string(c.reconstructBeforeTonemap ? "on" : "off"); }},
-      {{"reconstruct_compute", "off", "on, off",
-        "reconstruct as a compute pass that packs each 8x8 tile's searching pixels onto adjacent invocations "
-        "instead of a full-screen pass (the same image; where the target's format takes no image stores, the "
-        "full-screen pass with a warning)"},
-       [](Config& c, const std::string& v) { return parseBool("reconstruct_compute", v, c.reconstructCompute); },
-       [](const Config& c) { return std::string(c.reconstructCompute ? "on" : "off"); }},
-      {{"temporal_filter", "off", "on, off",
-        "temporal accumulation on top of another method (resolve+temporal, reconstruct+temporal): the host "
-        "jitters its projection by Plugin::jitter()"},
-       [](Config& c, const std::string& v) { return parseBool("temporal_filter", v, c.temporalFilter); },
-       [](const Config& c) { return std::string(c.temporalFilter ? "on" : "off"); }},
-      {{"temporal_blend", "0.1", "0.02 .. 1",
-        "temporal: the current frame's weight in the history; smaller is smoother and converges over more frames "
-        "(about 2/weight), ghosting longer; 1 keeps no history; free per frame"},
-       [](Config& c, const std::string& v) { return parseFloat("temporal_blend", v, 0.02f, 1.0f, c.temporalBlend); },
-       [](const Config& c) { return formatFloat(c.temporalBlend); }},
-      {{"temporal_jitter_length", "8", "1 .. 64",
-        "temporal: frames in the Halton (2, 3) jitter sequence, the sub-pixel positions a still pixel is sampled at; "
-        "1 is no jitter; resets the history"},
-       [](Config& c, const std::string& v) {
-         return parseInt("temporal_jitter_length", v, 1, 64, c.temporalJitterLength);
-       },
-       [](const Config& c) { return std::to_string(c.temporalJitterLength); }},
-      {{"temporal_lod_bias", "-1", "-3 .. 0",
-        "temporal: the mip bias the host adds to its material samplers (Plugin::textureLodBias): sharper mips whose "
-        "detail the history averages over the jitter; FSR 2 advises -1 at native resolution"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("temporal_lod_bias", v, -3.0f, 0.0f, c.temporalLodBias);
-       },
-       [](const Config& c) { return formatFloat(c.temporalLodBias); }},
-      {{"temporal_before_tonemap", "on", "on, off",
-        "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather than on "
-        "the display (where the layout has no single float light target, after tonemapping with a warning); resets "
-        "the history"},
-       [](Config& c, const std::string& v) { return parseBool("temporal_before_tonemap", v, c.temporalBeforeTonemap); },
-       [](const Config& c) { return std::string(c.temporalBeforeTonemap ? "on" : "off"); }},
-      {{"restore_gbuffer_after_shade", "on", "on, off",
-        "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "
-        "surface, not the last slice; off saves one resolve pass"},
-       [](Config& c, const std::string& v) {
-         return parseBool("restore_gbuffer_after_shade", v, c.restoreGBufferAfterShade);
-       },
-       [](const Config& c) { return std::string(c.restoreGBufferAfterShade ? "on" : "off"); }},
-      {{"preset", "none", "none, low, medium, high, ultra",
-        "a bundle of the keys above, tuned by `make presets` (docs/tune.md#presets); keys after it override"},
-       [](Config& c, const std::string& v) -> Status {
-         if (v == "none") return Status::ok();
-         const auto& files = presets::embeddedFiles();
-         const auto found = files.find(v + ".cfg");
-         if (found == files.end())
-           return invalid("config key 'preset': unknown value " + quoted(v) +
-                          " (allowed: none, low, medium, high, ultra)");
-         // Quality keys only: where shaders come from and whether to time them stay the user's.
-         std::string lines;
-         std::istringstream in(found->second);
-         for (std::string line; std::getline(in, line);)
-           if (line.rfind("shader_override_dir", 0) != 0 && line.rfind("measure_gpu_time", 0) != 0 &&
-               line.rfind("preset", 0) != 0)
-             lines += line + "\n";
-         return applyConfigText(c, lines, "preset " + v);
-       },
-       [](const Config&) { return std::string("none"); }},
-      {{"budget_ms", "0", "0 .. 1000",
-        "GPU budget of the plugin's passes; adaptive (and edge/depth) adjust their refinement frame to frame to keep "
-        "it; 0 is off"},
-       [](Config& c, const std::string& v) { return parseFloat("budget_ms", v, 0.0f, 1000.0f, c.budgetMs); },
-       [](const Config& c) { return formatFloat(c.budgetMs); }},
-      {{"fxaa", "off", "on, off", "FXAA after tonemapping, stacked on the method"},
-       [](Config& c, const std::string& v) { return parseBool("fxaa", v, c.fxaa); },
-       [](const Config& c) { return std::string(c.fxaa ? "on" : "off"); }},
-      {{"fxaa_quality", "high", namesOf(kFxaaQualities),
-        "FXAA edge search length (3, 6, 12 steps); cost grows with it"},
-       [](Config& c, const std::string& v) { return parseEnum("fxaa_quality", v, kFxaaQualities, c.fxaaQuality); },
-       [](const Config& c) { return std::string(toString(c.fxaaQuality)); }},
-      {{"fxaa_edge_threshold", "0.125", "0.063 .. 0.333", "FXAA local contrast needed to filter; lower softens more"},
-       [](Config& c, const std::string& v) {
-         return parseFloat("fxaa_edge_threshold", v, 0.063f, 0.333f, c.fxaaEdgeThreshold);
-       },
-       [](const Config& c) { return formatFloat(c.fxaaEdgeThreshold); }},
-      {{"smaa", "off", "on, off", "SMAA 1x after tonemapping, stacked on the method (before +fxaa)"},
-       [](Config& c, const std::string& v) { return parseBool("smaa", v, c.smaa); },
-       [](const Config& c) { return std::string(c.smaa ? "on" : "off"); }},
-      {{"smaa_quality", "high", namesOf(kSmaaQualities),
-        "SMAA preset: threshold 0.15/0.1/0.1/0.05, search 8/16/32/64 px each way, diagonals and corner rounding "
-        "from high on; cost grows with it (FreeSpace Open's -aa_preset 3..6)"},
-       [](Config& c, const std::string& v) { return parseEnum("smaa_quality", v, kSmaaQualities, c.smaaQuality); },
-       [](const Config& c) { return std::string(toString(c.smaaQuality)); }},
-      {{"smaa_edge_detection", "luma", namesOf(kSmaaEdgeDetections),
-        "what SMAA finds edges in: luma contrast, per-channel contrast (chroma edges too), or view-depth steps "
-        "(geometry only: keeps texture detail, misses shading edges)"},
-       [](Config& c, const std::string& v) {
-         return parseEnum("smaa_edge_detection", v, kSmaaEdgeDetections, c.smaaEdgeDetection);
-       },
-       [](const Config& c) { return std::string(toString(c.smaaEdgeDetection)); }},
-      {{"shader_override_dir", "", "a folder",
-        "files there replace built-in shaders of the same path; compile errors fall back"},
-       [](Config& c, const std::string& v) { return c.shaderOverrideDirectory = v, Status::ok(); },
-       [](const Config& c) { return c.shaderOverrideDirectory; }},
-      {{"measure_gpu_time", "off", "on, off",
-        "timer and fragment-invocation queries per plugin pass, read back frames later (never waits)"},
-       [](Config& c, const std::string& v) { return parseBool("measure_gpu_time", v, c.measureGpuTime); },
-       [](const Config& c) { return std::string(c.measureGpuTime ? "on" : "off"); }},
+template <typename Value>
+std::string listed(const std::vector<Value>& values) {
+  std::ostringstream out;
+  for (size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values[i];
+  return out.str();
+}
+
+// One settable key: its Config field, type, range or names, and effect, written once. Parsing,
+// printing, validation, configKeys() (docs/config.md, `retroaa config`, the viewer's widgets) and
+// settingValues() all read it; the default is whatever Config{} holds.
+struct Key {
+  ConfigKey info;  // the public view; its strings point into the fields below once the table is built
+  std::string defaultText, allowedText;
+  std::vector<std::string> values;  // every allowed value, for keys with a list of them
+  std::function<Status(Config&, const std::string&)> parse;
+  std::function<std::string(const Config&)> print;
+  std::function<Status(const Config&)> check;  // the parser's rules on the typed field: no text round trip
+};
+
+Key makeKey(const char* name, ConfigKey::Kind kind, const char* effect) {
+  Key key;
+  key.info = ConfigKey{name, "", "", effect, kind, 0, 0};
+  return key;
+}
+
+Key number(const char* name, float Config::*field, float minimum, float maximum, const char* effect) {
+  Key key = makeKey(name, ConfigKey::Kind::Number, effect);
+  key.info.minimum = minimum, key.info.maximum = maximum;
+  key.allowedText = formatFloat(minimum) + " .. " + formatFloat(maximum);
+  key.parse = [=](Config& c, const std::string& v) { return parseFloat(name, v, minimum, maximum, c.*field); };
+  key.print = [=](const Config& c) { return formatFloat(c.*field); };
+  key.check = [=](const Config& c) -> Status {
+    const float v = c.*field;
+    if (std::isfinite(v) && v >= minimum && v <= maximum) return Status::ok();
+    std::ostringstream message;
+    message << std::setprecision(9) << "config key '" << name << "': value " << v << " is not a number in [" << minimum
+            << ", " << maximum << "]";
+    return invalid(message.str());
   };
+  return key;
+}
+
+Key integer(const char* name, int Config::*field, int minimum, int maximum, const char* effect) {
+  Key key = makeKey(name, ConfigKey::Kind::Integer, effect);
+  key.info.minimum = float(minimum), key.info.maximum = float(maximum);
+  key.allowedText = std::to_string(minimum) + " .. " + std::to_string(maximum);
+  key.parse = [=](Config& c, const std::string& v) { return parseInt(name, v, minimum, maximum, c.*field); };
+  key.print = [=](const Config& c) { return std::to_string(c.*field); };
+  key.check = [=](const Config& c) -> Status {
+    if (c.*field >= minimum && c.*field <= maximum) return Status::ok();
+    return invalid("config key '" + std::string(name) + "': value " + std::to_string(c.*field) +
+                   " is not an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) + "]");
+  };
+  return key;
+}
+
+// An integer from a short list (sample counts, factors).
+Key choice(const char* name, int Config::*field, const std::vector<int>& allowed, const char* effect) {
+  Key key = makeKey(name, ConfigKey::Kind::Choice, effect);
+  for (int value : allowed) key.values.push_back(std::to_string(value));
+  key.allowedText = listed(allowed);
+  const auto refuse = [=](const std::string& value) {
+    return invalid("config key '" + std::string(name) + "': unsupported value " + quoted(value) +
+                   " (allowed: " + listed(allowed) + ")");
+  };
+  key.parse = [=](Config& c, const std::string& v) -> Status {
+    for (int value : allowed)
+      if (v == std::to_string(value)) return c.*field = value, Status::ok();
+    return refuse(v);
+  };
+  key.print = [=](const Config& c) { return std::to_string(c.*field); };
+  key.check = [=](const Config& c) -> Status {
+    for (int value : allowed)
+      if (c.*field == value) return Status::ok();
+    return refuse(std::to_string(c.*field));
+  };
+  return key;
+}
+
+Key onOff(const char* name, bool Config::*field, const char* effect) {
+  Key key = makeKey(name, ConfigKey::Kind::Switch, effect);
+  key.values = {"on", "off"};
+  key.allowedText = "on, off";
+  key.parse = [=](Config& c, const std::string& v) { return parseBool(name, v, c.*field); };
+  key.print = [=](const Config& c) { return std::string(c.*field ? "on" : "off"); };
+  key.check = [](const Config&) { return Status::ok(); };
+  return key;
+}
+
+template <typename Enum, size_t N>
+Key named(const char* name, Enum Config::*field, const Named<Enum> (&table)[N], const char* effect) {
+  Key key = makeKey(name, ConfigKey::Kind::Choice, effect);
+  for (const Named<Enum>& row : table) key.values.push_back(row.name);
+  key.allowedText = namesOf(table);
+  key.parse = [=, &table](Config& c, const std::string& v) { return parseEnum(name, v, table, c.*field); };
+  key.print = [=, &table](const Config& c) { return std::string(nameIn(table, c.*field)); };
+  key.check = [=, &table](const Config& c) -> Status {
+    for (const Named<Enum>& row : table)
+      if (row.value == c.*field) return Status::ok();
+    return invalid("config key '" + std::string(name) + "': unknown value " + std::to_string(int(c.*field)) +
+                   " (allowed: " + namesOf(table) + ")");
+  };
+  return key;
+}
+
+Key methodKey() {
+  Key key =
+      makeKey("method", ConfigKey::Kind::Choice, "which AA method runs; changing it reallocates only what it needs");
+  for (const MethodInfo& row : methodTable()) key.values.push_back(row.name);
+  key.allowedText = listed(key.values);
+  key.parse = [](Config& c, const std::string& v) { return parseMethod(v, c.method); };
+  key.print = [](const Config& c) { return std::string(toString(c.method)); };
+  key.check = [](const Config& c) {
+    return findMethod(c.method) ? Status::ok()
+                                : invalid("config key 'method': unknown value " + std::to_string(int(c.method)));
+  };
+  return key;
+}
+
+// A bundle of other keys (presets/*.cfg, embedded), applied in place; it reads back as "none".
+Key presetKey() {
+  Key key = makeKey("preset", ConfigKey::Kind::Choice,
+                    "a bundle of the keys above, tuned by `make presets` (docs/tune.md#presets); keys after it "
+                    "override");
+  key.values = {"none", "low", "medium", "high", "ultra"};
+  key.allowedText = listed(key.values);
+  key.parse = [](Config& c, const std::string& v) -> Status {
+    if (v == "none") return Status::ok();
+    const auto& files = presets::embeddedFiles();
+    const auto found = files.find(v + ".cfg");
+    if (found == files.end())
+      return invalid("config key 'preset': unknown value " + quoted(v) + " (allowed: none, low, medium, high, ultra)");
+    // Quality keys only: where shaders come from and whether to time them stay the user's.
+    std::string lines;
+    std::istringstream in(found->second);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("shader_override_dir", 0) != 0 && line.rfind("measure_gpu_time", 0) != 0 &&
+          line.rfind("preset", 0) != 0)
+        lines += line + "\n";
+    return applyConfigText(c, lines, "preset " + v);
+  };
+  key.print = [](const Config&) { return std::string("none"); };
+  key.check = [](const Config&) { return Status::ok(); };
+  return key;
+}
+
+Key folder(const char* name, std::string Config::*field, const char* effect) {
+  Key key = makeKey(name, ConfigKey::Kind::Text, effect);
+  key.allowedText = "a folder";
+  key.parse = [=](Config& c, const std::string& v) { return c.*field = v, Status::ok(); };
+  key.print = [=](const Config& c) { return c.*field; };
+  key.check = [](const Config&) { return Status::ok(); };
+  return key;
+}
+
+std::vector<Key> buildKeys() {
+  std::vector<Key> keys = {
+      methodKey(),
+      choice("samples", &Config::samples, {1, 2, 4, 8, 16},
+             "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"),
+      choice("supersample", &Config::supersample, {0, 2, 3, 4},
+             "G-buffer methods' source: 0 multisampled (samples); m an m x m supersampled G-buffer (the host's model "
+             "pass renders at m x its viewport, Plugin::geometryScale), its m^2 sub-positions lit like samples; "
+             "reallocates"),
+      named("resolve_weighting", &Config::resolveWeighting, kWeightings,
+            "how resolve weights a pixel's samples; free per frame"),
+      onOff("resolve_compute", &Config::resolveCompute,
+            "the resolve as a compute pass, the depth through a one-fetch full-screen pass (the same G-buffer; for "
+            "GPUs whose pixel shaders run on a small partition; where an attachment's format takes no image stores, "
+            "the full-screen pass with a warning)"),
+      number("closeness", &Config::closeness, 0, 100,
+             "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"),
+      named("edge_detector", &Config::edgeDetector, kEdgeDetectors,
+            "how `edge` finds pixels to light per sample; free per frame"),
+      number("edge_depth_closeness", &Config::edgeDepthCloseness, 0, 100,
+             "c of the depth detector; smaller marks more pixels (slower, closer to per-sample)"),
+      number("edge_normal_angle_deg", &Config::edgeNormalAngleDegrees, 0, 180,
+             "angle of the normal detector; smaller marks more pixels"),
+      number("adaptive_depth_scale", &Config::adaptiveDepthScale, 0, 1000,
+             "adaptive: k_d per unit of depth variance (in pixel footprints²); larger refines more"),
+      number("adaptive_normal_scale", &Config::adaptiveNormalScale, 0, 1000,
+             "adaptive: k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"),
+      number("adaptive_shading_scale", &Config::adaptiveShadingScale, 0, 1000,
+             "adaptive: k_s = scale * N * luma range of the first lit sample; larger refines more"),
+      number("adaptive_texture_scale", &Config::adaptiveTextureScale, 0, 1000,
+             "adaptive: k_t = scale * N * luma range of the first lit sample scaled by the albedo over the pixel "
+             "(texture detail inside it); larger refines more"),
+      number("adaptive_threshold_min", &Config::adaptiveThresholdMin, 0, 1,
+             "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"),
+      number("adaptive_threshold_edge", &Config::adaptiveThresholdEdge, 0, 1,
+             "adaptive: luma ranges below this fraction of the local maximum never refine"),
+      integer("adaptive_min_samples", &Config::adaptiveMinSamples, 1, 16,
+              "adaptive: floor of the per-pixel sample count; N lights every sample"),
+      integer("aggregate_count", &Config::aggregateCount, 1, 4,
+              "aggregate: at most this many aggregates per pixel (plus background); more is closer to per-sample"),
+      number("aggregate_threshold", &Config::aggregateThreshold, 0, 10,
+             "aggregate: t, the distance beyond which a sample seeds a new aggregate; 0 splits every distinct sample"),
+      number("aggregate_length", &Config::aggregateLength, 0.01f, 1000,
+             "aggregate: k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"),
+      onOff("coverage_filter", &Config::coverageFilter,
+            "the coverage filter on top of resolve (reuses its MSAA depth; no prepass)"),
+      number("coverage_tolerance", &Config::coverageTolerance, 0, 100,
+             "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"),
+      onOff("reconstruct_filter", &Config::reconstructFilter,
+            "sub-pixel reconstruction on top of resolve (reuses its MSAA depth and normals; no prepass)"),
+      number("reconstruct_tolerance", &Config::reconstructTolerance, 0, 100,
+             "reconstruct: c of the depth test that ties a sub-sample to a shaded pixel"),
+      integer("reconstruct_search_radius", &Config::reconstructSearchRadius, 1, 8,
+              "reconstruct: how many rings of pixels a sub-sample searches for its surface when no neighbour holds "
+              "it (sub-pixel wires: a pixel centre on the same wire lies a few pixels along it)"),
+      onOff("reconstruct_before_tonemap", &Config::reconstructBeforeTonemap,
+            "reconstruct on the HDR light target before tonemapping (+8 B/px) instead of on the display"),
+      onOff("reconstruct_compute", &Config::reconstructCompute,
+            "reconstruct as a compute pass that packs each 8x8 tile's searching pixels onto adjacent invocations "
+            "instead of a full-screen pass (the same image; where the target's format takes no image stores, the "
+            "full-screen pass with a warning)"),
+      onOff("temporal_filter", &Config::temporalFilter,
+            "temporal accumulation on top of another method (resolve+temporal, reconstruct+temporal): the host "
+            "jitters its projection by Plugin::jitter()"),
+      number("temporal_blend", &Config::temporalBlend, 0.02f, 1,
+             "temporal: the current frame's weight in the history; smaller is smoother and converges over more "
+             "frames (about 2/weight), ghosting longer; 1 keeps no history; free per frame"),
+      integer("temporal_jitter_length", &Config::temporalJitterLength, 1, 64,
+              "temporal: frames in the Halton (2, 3) jitter sequence, the sub-pixel positions a still pixel is "
+              "sampled at; 1 is no jitter; resets the history"),
+      number("temporal_lod_bias", &Config::temporalLodBias, -3, 0,
+             "temporal: the mip bias the host adds to its material samplers (Plugin::textureLodBias): sharper mips "
+             "whose detail the history averages over the jitter; FSR 2 advises -1 at native resolution"),
+      onOff("temporal_before_tonemap", &Config::temporalBeforeTonemap,
+            "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather "
+            "than on the display (where the layout has no single float light target, after tonemapping with a "
+            "warning); resets the history"),
+      onOff("restore_gbuffer_after_shade", &Config::restoreGBufferAfterShade,
+            "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "
+            "surface, not the last slice; off saves one resolve pass"),
+      presetKey(),
+      number("budget_ms", &Config::budgetMs, 0, 1000,
+             "GPU budget of the plugin's passes; adaptive (and edge/depth) adjust their refinement frame to frame "
+             "to keep it; 0 is off"),
+      onOff("fxaa", &Config::fxaa, "FXAA after tonemapping, stacked on the method"),
+      named("fxaa_quality", &Config::fxaaQuality, kFxaaQualities,
+            "FXAA edge search length (3, 6, 12 steps); cost grows with it"),
+      number("fxaa_edge_threshold", &Config::fxaaEdgeThreshold, 0.063f, 0.333f,
+             "FXAA local contrast needed to filter; lower softens more"),
+      onOff("smaa", &Config::smaa, "SMAA 1x after tonemapping, stacked on the method (before +fxaa)"),
+      named("smaa_quality", &Config::smaaQuality, kSmaaQualities,
+            "SMAA preset: threshold 0.15/0.1/0.1/0.05, search 8/16/32/64 px each way, diagonals and corner "
+            "rounding from high on; cost grows with it (FreeSpace Open's -aa_preset 3..6)"),
+      named("smaa_edge_detection", &Config::smaaEdgeDetection, kSmaaEdgeDetections,
+            "what SMAA finds edges in: luma contrast, per-channel contrast (chroma edges too), or view-depth steps "
+            "(geometry only: keeps texture detail, misses shading edges)"),
+      folder("shader_override_dir", &Config::shaderOverrideDirectory,
+             "files there replace built-in shaders of the same path; compile errors fall back"),
+      onOff("measure_gpu_time", &Config::measureGpuTime,
+            "timer and fragment-invocation queries per plugin pass, read back frames later (stats() never waits; "
+            "waitForStats() does)"),
+  };
+  const Config defaults;
+  for (Key& key : keys) {  // the strings now have their final homes
+    key.defaultText = key.print(defaults);
+    key.info.defaultValue = key.defaultText.c_str();
+    key.info.allowed = key.allowedText.c_str();
+  }
+  return keys;
+}
+
+const std::vector<Key>& keys() {
+  static const std::vector<Key> table = buildKeys();
   return table;
+}
+
+const Key* findKey(const std::string& name) {
+  for (const Key& key : keys())
+    if (name == key.info.name) return &key;
+  return nullptr;
 }
 
 }  // namespace
@@ -423,44 +411,28 @@ const char* toString(SmaaEdgeDetection detection) { return nameIn(kSmaaEdgeDetec
 const char* toString(EdgeDetector detector) { return nameIn(kEdgeDetectors, detector); }
 
 const std::vector<ConfigKey>& configKeys() {
-  static const std::vector<ConfigKey> keys = [] {
+  static const std::vector<ConfigKey> infos = [] {
     std::vector<ConfigKey> out;
-    for (const Setter& s : setters()) out.push_back(s.key);
+    for (const Key& key : keys()) out.push_back(key.info);
     return out;
   }();
-  return keys;
+  return infos;
 }
 
-std::string readSetting(const Config& config, const std::string& key) {
-  for (const Setter& s : setters())
-    if (key == s.key.name) return s.read(config);
-  return "";
+std::string readSetting(const Config& config, const std::string& name) {
+  const Key* key = findKey(name);
+  return key ? key->print(config) : "";
 }
 
-std::vector<std::string> settingValues(const std::string& key) {
-  std::vector<std::string> values;
-  if (key == "method") {
-    for (const MethodInfo& row : methodTable()) values.push_back(row.name);
-    return values;
-  }
-  for (const Setter& s : setters()) {
-    if (key != s.key.name) continue;
-    const std::string allowed = s.key.allowed;
-    if (allowed.find("..") != std::string::npos || allowed.find(' ') == std::string::npos ||
-        allowed.find(',') == std::string::npos)
-      return values;  // a range or a folder
-    std::istringstream in(allowed);
-    for (std::string value; std::getline(in, value, ',');) values.push_back(trim(value));
-  }
-  return values;
+std::vector<std::string> settingValues(const std::string& name) {
+  const Key* key = findKey(name);
+  return key ? key->values : std::vector<std::string>{};
 }
 
 Status applySetting(Config& config, const std::string& key, const std::string& value) {
+  if (const Key* found = findKey(key)) return found->parse(config, trim(value));
   std::string known;
-  for (const Setter& s : setters()) {
-    if (key == s.key.name) return s.apply(config, trim(value));
-    known += std::string(known.empty() ? "" : ", ") + s.key.name;
-  }
+  for (const Key& k : keys()) known += std::string(known.empty() ? "" : ", ") + k.info.name;
   return invalid("unknown config key " + quoted(key) + " (known keys: " + known + ")");
 }
 
@@ -562,21 +534,14 @@ Status applyFsoFlag(Config& config, const std::string& flag, const std::string& 
 }
 
 Status validateConfig(const Config& config) {
-  const int digits = floatDigits;
-  floatDigits = 9;  // every float exactly enough to round-trip
-  Status status = Status::ok();
-  for (const Setter& s : setters()) {
-    Config scratch;
-    status = s.apply(scratch, s.read(config));
-    if (!status) break;
-  }
-  floatDigits = digits;
-  return status;
+  for (const Key& key : keys())
+    if (Status status = key.check(config); !status) return status;
+  return Status::ok();
 }
 
 std::string toConfigText(const Config& config) {
   std::string out;
-  for (const Setter& s : setters()) out += std::string(s.key.name) + "=" + s.read(config) + "\n";
+  for (const Key& key : keys()) out += std::string(key.info.name) + "=" + key.print(config) + "\n";
   return out;
 }
 

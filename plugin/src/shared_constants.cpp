@@ -1,13 +1,28 @@
 #include "shared_constants.h"
 
-#include "retroaa/config.h"
-#include "retroaa/types.h"
+#include "enum_names.h"
+
+#include <cctype>
 
 namespace retroaa {
 
 std::string defineLine(const char* name, long long value) {
   return std::string("#define ") + name + " " + std::to_string(value) + "\n";
 }
+
+namespace {
+
+// PREFIX_NAME for every row: "every_pixel" is DETECTOR_EVERY_PIXEL.
+template <typename Enum, size_t N>
+void defineEach(std::string& defines, const std::string& prefix, const Named<Enum> (&table)[N]) {
+  for (const Named<Enum>& row : table) {
+    std::string name = prefix + row.name;
+    for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
+    defines += defineLine(name.c_str(), static_cast<long long>(row.value));
+  }
+}
+
+}  // namespace
 
 const std::string& sharedConstantDefines() {
   static const std::string defines = [] {
@@ -17,28 +32,11 @@ const std::string& sharedConstantDefines() {
     d += defineLine("UNIT_SLICE_COUNTS", kUnitSliceCounts);
     d += defineLine("MAX_ATTACHMENTS", kMaxAttachments);
     d += "#define NO_SLICE " + std::to_string(kNoSlice) + "u\n";
-    d += defineLine("WEIGHTING_MEDIAN", int(ResolveWeighting::Median));
-    d += defineLine("WEIGHTING_FRONT", int(ResolveWeighting::Front));
-    d += defineLine("WEIGHTING_BACK", int(ResolveWeighting::Back));
-    d += defineLine("WEIGHTING_FSO", int(ResolveWeighting::Fso));
-    d += defineLine("WEIGHTING_MEAN", int(ResolveWeighting::Mean));
-    d += defineLine("WEIGHTING_WINDOW", int(ResolveWeighting::Window));
-    d += defineLine("DETECTOR_DEPTH", int(EdgeDetector::Depth));
-    d += defineLine("DETECTOR_PLANE", int(EdgeDetector::Plane));
-    d += defineLine("DETECTOR_NORMAL", int(EdgeDetector::Normal));
-    d += defineLine("DETECTOR_MATERIAL", int(EdgeDetector::Material));
-    d += defineLine("DETECTOR_COVERAGE", int(EdgeDetector::Coverage));
-    d += defineLine("DETECTOR_EVERY_PIXEL", int(EdgeDetector::EveryPixel));
-    d += defineLine("DEPTH_BUFFER_PERSPECTIVE", int(DepthBufferEncoding::Perspective));
-    d += defineLine("DEPTH_BUFFER_LOGARITHMIC", int(DepthBufferEncoding::Logarithmic));
-    d += defineLine("DEPTH_BUFFER_REVERSED_PERSPECTIVE", int(DepthBufferEncoding::ReversedPerspective));
-    d += defineLine("DEPTH_BUFFER_REVERSED_INFINITE", int(DepthBufferEncoding::ReversedInfinite));
-    d += defineLine("DEPTH_SOURCE_POSITION_CHANNEL", int(DepthSource::PositionChannel));
-    d += defineLine("DEPTH_SOURCE_DEPTH_BUFFER", int(DepthSource::DepthBuffer));
-    d += defineLine("DEPTH_SOURCE_WORLD_POSITION", int(DepthSource::WorldPosition));
-    d += defineLine("NORMAL_XYZ", int(NormalEncoding::Xyz));
-    d += defineLine("NORMAL_OCTAHEDRAL", int(NormalEncoding::Octahedral));
-    d += defineLine("NORMAL_SPHEREMAP", int(NormalEncoding::Spheremap));
+    defineEach(d, "WEIGHTING_", kWeightings);
+    defineEach(d, "DETECTOR_", kEdgeDetectors);
+    defineEach(d, "DEPTH_BUFFER_", kDepthBufferEncodings);
+    defineEach(d, "DEPTH_SOURCE_", kDepthSources);
+    defineEach(d, "NORMAL_", kNormalEncodings);
     return d;
   }();
   return defines;

@@ -31,7 +31,7 @@ TEST(Config, BadValuesNameKeyValueAndAllowedSet) {
             std::string::npos)
       << s.error().message;
   s = applySetting(config, "samples", "3");
-  EXPECT_NE(s.error().message.find("unsupported sample count '3' (allowed: 1, 2, 4, 8, 16)"), std::string::npos);
+  EXPECT_NE(s.error().message.find("'samples': unsupported value '3' (allowed: 1, 2, 4, 8, 16)"), std::string::npos);
   s = applySetting(config, "closeness", "1e9");
   EXPECT_NE(s.error().message.find("'closeness': value '1e9' is not a number in [0, 100]"), std::string::npos);
   s = applySetting(config, "closeness", "nan");

@@ -73,10 +73,13 @@ enum class SmaaEdgeDetection : uint8_t {
   Depth,   // relative steps in the host's view depth: geometry edges only, no texture or shading edges
 };
 
+// Every field is a config key (configKeys(), docs/config.md): the comments here say what a field means;
+// its key, allowed values and one-line effect are in plugin/src/config.cpp's key table, written once, and
+// its default is the initialiser below.
 struct Config {
   // Which method runs. Changing it reallocates only what the new method needs.
   Method method = Method::Off;
-  // MSAA samples of the G-buffer for multi-sample methods: 1, 2, 4, 8 or 16. Clamped to the
+  // MSAA samples of the G-buffer for multi-sample methods. Clamped to the
   // context's GL_MAX_SAMPLES with a warning naming both counts. Changing it reallocates.
   int samples = 4;
   // The G-buffer's source: 0 multisampled (`samples`); m = 2, 3 or 4 supersampled — an m·W × m·H
@@ -91,44 +94,44 @@ struct Config {
   // attachment's format takes no image stores (three-channel, sRGB), the full-screen pass, with a warning.
   bool resolveCompute = false;
   // c of Eq. 1: samples within min(d1,d2)·tan(hfov/width)·c of the reference depth count as one
-  // surface. Range [0, 100]; 0 keeps only the reference sample's depth, larger merges more (and,
+  // surface. 0 keeps only the reference sample's depth, larger merges more (and,
   // past ~20, blends across real depth steps). Free to change every frame.
   float closeness = 5.0f;
   // Edge detector of `edge`. Free to change every frame (recompiles one small shader).
   EdgeDetector edgeDetector = EdgeDetector::Coverage;
-  // c of the `depth` detector, [0, 100]: smaller marks more pixels (slower, closer to per-sample).
+  // c of the `depth` detector: smaller marks more pixels (slower, closer to per-sample).
   float edgeDepthCloseness = 1.0f;
-  // Angle of the `normal` detector in degrees, [0, 180]: smaller marks more pixels.
+  // Angle of the `normal` detector in degrees: smaller marks more pixels.
   float edgeNormalAngleDegrees = 25.0f;
   // `adaptive` (Holländer et al. 2013): k = clamp(max(k_d, k_n, k_s, k_t), adaptive_min_samples, N).
   // Each scale multiplies its metric; larger refines more pixels (slower, closer to per-sample).
-  float adaptiveDepthScale = 0.5f;     // k_d = scale · variance of depth in pixel footprints, [0, 1000]
-  float adaptiveNormalScale = 8.0f;    // k_n = scale · sqrt(1 − min |n̄·n_i|), [0, 1000]
-  float adaptiveShadingScale = 2.0f;   // k_s = scale · N · luma range of the first lit sample, [0, 1000]
-  float adaptiveTextureScale = 16.0f;  // k_t = scale · N · that range scaled by the albedo's over the pixel, [0, 1000]
-  float adaptiveThresholdMin = 0.0312f;  // k_s = 0 below this luma range (FXAA's), [0, 1]
-  float adaptiveThresholdEdge = 0.125f;  // … or below this fraction of the local max luma, [0, 1]
-  int adaptiveMinSamples = 1;            // floor of k, [1, 16]; N forces every sample (equals per-sample)
+  float adaptiveDepthScale = 0.5f;     // k_d = scale · variance of depth in pixel footprints
+  float adaptiveNormalScale = 8.0f;    // k_n = scale · sqrt(1 − min |n̄·n_i|)
+  float adaptiveShadingScale = 2.0f;   // k_s = scale · N · luma range of the first lit sample
+  float adaptiveTextureScale = 16.0f;  // k_t = scale · N · that range scaled by the albedo's over the pixel
+  float adaptiveThresholdMin = 0.0312f;  // k_s = 0 below this luma range (FXAA's)
+  float adaptiveThresholdEdge = 0.125f;  // … or below this fraction of the local max luma
+  int adaptiveMinSamples = 1;            // floor of k; N forces every sample (equals per-sample)
   // `aggregate` (Crassin et al. 2016): at most c aggregates per pixel (plus one for background).
-  int aggregateCount = 2;  // c, [1, 4]; more aggregates: closer to per-sample, more evaluations
+  int aggregateCount = 2;  // c; more aggregates: closer to per-sample, more evaluations
   float aggregateThreshold =
-      0.1f;                      // t, [0, 10]: a new aggregate only beyond this distance; 0 splits all distinct samples
-  float aggregateLength = 4.0f;  // k in pixel footprints, [0.01, 1000]: depth gaps beyond ~k·sqrt(t) split
+      0.1f;                      // t: a new aggregate only beyond this distance; 0 splits all distinct samples
+  float aggregateLength = 4.0f;  // k in pixel footprints: depth gaps beyond ~k·sqrt(t) split
   // The coverage filter after tonemapping, stacked on `resolve` (which supplies its MSAA depth, so no
   // prepass): intra-model smoothing plus silhouette blending at one lighting evaluation per pixel.
   bool coverageFilter = false;
-  // c of the coverage filter's depth test (Eq. 1 style), [0, 100]: a sample whose depth differs from
+  // c of the coverage filter's depth test (Eq. 1 style): a sample whose depth differs from
   // the pixel's by more than min(d)·tan(hfov/width)·c lies across an edge. Smaller finds more (and,
   // on grazing surfaces, false) edges.
   float coverageTolerance = 2.0f;
   // Sub-pixel reconstruction stacked on a G-buffer method (`resolve+reconstruct`: its MSAA depth and
   // normals feed it, so no prepass).
   bool reconstructFilter = false;
-  // c of the reconstruction's depth test (Eq. 1 style), [0, 100]: a sub-sample belongs to a shaded pixel
+  // c of the reconstruction's depth test (Eq. 1 style): a sub-sample belongs to a shaded pixel
   // whose depth is within min(d)·tan(hfov/width)·c of its own (and whose normal agrees).
   float reconstructTolerance = 2.0f;
   // How far, in rings of pixels around its own, a sub-sample that no neighbour matches searches for a
-  // shaded pixel on its surface, [1, 8]. 1 is the 3×3 neighbourhood of the SRAA paper; a wire thinner
+  // shaded pixel on its surface. 1 is the 3×3 neighbourhood of the SRAA paper; a wire thinner
   // than a pixel is hit by a pixel centre only every few pixels along it, so larger radii rebuild it.
   // The search costs only at such sub-samples.
   int reconstructSearchRadius = 6;
@@ -143,13 +146,13 @@ struct Config {
   // Temporal accumulation stacked on another method (`resolve+temporal`, `reconstruct+temporal`): the
   // host jitters its projection by Plugin::jitter() and the plugin blends each frame into a history.
   bool temporalFilter = false;
-  // The weight of the current frame in the history, [0.02, 1]: smaller converges to a smoother image
+  // The weight of the current frame in the history: smaller converges to a smoother image
   // over more frames (≈ 2/weight) and ghosts longer; 1 keeps no history. Free to change every frame.
   float temporalBlend = 0.1f;
-  // Frames in the jitter sequence (Halton 2, 3), [1, 64]: the sub-pixel positions a static pixel is
+  // Frames in the jitter sequence (Halton 2, 3): the sub-pixel positions a static pixel is
   // sampled at. 1: no jitter (history only smooths flicker). Changing it resets the history.
   int temporalJitterLength = 8;
-  // The mip bias the host adds to its material samplers (Plugin::textureLodBias), [-3, 0]: the history
+  // The mip bias the host adds to its material samplers (Plugin::textureLodBias): the history
   // averages the sharper mips' detail over the jitter. FSR 2 advises -1 at native resolution.
   float temporalLodBias = -1.0f;
   // Accumulate on the host's HDR light target between lighting and tonemapping (radiance, as the ground
@@ -161,14 +164,14 @@ struct Config {
   // after lighting that read it (SSAO, fog, debug views) see the resolved surface, not the last slice's
   // samples. Off saves one resolve pass per frame where nothing reads the G-buffer after lighting.
   bool restoreGBufferAfterShade = true;
-  // A GPU-time budget for the plugin's passes in ms, [0, 1000]; 0 is off. With `adaptive` (or `edge`
+  // A GPU-time budget for the plugin's passes in ms; 0 is off. With `adaptive` (or `edge`
   // with the depth detector) a damped controller scales the refinement frame to frame to stay near it;
   // it times the passes itself (timer queries). Free to change every frame.
   float budgetMs = 0.0f;
   // FXAA after tonemapping, stacked on any method (FreeSpace Open users combine -msaa and FXAA).
   bool fxaa = false;
   FxaaQuality fxaaQuality = FxaaQuality::High;
-  // FXAA edge threshold relative to local contrast, [0.063, 0.333]; lower finds more edges.
+  // FXAA edge threshold relative to local contrast; lower finds more edges.
   float fxaaEdgeThreshold = 0.125f;
   // SMAA 1x after tonemapping, stacked on any lighting-stage method (`resolve+smaa`, `edge+smaa`).
   bool smaa = false;
@@ -183,12 +186,21 @@ struct Config {
   bool measureGpuTime = false;
 };
 
-// One settable key, for documentation, parsers and UIs: name, default, allowed values.
+// One settable key, for documentation, parsers and UIs: name, default, allowed values, effect.
 struct ConfigKey {
+  enum class Kind : uint8_t {
+    Number,   // a float in [minimum, maximum]
+    Integer,  // an integer in [minimum, maximum]
+    Choice,   // one of settingValues(name)
+    Switch,   // on or off
+    Text,     // free text (a folder)
+  };
   const char* name;
-  const char* defaultValue;
-  const char* allowed;
-  const char* effect;
+  const char* defaultValue;  // as text: what Config{} holds
+  const char* allowed;       // as text: "0 .. 100", "on, off", "median, front, back, …"
+  const char* effect;        // one line: what it changes and what changing it costs
+  Kind kind;
+  float minimum, maximum;  // Number and Integer
 };
 RETROAA_API const std::vector<ConfigKey>& configKeys();
 
