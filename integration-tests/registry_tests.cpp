@@ -267,6 +267,49 @@ TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {
   std::filesystem::remove_all(dir);
 }
 
+// Texture units are numbered once, in GLSL, and read back when a program is built: the C++ side binds by
+// sampler name. Two samplers on one unit, or a sampler bound outside the program (shared_constants.h)
+// on another unit than the C++ side binds, refuse the program; an override doing so falls back.
+TEST(PluginErrors, SamplersSharingAUnitOrOffTheirSharedUnitAreAShaderError) {
+  PatchedHost host("default", 32, 24);
+  const auto dir = std::filesystem::temp_directory_path() / "retroaa_sampler_units_test";
+  std::filesystem::create_directories(dir / "slices");
+  {
+    std::ifstream in(std::string(RETROAA_SOURCE_DIR) + "/shaders/slices/composite.frag");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string source = text.str();
+    const std::string counts = "layout(binding = 1) uniform usampler2D uSliceCounts;";
+    ASSERT_NE(source.find(counts), std::string::npos);
+    source.replace(source.find(counts), counts.size(), "layout(binding = 0) uniform usampler2D uSliceCounts;");
+    std::ofstream(dir / "slices" / "composite.frag") << source;
+    std::ofstream(dir / "slices" / "mark_pixels.frag")
+        << "#version 450 core\nlayout(binding = 1) uniform usampler2D uSliceCounts;\n"
+           "layout(binding = 3) uniform sampler2DMS uDepthBuffer;\nuniform int uBit;\nout vec4 outColour;\n"
+           "void main() { outColour = vec4(float(texelFetch(uSliceCounts, ivec2(0), 0).x) + "
+           "texelFetch(uDepthBuffer, ivec2(0), 0).x + float(uBit)); }\n";
+  }
+  retroaa::ObjectCounter counter;
+  std::vector<std::string> warnings;
+  retroaa::ShaderLibrary library(counter, dir.string(), [&warnings](const std::string& m) { warnings.push_back(m); });
+  auto composite =
+      library.program("common/fullscreen.vert", "slices/composite.frag", "", {"uSliceLight", "uSliceCounts"});
+  ASSERT_TRUE(composite) << composite.error().message;  // the built-in one
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("samplers 'uSliceLight' and 'uSliceCounts' share texture unit 0"), std::string::npos)
+      << warnings[0];
+  EXPECT_EQ(composite.value().unit("uSliceLight"), 0);
+  EXPECT_EQ(composite.value().unit("uSliceCounts"), 1);
+  auto mark = library.program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit", "uSliceCounts"});
+  ASSERT_TRUE(mark) << mark.error().message;
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[1].find("sampler 'uDepthBuffer' is on texture unit 3, where the plugin binds unit " +
+                             std::to_string(retroaa::kUnitDepthStencil)),
+            std::string::npos)
+      << warnings[1];
+  std::filesystem::remove_all(dir);
+}
+
 TEST(PluginErrors, AContextBelowGl45IsUnsupported) {
   PatchedHost host("default", 32, 24);
   const EGLDisplay display = eglGetCurrentDisplay();

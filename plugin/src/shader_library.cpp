@@ -6,6 +6,7 @@
 
 #include <cassert>
 #include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -40,6 +41,73 @@ GLuint compile(GLenum stage, const std::string& source, std::string& log) {
 }
 
 // Whether a line of `source` declares a uniform called `name` (whole identifier).
+bool isSampler(GLenum type) {
+  switch (type) {
+    case GL_SAMPLER_2D:
+    case GL_INT_SAMPLER_2D:
+    case GL_UNSIGNED_INT_SAMPLER_2D:
+    case GL_SAMPLER_2D_MULTISAMPLE:
+    case GL_INT_SAMPLER_2D_MULTISAMPLE:
+    case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE:
+    case GL_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_3D:
+    case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_2D_SHADOW: return true;
+    default: return false;
+  }
+}
+
+// Every active sampler of `program` and the unit its binding names, array elements one by one.
+std::vector<std::pair<std::string, int>> activeSamplerUnits(GLuint program) {
+  std::vector<std::pair<std::string, int>> units;
+  GLint count = 0;
+  glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+  for (GLint index = 0; index < count; ++index) {
+    const GLenum properties[] = {GL_TYPE, GL_ARRAY_SIZE, GL_LOCATION};
+    GLint values[3] = {};
+    glGetProgramResourceiv(program, GL_UNIFORM, GLuint(index), 3, properties, 3, nullptr, values);
+    if (!isSampler(GLenum(values[0])) || values[2] < 0) continue;
+    char name[128] = {};
+    glGetProgramResourceName(program, GL_UNIFORM, GLuint(index), sizeof name, nullptr, name);
+    std::string base = name;
+    if (base.size() > 3 && base.compare(base.size() - 3, 3, "[0]") == 0) base.resize(base.size() - 3);
+    for (GLint element = 0; element < values[1]; ++element) {
+      GLint unit = -1;
+      glGetUniformiv(program, values[2] + element, &unit);
+      units.emplace_back(values[1] > 1 ? base + "[" + std::to_string(element) + "]" : base, unit);
+    }
+  }
+  return units;
+}
+
+// The samplers bound outside any one program (shared_constants.h), with the unit the C++ side binds;
+// -1: the array element's own index (G-buffer attachment i is on unit i).
+constexpr std::pair<const char*, int> kSharedSamplerUnits[] = {{"uAttachments", -1},
+                                                               {"uDepthBuffer", kUnitDepthStencil},
+                                                               {"uSliceCountsOfDepth", kUnitSliceCounts},
+                                                               {"uAssignment", kUnitSliceWeights}};
+
+// Empty, or why the units of `samplers` cannot work: two samplers on one unit, or a shared one on a unit
+// the C++ side does not bind it to.
+std::string samplerUnitProblem(const std::vector<std::pair<std::string, int>>& samplers) {
+  for (size_t i = 0; i < samplers.size(); ++i) {
+    for (size_t j = 0; j < i; ++j)
+      if (samplers[j].second == samplers[i].second)
+        return "samplers '" + samplers[j].first + "' and '" + samplers[i].first + "' share texture unit " +
+               std::to_string(samplers[i].second);
+    const std::string& name = samplers[i].first;
+    for (const auto& [shared, unit] : kSharedSamplerUnits) {
+      const size_t length = std::strlen(shared);
+      if (name.compare(0, length, shared) != 0 || (name.size() > length && name[length] != '[')) continue;
+      const int expected = unit >= 0 ? unit : name.size() > length ? std::atoi(name.c_str() + length + 1) : 0;
+      if (samplers[i].second != expected)
+        return "sampler '" + name + "' is on texture unit " + std::to_string(samplers[i].second) +
+               ", where the plugin binds unit " + std::to_string(expected);
+    }
+  }
+  return "";
+}
+
 bool declaresUniform(const std::string& source, const std::string& name) {
   auto isIdentifier = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   std::istringstream lines(source);
@@ -61,6 +129,17 @@ GLint ShaderProgram::location(const char* name) const {
     if (declared == name) return location;
   assert(!"a uniform set on a program that did not list it when built");
   return -1;
+}
+
+int ShaderProgram::unit(const char* sampler) const {
+  for (const auto& [name, unit] : samplerUnits_)
+    if (name == sampler) return unit;
+  location(sampler);  // listed when built (or an assertion), and optimised away
+  return -1;
+}
+
+void ShaderProgram::bindTexture(const char* sampler, GLuint texture) const {
+  if (const int bound = unit(sampler); bound >= 0) glBindTextureUnit(GLuint(bound), texture);
 }
 
 void ShaderProgram::setDepthEncoding(const PluginContext& context) const {
@@ -162,6 +241,9 @@ Result<ShaderProgram> ShaderLibrary::link(const std::vector<Stage>& stages, cons
       return Error{ErrorCode::ShaderError, mainPath + " declares no uniform '" + name + "', which the plugin sets"};
     built.uniforms_.emplace_back(name, location);
   }
+  built.samplerUnits_ = activeSamplerUnits(program);
+  if (const std::string problem = samplerUnitProblem(built.samplerUnits_); !problem.empty())
+    return Error{ErrorCode::ShaderError, mainPath + ": " + problem};
   return built;
 }
 

@@ -34,6 +34,13 @@ class ShaderProgram {
   void setVec2Array(const char* name, int count, const float* xy) const {
     glProgramUniform2fv(get(), location(name), count, xy);
   }
+  // Binds `texture` to the unit the shader gives `sampler` (its `layout(binding = N)`, read back when the
+  // program was built): units are numbered once, in GLSL. `sampler` must be in the program's uniform list;
+  // one the compiler optimised away binds nothing.
+  void bindTexture(const char* sampler, GLuint texture) const;
+  // The unit of `sampler` (-1: optimised away), for what is bound per unit besides the texture (a sampler
+  // object).
+  int unit(const char* sampler) const;
   // The uniforms of common/depth.glsl and depth_buffer.glsl: the host's depth encoding and the planes
   // of the frame being resolved.
   void setDepthEncoding(const PluginContext& context) const;
@@ -45,6 +52,7 @@ class ShaderProgram {
   GLint location(const char* name) const;  // a name not declared at build: -1 and an assertion
   GlProgram program_;
   std::vector<std::pair<std::string, GLint>> uniforms_;
+  std::vector<std::pair<std::string, int>> samplerUnits_;  // every active sampler (array elements as name[i])
 };
 
 // The uniforms common/depth.glsl and depth_buffer.glsl declare (for the uniform list of a program that includes it).
@@ -58,7 +66,9 @@ class ShaderLibrary {
 
   // The shared constants (shared_constants.h) and then `defines` are inserted after the #version line
   // ("#define X 1\n..."). Paths are relative to shaders/. `uniforms`: every uniform the C++ side
-  // sets; a shader that declares none of that name fails with ShaderError naming it.
+  // sets, samplers included; a shader that declares none of that name fails with ShaderError naming it.
+  // So does a program whose active samplers share a texture unit, or that gives a sampler bound outside
+  // it (the G-buffer's, the slice counts and weights: shared_constants.h) another unit than the C++ side.
   Result<ShaderProgram> program(const std::string& vertexPath, const std::string& fragmentPath,
                                 const std::string& defines = "", std::initializer_list<const char*> uniforms = {});
   // The same for a compute shader alone.

@@ -11,7 +11,7 @@
 #endif
 #include "adaptive/shading_rule.glsl"
 layout(binding = 0) uniform sampler2D uFirstLight;     // slice 0, lit by the host
-layout(binding = 2) uniform sampler2D uGeometryK;
+layout(binding = 1) uniform sampler2D uGeometryK;
 uniform float uTextureScale;
 uniform int uMinSamples;
 layout(location = 0) out uint outCount;

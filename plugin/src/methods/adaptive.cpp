@@ -71,7 +71,8 @@ class AdaptiveTechnique : public Technique {
     auto shading = context.shaders->program(
         "common/fullscreen.vert", "adaptive/shading_metric.frag",
         defineLine("SAMPLES", source.samples()) + defineLine("STENCIL_EXPORT", t.stencilExport_),
-        {"uShadingScale", "uTextureScale", "uThresholdMin", "uThresholdEdge", "uMinSamples"});
+        {"uShadingScale", "uTextureScale", "uThresholdMin", "uThresholdEdge", "uMinSamples", "uFirstLight",
+         "uGeometryK"});
     if (!shading) return shading.error();
     t.shadingProgram_ = std::move(shading.value());
     t.geometryK_ = makeTexture(context, GL_RGBA16F, layout.width, layout.height, 0, "adaptive.geometry_k", t.bytes_);
@@ -121,8 +122,8 @@ class AdaptiveTechnique : public Technique {
     plan.maskAfterFirstSlice = [this, &context, &slices]() {
       ScopedPass timed(context, "adaptive.shading_metric");
       shadingProgram_.use();
-      glBindTextureUnit(0, slices.firstSliceLight());
-      glBindTextureUnit(2, geometryK_.get());
+      shadingProgram_.bindTexture("uFirstLight", slices.firstSliceLight());
+      shadingProgram_.bindTexture("uGeometryK", geometryK_.get());
       shadingProgram_.set("uShadingScale", context.config.adaptiveShadingScale * float(context.budgetScale));
       shadingProgram_.set("uTextureScale", context.config.adaptiveTextureScale * float(context.budgetScale));
       shadingProgram_.set("uThresholdMin", context.config.adaptiveThresholdMin);

@@ -39,7 +39,7 @@ class AggregateTechnique : public Technique {
       (depth ? t.writeDepthProgram_ : t.writeProgram_) = std::move(write.value());
     }
     auto composite = context.shaders->program("common/fullscreen.vert", "aggregate/composite_coverage.frag", "",
-                                              {"uSlice", "uSamples"});
+                                              {"uSlice", "uSamples", "uSliceLight"});
     if (!composite) return composite.error();
     t.compositeProgram_ = std::move(composite.value());
 

@@ -21,7 +21,8 @@ class CoverageTechnique : public SampleGeometryTechnique {
     auto program = context.shaders->program(
         "common/fullscreen.vert", "coverage/coverage_filter.frag",
         defineLine("SAMPLES", technique->geometry_.samples) + depthEncodingDefines(context.layout),
-        {"uSamplePositions", "uTexelSize", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance"});
+        {"uSamplePositions", "uTexelSize", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance", "uInput",
+         "uPixelDepth", "uSampleDepth"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -32,9 +33,9 @@ class CoverageTechnique : public SampleGeometryTechnique {
     const GBufferLayout& layout = context.layout;
     shared.post->bindAsOutput(context);
     program_.use();
-    shared.post->bindInput(layout, 0);
-    glBindTextureUnit(1, layout.depthStencilTexture);
-    glBindTextureUnit(2, geometry_.depth);
+    shared.post->bindInput(layout, program_, "uInput");
+    program_.bindTexture("uPixelDepth", layout.depthStencilTexture);
+    program_.bindTexture("uSampleDepth", geometry_.depth);
     program_.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
     program_.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
     program_.setDepthPlanes(context);

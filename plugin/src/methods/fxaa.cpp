@@ -23,9 +23,9 @@ class FxaaTechnique : public Technique {
   static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets&) {
     auto technique = std::make_unique<FxaaTechnique>();
     technique->quality_ = context.config.fxaaQuality;
-    auto program = context.shaders->program("common/fullscreen.vert", "fxaa/fxaa.frag",
-                                            defineLine("FXAA_SEARCH_STEPS", searchSteps(technique->quality_)),
-                                            {"uTexelSize", "uEdgeThreshold", "uEdgeThresholdMin", "uSubpixel"});
+    auto program = context.shaders->program(
+        "common/fullscreen.vert", "fxaa/fxaa.frag", defineLine("FXAA_SEARCH_STEPS", searchSteps(technique->quality_)),
+        {"uTexelSize", "uEdgeThreshold", "uEdgeThresholdMin", "uSubpixel", "uInput"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -36,7 +36,7 @@ class FxaaTechnique : public Technique {
     const GBufferLayout& layout = context.layout;
     shared.post->bindAsOutput(context);
     program_.use();
-    shared.post->bindInput(layout, 0);
+    shared.post->bindInput(layout, program_, "uInput");
     program_.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
     program_.set("uEdgeThreshold", context.config.fxaaEdgeThreshold);
     program_.set("uEdgeThresholdMin", 0.0312f);

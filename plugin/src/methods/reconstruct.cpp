@@ -61,7 +61,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     const GBufferLayout& layout = context.layout;
     copyLightTarget(layout, radiance_.get());
     if (!compute_) context.beginFullscreenPass(layout.lightFramebuffer);
-    glBindTextureUnit(0, radiance_.get());
+    program_.bindTexture("uInput", radiance_.get());
     run(context, frame);
     return Status::ok();
   }
@@ -73,7 +73,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
       shared.post->copyInputAside(context.layout);
     else
       shared.post->beginInPlace(context);
-    glBindTextureUnit(0, linearInput_ ? shared.post->linearCopyOfInput() : shared.post->copyOfInput());
+    program_.bindTexture("uInput", linearInput_ ? shared.post->linearCopyOfInput() : shared.post->copyOfInput());
     run(context, frame);
     return Status::ok();
   }
@@ -85,18 +85,21 @@ class ReconstructTechnique : public SampleGeometryTechnique {
 
  private:
   static constexpr std::initializer_list<const char*> kUniforms = {"uSamplePositions", RETROAA_DEPTH_BUFFER_UNIFORMS,
-                                                                   "uFootprintTan", "uTolerance"};
+                                                                   "uFootprintTan",    "uTolerance",
+                                                                   "uInput",           "uPixelDepth",
+                                                                   "uPixelNormal",     "uSampleDepth",
+                                                                   "uSampleNormal"};
   static constexpr int kTileSize = 8;  // reconstruct.comp's work group: 8 × 8 pixels
 
-  // The pass itself, on a copy of output_ bound on unit 0 (and for the full-screen pass, output_ bound
+  // The pass itself, on a copy of output_ bound as uInput (and for the full-screen pass, output_ bound
   // as the target).
   void run(PluginContext& context, const FrameInfo& frame) {
     const GBufferLayout& layout = context.layout;
     program_.use();
-    glBindTextureUnit(1, layout.depthStencilTexture);
-    glBindTextureUnit(2, pixelNormal_);
-    glBindTextureUnit(3, geometry_.depth);
-    glBindTextureUnit(4, geometry_.normal);
+    program_.bindTexture("uPixelDepth", layout.depthStencilTexture);
+    program_.bindTexture("uPixelNormal", pixelNormal_);
+    program_.bindTexture("uSampleDepth", geometry_.depth);
+    program_.bindTexture("uSampleNormal", geometry_.normal);
     program_.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
     program_.setDepthPlanes(context);
     program_.set("uFootprintTan", context.footprintTan(frame));

@@ -122,20 +122,21 @@ class SmaaPasses {
     const bool depth = p.detection_ == SmaaEdgeDetection::Depth;
     const std::string edgeDefines = common + threshold + defineLine("SMAA_EDGE_MODE", int(p.detection_)) +
                                     (depth ? depthEncodingDefines(layout) : std::string());
-    auto edges = depth
-                     ? context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines,
-                                                {"uMetrics", RETROAA_DEPTH_ENCODING_UNIFORMS})
-                     : context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines, {"uMetrics"});
+    auto edges = depth ? context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines,
+                                                  {"uMetrics", "uInput", RETROAA_DEPTH_ENCODING_UNIFORMS})
+                       : context.shaders->program("common/fullscreen.vert", "smaa/edges.frag", edgeDefines,
+                                                  {"uMetrics", "uInput"});
     if (!edges) return edges.error();
     p.edgesProgram_ = std::move(edges.value());
     auto weights = context.shaders->program("common/fullscreen.vert", "smaa/weights.frag",
                                             common + defineLine("SMAA_MAX_SEARCH_STEPS", preset.searchSteps) +
                                                 defineLine("SMAA_MAX_SEARCH_STEPS_DIAG", preset.diagonalSteps) +
                                                 defineLine("SMAA_CORNER_ROUNDING", preset.cornerRounding),
-                                            {"uMetrics", "uSubsampleIndices"});
+                                            {"uMetrics", "uSubsampleIndices", "uEdges", "uArea", "uSearch"});
     if (!weights) return weights.error();
     p.weightsProgram_ = std::move(weights.value());
-    auto blend = context.shaders->program("common/fullscreen.vert", "smaa/blend.frag", common, {"uMetrics"});
+    auto blend = context.shaders->program("common/fullscreen.vert", "smaa/blend.frag", common,
+                                          {"uMetrics", "uInput", "uWeights"});
     if (!blend) return blend.error();
     p.blendProgram_ = std::move(blend.value());
     // The size is fixed for the programs' lifetime (a new layout rebuilds every technique).
@@ -159,11 +160,11 @@ class SmaaPasses {
       edgesProgram_.use();
       if (detection_ == SmaaEdgeDetection::Depth) {
         edgesProgram_.setDepthEncoding(context);
-        glBindTextureUnit(0, layout.depthSource != DepthSource::PositionChannel
-                                 ? layout.depthStencilTexture
-                                 : layout.attachments[size_t(positionAttachment_)].texture);
+        edgesProgram_.bindTexture("uInput", layout.depthSource != DepthSource::PositionChannel
+                                                ? layout.depthStencilTexture
+                                                : layout.attachments[size_t(positionAttachment_)].texture);
       } else {
-        glBindTextureUnit(0, input);
+        edgesProgram_.bindTexture("uInput", input);
       }
       context.drawFullscreen();
     }
@@ -171,9 +172,9 @@ class SmaaPasses {
       ScopedPass timed(context, "smaa.weights");
       context.beginFullscreenPass(weightsTarget_.get());
       weightsProgram_.use();
-      glBindTextureUnit(0, edges_.get());
-      glBindTextureUnit(1, area_.get());
-      glBindTextureUnit(2, search_.get());
+      weightsProgram_.bindTexture("uEdges", edges_.get());
+      weightsProgram_.bindTexture("uArea", area_.get());
+      weightsProgram_.bindTexture("uSearch", search_.get());
       weightsProgram_.setVec4("uSubsampleIndices", subsample);
       context.drawFullscreen();
     }
@@ -181,8 +182,8 @@ class SmaaPasses {
       ScopedPass timed(context, "smaa.blend");
       bindOutput();
       blendProgram_.use();
-      glBindTextureUnit(0, input);
-      glBindTextureUnit(1, weights_.get());
+      blendProgram_.bindTexture("uInput", input);
+      blendProgram_.bindTexture("uWeights", weights_.get());
       context.drawFullscreen();
     }
   }

@@ -134,10 +134,11 @@ class TemporalTechnique : public Technique {
       glNamedFramebufferDrawBuffers(t.framebuffers_[i].get(), 2, drawBuffers);
       if (Status status = checkFramebuffer(t.framebuffers_[i].get(), "temporal.output"); !status) return status.error();
     }
-    auto program = context.shaders->program("common/fullscreen.vert", "temporal/temporal.frag",
-                                            depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_),
-                                            {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection",
-                                             "uClipWPerViewZ", "uBlend", "uHistoryValid"});
+    auto program =
+        context.shaders->program("common/fullscreen.vert", "temporal/temporal.frag",
+                                 depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_),
+                                 {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ",
+                                  "uBlend", "uHistoryValid", "uInput", "uHistory", "uDepth"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -210,11 +211,11 @@ class TemporalTechnique : public Technique {
     const int previous = historyIndex_, next = 1 - historyIndex_;
     context.beginFullscreenPass(framebuffers_[next].get());
     program_.use();
-    glBindTextureUnit(0, input);
-    glBindSampler(0, 0);
-    glBindTextureUnit(1, history_[previous].get());
-    glBindSampler(1, 0);
-    glBindTextureUnit(2, layout.depthStencilTexture);
+    program_.bindTexture("uInput", input);
+    program_.bindTexture("uHistory", history_[previous].get());
+    program_.bindTexture("uDepth", layout.depthStencilTexture);
+    for (const char* filtered : {"uInput", "uHistory"})  // their textures' own filtering: no post pass's sampler
+      if (const int unit = program_.unit(filtered); unit >= 0) glBindSampler(GLuint(unit), 0);
     program_.setMatrix4("uViewToPreviousClip", viewToPreviousClip.data());
     const Matrix4& projection = previousProjection_;  // this frame's, as reprojectable() keeps it
     const float projectionTerms[4] = {projection[0], projection[5], projection[8], projection[9]};

@@ -136,8 +136,8 @@ class SliceRenderer {
     const ShaderProgram* writeProgram = nullptr;
     const ShaderProgram* writeDepthProgram = nullptr;
     std::function<void(const ShaderProgram&)> bindWriteInputs;
-    // A technique's own composite weights (null: 1 / count). It is given uniform `uSlice`, the slice's
-    // light on unit 0 and the counts on unit 1; `bindCompositeInputs` binds the rest.
+    // A technique's own composite weights (null: 1 / count). It is given uniform `uSlice` and the slice's
+    // light as sampler `uSliceLight` (listed when it is built); `bindCompositeInputs` binds the rest.
     const ShaderProgram* compositeProgram = nullptr;
     std::function<void()> bindCompositeInputs;
     // Runs on each slice's light before it is composited (SMAA S2x filters it): given the slice and its
@@ -206,9 +206,10 @@ class PostTarget {
   void begin(const GBufferLayout& layout) const;  // before the first post pass of a frame
   void end(const GBufferLayout& layout) const;    // after the last
   GLuint input(const GBufferLayout& layout) const { return encodedCopy_ ? encodedCopy_.get() : layout.displayTexture; }
-  void bindAsOutput(const PluginContext& context) const;           // framebuffer, viewport, plain state
-  void bindInput(const GBufferLayout& layout, GLuint unit) const;  // input(), bilinear
-  void copyBack(const GBufferLayout& layout) const;                // the output into input()
+  void bindAsOutput(const PluginContext& context) const;  // framebuffer, viewport, plain state
+  // input(), bilinear, as `program`'s `sampler`.
+  void bindInput(const GBufferLayout& layout, const ShaderProgram& program, const char* sampler) const;
+  void copyBack(const GBufferLayout& layout) const;  // the output into input()
   // A pass that rewrites only some pixels and discards the rest renders into input() itself and reads
   // the frame from a copy: one copy, as with copyBack, and nothing written where nothing changes.
   void beginInPlace(const PluginContext& context) const;   // input() copied aside and bound as the output

@@ -60,9 +60,11 @@ void PostTarget::end(const GBufferLayout& layout) const {
   if (encodedCopy_) copyImage(encodedCopy_.get(), layout.displayTexture, layout);
 }
 
-void PostTarget::bindInput(const GBufferLayout& layout, GLuint unit) const {
-  glBindTextureUnit(unit, input(layout));
-  glBindSampler(unit, linear_.get());
+void PostTarget::bindInput(const GBufferLayout& layout, const ShaderProgram& program, const char* sampler) const {
+  const int unit = program.unit(sampler);
+  if (unit < 0) return;
+  glBindTextureUnit(GLuint(unit), input(layout));
+  glBindSampler(GLuint(unit), linear_.get());
 }
 
 void PostTarget::copyBack(const GBufferLayout& layout) const { copyImage(output_.get(), input(layout), layout); }

@@ -77,7 +77,8 @@ Status ResolvePass::createCompute(PluginContext& context, const MsaaGBuffer& sou
   auto program =
       context.shaders->computeProgram("resolve/resolve.comp", source.shaderDefines(layout, false), kResolveUniforms);
   if (!program) return program.error();
-  auto writeDepth = context.shaders->program("common/fullscreen.vert", "resolve/write_depth.frag", "", {});
+  auto writeDepth =
+      context.shaders->program("common/fullscreen.vert", "resolve/write_depth.frag", "", {"uResolvedDepth"});
   if (!writeDepth) return writeDepth.error();
   computeProgram_ = std::move(program.value());
   writeDepthProgram_ = std::move(writeDepth.value());
@@ -121,7 +122,7 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
       context.dispatchOverScreen(outputs, kTileSize);
       context.beginDepthWritingPass(depthTarget_.get());
       writeDepthProgram_.use();
-      glBindTextureUnit(0, resolvedDepth_.get());
+      writeDepthProgram_.bindTexture("uResolvedDepth", resolvedDepth_.get());
       context.drawFullscreen();
     } else {
       context.beginDepthWritingPass(hostTarget_.get());

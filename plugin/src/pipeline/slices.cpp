@@ -60,7 +60,8 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
       if (Status status = checkFramebuffer(slices->presentTarget_.get(), "slices.present"); !status)
         return status.error();
     }
-    auto present = context.shaders->program("common/fullscreen.vert", "slices/present_light.frag");
+    auto present =
+        context.shaders->program("common/fullscreen.vert", "slices/present_light.frag", "", {"uAccumulated"});
     if (!present) return present.error();
     slices->presentLight_ = std::move(present.value());
   }
@@ -101,10 +102,12 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
     if (!writeSlice) return writeSlice.error();
     (depth ? slices->writeSliceDepth_ : slices->writeSlice_) = std::move(writeSlice.value());
   }
-  auto composite = context.shaders->program("common/fullscreen.vert", "slices/composite.frag");
+  auto composite =
+      context.shaders->program("common/fullscreen.vert", "slices/composite.frag", "", {"uSliceLight", "uSliceCounts"});
   if (!composite) return composite.error();
   slices->composite_ = std::move(composite.value());
-  auto mark = context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit"});
+  auto mark =
+      context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit", "uSliceCounts"});
   if (!mark) return mark.error();
   slices->markPixels_ = std::move(mark.value());
   return slices;
@@ -128,7 +131,7 @@ Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glStencilFunc(GL_ALWAYS, 0xFF, 0xFF);
     markPixels_.use();
-    glBindTextureUnit(1, counts_.get());
+    markPixels_.bindTexture("uSliceCounts", counts_.get());
     for (int bit = 0; (1 << bit) <= maxCount_; ++bit) {
       glStencilMask(GLuint(1) << bit);
       markPixels_.set("uBit", 1 << bit);
@@ -231,15 +234,15 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
           glEnable(GL_BLEND);
           glBlendFunc(GL_ONE, GL_ONE);
         }
-        glBindTextureUnit(1, counts_.get());
+        const ShaderProgram& program = plan.compositeProgram ? *plan.compositeProgram : composite_;
+        program.use();
+        program.bindTexture("uSliceLight", light);
         if (plan.compositeProgram) {
-          plan.compositeProgram->use();
           if (plan.bindCompositeInputs) plan.bindCompositeInputs();
-          plan.compositeProgram->set("uSlice", slice);
+          program.set("uSlice", slice);
         } else {
-          composite_.use();
+          composite_.bindTexture("uSliceCounts", counts_.get());
         }
-        glBindTextureUnit(0, light);
         context.drawFullscreen();
       };
       composite(compositeTarget_.get(), sliceLight);
@@ -262,7 +265,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     context.beginFullscreenPass(0);  // 0: the binding above (the host's may be the default framebuffer)
     glEnable(GL_FRAMEBUFFER_SRGB);   // an sRGB target encodes the linear sum
     presentLight_.use();
-    glBindTextureUnit(0, accumulation_.get());
+    presentLight_.bindTexture("uAccumulated", accumulation_.get());
     context.drawFullscreen();
   }
   return Status::ok();
