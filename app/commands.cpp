@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -69,6 +70,35 @@ MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base)
   return out;
 }
 
+ToolSpecs toolSpecs(const retroaa::MethodInfo& method) {
+  // Methods with more to measure than their plain name; the rest are swept, regressed and tuned as it.
+  static const std::map<std::string, ToolSpecs> kVariants = {
+      {"fxaa", {"fxaa", "fxaa", "fxaa@fxaa_quality=low,fxaa"}},
+      {"smaa",
+       {"smaa,resolve+smaa", "smaa", "smaa@smaa_quality=low,smaa@smaa_quality=medium,smaa,smaa@smaa_quality=ultra"}},
+      {"resolve",
+       {"resolve,resolve/front,resolve/back,resolve/fso,resolve/window,resolve/mean,resolve+fxaa", "resolve",
+        "resolve@samples=2,resolve,resolve@samples=8,resolve/fso,resolve/window,resolve+fxaa,resolve+coverage"}},
+      {"coverage", {"coverage,resolve+coverage", "resolve+coverage", "coverage"}},
+      {"reconstruct",
+       {"reconstruct,resolve+reconstruct", "reconstruct",
+        "reconstruct@samples=2,reconstruct,reconstruct@samples=8,resolve+reconstruct"}},
+      // The tuner leaves temporal out: it judges single frames, where a history converged on a still
+      // camera wins, and a preset must not depend on the host's jitter line (docs/methods/temporal.md).
+      {"temporal", {"temporal,resolve+temporal,reconstruct+temporal", "temporal", ""}},
+      {"edge", {"edge", "edge", "edge@samples=2,edge,edge@samples=8,edge@edge_detector=plane"}},
+      {"adaptive",
+       {"adaptive", "adaptive", "adaptive@adaptive_shading_scale=0.5,adaptive,adaptive@adaptive_shading_scale=8"}},
+      {"aggregate", {"aggregate", "aggregate", "aggregate@aggregate_count=1,aggregate,aggregate@aggregate_count=3"}},
+      {"smaa-s2x", {"smaa-s2x", "smaa-s2x", "smaa-s2x@smaa_quality=medium,smaa-s2x"}},
+      {"per-sample", {"per-sample", "per-sample", "per-sample@samples=2,per-sample,per-sample@samples=8"}},
+      // At m² lights per pixel it is a reference, not a setting: regression runs and the tuner leave it out.
+      {"ssaa", {"ssaa@supersample=2", "", ""}},
+  };
+  const auto found = kVariants.find(method.name);
+  return found != kVariants.end() ? found->second : ToolSpecs{method.name, method.name, method.name};
+}
+
 std::vector<std::string> expandMethodList(const std::string& list) {
   std::vector<std::string> out;
   auto add = [&out](const std::string& items) {
@@ -79,8 +109,10 @@ std::vector<std::string> expandMethodList(const std::string& list) {
   std::stringstream in(list);
   for (std::string item; std::getline(in, item, ',');) {
     if (item == "all" || item == "each" || item == "grid")
-      for (const retroaa::MethodInfo& row : retroaa::methodTable())
-        add(item == "all" ? row.sweepSpecs : item == "each" ? row.regressSpec : row.tuneSpecs);
+      for (const retroaa::MethodInfo& row : retroaa::methodTable()) {
+        const ToolSpecs tools = toolSpecs(row);
+        add(item == "all" ? tools.sweep : item == "each" ? tools.regress : tools.tune);
+      }
     else
       add(item);
   }

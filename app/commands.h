@@ -22,6 +22,13 @@ struct MethodSpec {
 };
 // Throws std::invalid_argument naming the bad part.
 MethodSpec parseMethodSpec(const std::string& spec, const retroaa::Config& base);
+// What the tools render of one method, as comma-separated method specs: a full sweep (`--methods all`,
+// the viewer's M key), the one spec a regression run renders (`each`), and the points `retroaa tune`
+// searches, cheapest first (`grid`). A method with no variants listed here is its plain name in all three.
+struct ToolSpecs {
+  std::string sweep, regress, tune;
+};
+ToolSpecs toolSpecs(const retroaa::MethodInfo& method);
 // Keywords expand from the plugin's method registry: "all" to every method with its variants (resolve
 // weightings, stacking), "each" to one spec per method, "grid" to the settings `tune` searches.
 std::vector<std::string> expandMethodList(const std::string& list);
@@ -32,8 +39,8 @@ std::vector<MethodSpec> parseMethodList(const std::string& list, const retroaa::
 struct RenderOptions {
   std::string scene = "default";
   std::string host = "fso";  // the host engine (Session's kHostNames)
-  std::string method;    // a MethodSpec, "ground-truth", or empty: the config's own method
-  retroaa::Config base;  // from --config / --set / FSO flags
+  std::string method;        // a MethodSpec, "ground-truth", or empty: the config's own method
+  retroaa::Config base;      // from --config / --set / FSO flags
   int width = 320, height = 240;
   int frame = -1;              // camera path frame; -1: the scene's camera
   int groundTruthSamples = 8;  // per axis, for --method ground-truth and --heatmap

@@ -50,10 +50,10 @@ class EveryPixelTechnique : public retroaa::Technique {
 
 void registerTestTechnique() {
   static const bool once = [] {
-    retroaa::registerTechnique({{kTestMethod, "test-every-pixel", "every sample lit (test)", true, 1,
-                                 "test-every-pixel", "test-every-pixel", "test-every-pixel"},
-                                retroaa::kStorageMsaaGBuffer | retroaa::kStorageSlices,
-                                EveryPixelTechnique::create});
+    retroaa::registerTechnique(retroaa::TechniqueRow::named(kTestMethod, "test-every-pixel", "every sample lit (test)")
+                                   .needsMultisampling()
+                                   .uses(retroaa::kStorageMsaaGBuffer | retroaa::kStorageSlices)
+                                   .createdBy(EveryPixelTechnique::create));
     return true;
   }();
   (void)once;
@@ -108,7 +108,8 @@ TEST(Registry, EveryEnumValueHasOneRowAndEveryRowParses) {
                 "on");
     }
     // Every spec a tool renders for the row parses and selects the row's method.
-    for (const char* specs : {row.sweepSpecs, row.regressSpec, row.tuneSpecs})
+    const app::ToolSpecs tools = app::toolSpecs(row);
+    for (const std::string& specs : {tools.sweep, tools.regress, tools.tune})
       for (const std::string& spec : app::expandMethodList(specs)) {
         const retroaa::Config parsed = app::parseMethodSpec(spec, {}).config;
         // (a stacked spec, `resolve+NAME` or `reconstruct+temporal`, turns the row's stack key on instead)

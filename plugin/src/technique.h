@@ -104,8 +104,9 @@ enum Storage : uint32_t {
 
 using TechniqueFactory = Result<std::unique_ptr<Technique>> (*)(PluginContext&, SharedTargets&);
 
+// One method: built in registry.cpp with named fields (TechniqueRow::named(...).storage(...)...).
 struct TechniqueRow {
-  MethodInfo info;          // name, summary, what tools measure (config.h)
+  MethodInfo info;          // name, summary, samples, stack key (config.h)
   uint32_t storage;         // Storage bits when this row is the config's method
   TechniqueFactory create;  // null: the shared pieces do all of it
   // Non-null: the row is also active on top of another method when this says so (+fxaa,
@@ -113,6 +114,24 @@ struct TechniqueRow {
   bool (*stackedOn)(const Config&) = nullptr;
   uint32_t stackedStorage = kStorageNone;
   bool postLast = false;  // its post pass runs after every other active technique's
+
+  static TechniqueRow named(Method method, const char* name, const char* summary) {
+    TechniqueRow row{};
+    row.info.method = method, row.info.name = name, row.info.summary = summary;
+    return row;
+  }
+  TechniqueRow& needsMultisampling(int leastSamples = 1) {
+    info.multisampled = true, info.minSamples = leastSamples;
+    return *this;
+  }
+  TechniqueRow& uses(uint32_t storageBits) { return storage = storageBits, *this; }
+  TechniqueRow& createdBy(TechniqueFactory factory) { return create = factory, *this; }
+  // Also active on top of another method while `when` holds; `key` is the on/off config key (`+NAME`).
+  TechniqueRow& stacks(const char* key, bool (*when)(const Config&), uint32_t storageBits) {
+    info.stackKey = key, stackedOn = when, stackedStorage = storageBits;
+    return *this;
+  }
+  TechniqueRow& postPassLast() { return postLast = true, *this; }
 };
 
 // `temporal`'s jitter for frame `frame` of its sequence (1: the first after the sequence began) of a

@@ -105,18 +105,17 @@ struct Config {
   float edgeNormalAngleDegrees = 25.0f;
   // `adaptive` (Holländer et al. 2013): k = clamp(max(k_d, k_n, k_s, k_t), adaptive_min_samples, N).
   // Each scale multiplies its metric; larger refines more pixels (slower, closer to per-sample).
-  float adaptiveDepthScale = 0.5f;     // k_d = scale · variance of depth in pixel footprints
-  float adaptiveNormalScale = 8.0f;    // k_n = scale · sqrt(1 − min |n̄·n_i|)
-  float adaptiveShadingScale = 2.0f;   // k_s = scale · N · luma range of the first lit sample
-  float adaptiveTextureScale = 16.0f;  // k_t = scale · N · that range scaled by the albedo's over the pixel
+  float adaptiveDepthScale = 0.5f;       // k_d = scale · variance of depth in pixel footprints
+  float adaptiveNormalScale = 8.0f;      // k_n = scale · sqrt(1 − min |n̄·n_i|)
+  float adaptiveShadingScale = 2.0f;     // k_s = scale · N · luma range of the first lit sample
+  float adaptiveTextureScale = 16.0f;    // k_t = scale · N · that range scaled by the albedo's over the pixel
   float adaptiveThresholdMin = 0.0312f;  // k_s = 0 below this luma range (FXAA's)
   float adaptiveThresholdEdge = 0.125f;  // … or below this fraction of the local max luma
   int adaptiveMinSamples = 1;            // floor of k; N forces every sample (equals per-sample)
   // `aggregate` (Crassin et al. 2016): at most c aggregates per pixel (plus one for background).
-  int aggregateCount = 2;  // c; more aggregates: closer to per-sample, more evaluations
-  float aggregateThreshold =
-      0.1f;                      // t: a new aggregate only beyond this distance; 0 splits all distinct samples
-  float aggregateLength = 4.0f;  // k in pixel footprints: depth gaps beyond ~k·sqrt(t) split
+  int aggregateCount = 2;           // c; more aggregates: closer to per-sample, more evaluations
+  float aggregateThreshold = 0.1f;  // t: a new aggregate only beyond this distance; 0 splits all distinct samples
+  float aggregateLength = 4.0f;     // k in pixel footprints: depth gaps beyond ~k·sqrt(t) split
   // The coverage filter after tonemapping, stacked on `resolve` (which supplies its MSAA depth, so no
   // prepass): intra-model smoothing plus silhouette blending at one lighting evaluation per pixel.
   bool coverageFilter = false;
@@ -204,18 +203,14 @@ struct ConfigKey {
 };
 RETROAA_API const std::vector<ConfigKey>& configKeys();
 
-// One method as the plugin's registry lists it (plugin/src/registry.cpp: one row per method). Tools
-// read their method lists from here; none names a method itself.
+// One method as the plugin's registry lists it (plugin/src/registry.cpp: one row per method). Parsers,
+// `retroaa config` and the tools read their method lists from here.
 struct MethodInfo {
   Method method = Method::Off;
   const char* name = "";      // as config files, the command line and reports spell it
   const char* summary = "";   // what it does, in one line
   bool multisampled = false;  // needs GL_MAX_SAMPLES >= 2; falls back to fxaa (with a warning) without
   int minSamples = 1;         // fewer samples are raised to this, with a warning
-  // Method specs (app: `method[/weighting][+fxaa|+coverage][@key=value]...`), comma-separated:
-  const char* sweepSpecs = "";   // what a full sweep renders (`--methods all`, the viewer's M key)
-  const char* regressSpec = "";  // the one spec a regression run renders
-  const char* tuneSpecs = "";    // the points `retroaa tune` searches, cheapest settings first
   // The on/off key that stacks this method's post pass on another method (`resolve+NAME` in specs);
   // empty where it does not stack.
   const char* stackKey = "";
