@@ -1,6 +1,7 @@
 #include "retroaa/config.h"
 
-#include "enum_names.h"
+#include "config_keys.h"
+#include "technique.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -127,23 +128,13 @@ std::string listed(const std::vector<Value>& values) {
   return out.str();
 }
 
-// One settable key: its Config field, type, range or names, and effect, written once. Parsing,
-// printing, validation, configKeys() (docs/config.md, `retroaa config`, the viewer's widgets) and
-// settingValues() all read it; the default is whatever Config{} holds.
-struct Key {
-  ConfigKey info;  // the public view; its strings point into the fields below once the table is built
-  std::string defaultText, allowedText;
-  std::vector<std::string> values;  // every allowed value, for keys with a list of them
-  std::function<Status(Config&, const std::string&)> parse;
-  std::function<std::string(const Config&)> print;
-  std::function<Status(const Config&)> check;  // the parser's rules on the typed field: no text round trip
-};
-
 Key makeKey(const char* name, ConfigKey::Kind kind, const char* effect) {
   Key key;
   key.info = ConfigKey{name, "", "", effect, kind, 0, 0};
   return key;
 }
+
+}  // namespace
 
 Key number(const char* name, float Config::*field, float minimum, float maximum, const char* effect) {
   Key key = makeKey(name, ConfigKey::Kind::Number, effect);
@@ -209,21 +200,42 @@ Key onOff(const char* name, bool Config::*field, const char* effect) {
   return key;
 }
 
-template <typename Enum, size_t N>
-Key named(const char* name, Enum Config::*field, const Named<Enum> (&table)[N], const char* effect) {
+Key enumKey(const char* name, std::vector<std::pair<int, std::string>> values, std::function<int(const Config&)> get,
+            std::function<void(Config&, int)> set, const char* effect) {
   Key key = makeKey(name, ConfigKey::Kind::Choice, effect);
-  for (const Named<Enum>& row : table) key.values.push_back(row.name);
-  key.allowedText = namesOf(table);
-  key.parse = [=, &table](Config& c, const std::string& v) { return parseEnum(name, v, table, c.*field); };
-  key.print = [=, &table](const Config& c) { return std::string(nameIn(table, c.*field)); };
-  key.check = [=, &table](const Config& c) -> Status {
-    for (const Named<Enum>& row : table)
-      if (row.value == c.*field) return Status::ok();
-    return invalid("config key '" + std::string(name) + "': unknown value " + std::to_string(int(c.*field)) +
-                   " (allowed: " + namesOf(table) + ")");
+  for (const auto& value : values) key.values.push_back(value.second);
+  key.allowedText = listed(key.values);
+  const std::string allowed = key.allowedText;
+  key.parse = [=](Config& c, const std::string& v) -> Status {
+    for (const auto& [value, valueName] : values)
+      if (v == valueName) return set(c, value), Status::ok();
+    return invalid("config key '" + std::string(name) + "': unknown value " + quoted(v) + " (allowed: " + allowed +
+                   ")");
+  };
+  key.print = [=](const Config& c) -> std::string {
+    for (const auto& [value, valueName] : values)
+      if (get(c) == value) return valueName;
+    return "?";
+  };
+  key.check = [=](const Config& c) -> Status {
+    for (const auto& value : values)
+      if (get(c) == value.first) return Status::ok();
+    return invalid("config key '" + std::string(name) + "': unknown value " + std::to_string(get(c)) +
+                   " (allowed: " + allowed + ")");
   };
   return key;
 }
+
+Key folder(const char* name, std::string Config::*field, const char* effect) {
+  Key key = makeKey(name, ConfigKey::Kind::Text, effect);
+  key.allowedText = "a folder";
+  key.parse = [=](Config& c, const std::string& v) { return c.*field = v, Status::ok(); };
+  key.print = [=](const Config& c) { return c.*field; };
+  key.check = [](const Config&) { return Status::ok(); };
+  return key;
+}
+
+namespace {
 
 Key methodKey() {
   Key key =
@@ -266,117 +278,36 @@ Key presetKey() {
   return key;
 }
 
-Key folder(const char* name, std::string Config::*field, const char* effect) {
-  Key key = makeKey(name, ConfigKey::Kind::Text, effect);
-  key.allowedText = "a folder";
-  key.parse = [=](Config& c, const std::string& v) { return c.*field = v, Status::ok(); };
-  key.print = [=](const Config& c) { return c.*field; };
-  key.check = [](const Config&) { return Status::ok(); };
-  return key;
-}
-
+// The keys every method shares, then each technique's (registry order, TechniqueRow::keys), then the
+// shared keys that act on all of them.
 std::vector<Key> buildKeys() {
-  std::vector<Key> keys = {
-      methodKey(),
-      choice("samples", &Config::samples, {1, 2, 4, 8, 16},
-             "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"),
+  std::vector<Key> keys;
+  keys.push_back(methodKey());
+  keys.push_back(choice("samples", &Config::samples, {1, 2, 4, 8, 16},
+                        "MSAA samples of multi-sample methods; clamped to GL_MAX_SAMPLES with a warning; reallocates"));
+  keys.push_back(
       choice("supersample", &Config::supersample, {0, 2, 3, 4},
              "G-buffer methods' source: 0 multisampled (samples); m an m x m supersampled G-buffer (the host's model "
              "pass renders at m x its viewport, Plugin::geometryScale), its m^2 sub-positions lit like samples; "
-             "reallocates"),
-      named("resolve_weighting", &Config::resolveWeighting, kWeightings,
-            "how resolve weights a pixel's samples; free per frame"),
-      onOff("resolve_compute", &Config::resolveCompute,
-            "the resolve as a compute pass, the depth through a one-fetch full-screen pass (the same G-buffer; for "
-            "GPUs whose pixel shaders run on a small partition; where an attachment's format takes no image stores, "
-            "the full-screen pass with a warning)"),
-      number("closeness", &Config::closeness, 0, 100,
-             "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"),
-      named("edge_detector", &Config::edgeDetector, kEdgeDetectors,
-            "how `edge` finds pixels to light per sample; free per frame"),
-      number("edge_depth_closeness", &Config::edgeDepthCloseness, 0, 100,
-             "c of the depth detector; smaller marks more pixels (slower, closer to per-sample)"),
-      number("edge_normal_angle_deg", &Config::edgeNormalAngleDegrees, 0, 180,
-             "angle of the normal detector; smaller marks more pixels"),
-      number("adaptive_depth_scale", &Config::adaptiveDepthScale, 0, 1000,
-             "adaptive: k_d per unit of depth variance (in pixel footprints²); larger refines more"),
-      number("adaptive_normal_scale", &Config::adaptiveNormalScale, 0, 1000,
-             "adaptive: k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"),
-      number("adaptive_shading_scale", &Config::adaptiveShadingScale, 0, 1000,
-             "adaptive: k_s = scale * N * luma range of the first lit sample; larger refines more"),
-      number("adaptive_texture_scale", &Config::adaptiveTextureScale, 0, 1000,
-             "adaptive: k_t = scale * N * luma range of the first lit sample scaled by the albedo over the pixel "
-             "(texture detail inside it); larger refines more"),
-      number("adaptive_threshold_min", &Config::adaptiveThresholdMin, 0, 1,
-             "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"),
-      number("adaptive_threshold_edge", &Config::adaptiveThresholdEdge, 0, 1,
-             "adaptive: luma ranges below this fraction of the local maximum never refine"),
-      integer("adaptive_min_samples", &Config::adaptiveMinSamples, 1, 16,
-              "adaptive: floor of the per-pixel sample count; N lights every sample"),
-      integer("aggregate_count", &Config::aggregateCount, 1, 4,
-              "aggregate: at most this many aggregates per pixel (plus background); more is closer to per-sample"),
-      number("aggregate_threshold", &Config::aggregateThreshold, 0, 10,
-             "aggregate: t, the distance beyond which a sample seeds a new aggregate; 0 splits every distinct sample"),
-      number("aggregate_length", &Config::aggregateLength, 0.01f, 1000,
-             "aggregate: k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"),
-      onOff("coverage_filter", &Config::coverageFilter,
-            "the coverage filter on top of resolve (reuses its MSAA depth; no prepass)"),
-      number("coverage_tolerance", &Config::coverageTolerance, 0, 100,
-             "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"),
-      onOff("reconstruct_filter", &Config::reconstructFilter,
-            "sub-pixel reconstruction on top of resolve (reuses its MSAA depth and normals; no prepass)"),
-      number("reconstruct_tolerance", &Config::reconstructTolerance, 0, 100,
-             "reconstruct: c of the depth test that ties a sub-sample to a shaded pixel"),
-      integer("reconstruct_search_radius", &Config::reconstructSearchRadius, 1, 8,
-              "reconstruct: how many rings of pixels a sub-sample searches for its surface when no neighbour holds "
-              "it (sub-pixel wires: a pixel centre on the same wire lies a few pixels along it)"),
-      onOff("reconstruct_before_tonemap", &Config::reconstructBeforeTonemap,
-            "reconstruct on the HDR light target before tonemapping (+8 B/px) instead of on the display"),
-      onOff("reconstruct_compute", &Config::reconstructCompute,
-            "reconstruct as a compute pass that packs each 8x8 tile's searching pixels onto adjacent invocations "
-            "instead of a full-screen pass (the same image; where the target's format takes no image stores, the "
-            "full-screen pass with a warning)"),
-      onOff("temporal_filter", &Config::temporalFilter,
-            "temporal accumulation on top of another method (resolve+temporal, reconstruct+temporal): the host "
-            "jitters its projection by Plugin::jitter()"),
-      number("temporal_blend", &Config::temporalBlend, 0.02f, 1,
-             "temporal: the current frame's weight in the history; smaller is smoother and converges over more "
-             "frames (about 2/weight), ghosting longer; 1 keeps no history; free per frame"),
-      integer("temporal_jitter_length", &Config::temporalJitterLength, 1, 64,
-              "temporal: frames in the Halton (2, 3) jitter sequence, the sub-pixel positions a still pixel is "
-              "sampled at; 1 is no jitter; resets the history"),
-      number("temporal_lod_bias", &Config::temporalLodBias, -3, 0,
-             "temporal: the mip bias the host adds to its material samplers (Plugin::textureLodBias): sharper mips "
-             "whose detail the history averages over the jitter; FSR 2 advises -1 at native resolution"),
-      onOff("temporal_before_tonemap", &Config::temporalBeforeTonemap,
-            "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather "
-            "than on the display (where the layout has no single float light target, after tonemapping with a "
-            "warning); resets the history"),
+             "reallocates"));
+  for (const TechniqueRow& row : techniqueRegistry())
+    if (row.keys)
+      for (Key& key : row.keys()) keys.push_back(std::move(key));
+  keys.push_back(
       onOff("restore_gbuffer_after_shade", &Config::restoreGBufferAfterShade,
             "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "
-            "surface, not the last slice; off saves one resolve pass"),
-      presetKey(),
+            "surface, not the last slice; off saves one resolve pass"));
+  keys.push_back(presetKey());
+  keys.push_back(
       number("budget_ms", &Config::budgetMs, 0, 1000,
              "GPU budget of the plugin's passes; adaptive (and edge/depth) adjust their refinement frame to frame "
-             "to keep it; 0 is off"),
-      onOff("fxaa", &Config::fxaa, "FXAA after tonemapping, stacked on the method"),
-      named("fxaa_quality", &Config::fxaaQuality, kFxaaQualities,
-            "FXAA edge search length (3, 6, 12 steps); cost grows with it"),
-      number("fxaa_edge_threshold", &Config::fxaaEdgeThreshold, 0.063f, 0.333f,
-             "FXAA local contrast needed to filter; lower softens more"),
-      onOff("smaa", &Config::smaa, "SMAA 1x after tonemapping, stacked on the method (before +fxaa)"),
-      named("smaa_quality", &Config::smaaQuality, kSmaaQualities,
-            "SMAA preset: threshold 0.15/0.1/0.1/0.05, search 8/16/32/64 px each way, diagonals and corner "
-            "rounding from high on; cost grows with it (FreeSpace Open's -aa_preset 3..6)"),
-      named("smaa_edge_detection", &Config::smaaEdgeDetection, kSmaaEdgeDetections,
-            "what SMAA finds edges in: luma contrast, per-channel contrast (chroma edges too), or view-depth steps "
-            "(geometry only: keeps texture detail, misses shading edges)"),
-      folder("shader_override_dir", &Config::shaderOverrideDirectory,
-             "files there replace built-in shaders of the same path; compile errors fall back"),
+             "to keep it; 0 is off"));
+  keys.push_back(folder("shader_override_dir", &Config::shaderOverrideDirectory,
+                        "files there replace built-in shaders of the same path; compile errors fall back"));
+  keys.push_back(
       onOff("measure_gpu_time", &Config::measureGpuTime,
             "timer and fragment-invocation queries per plugin pass, read back frames later (stats() never waits; "
-            "waitForStats() does)"),
-  };
+            "waitForStats() does)"));
   const Config defaults;
   for (Key& key : keys) {  // the strings now have their final homes
     key.defaultText = key.print(defaults);

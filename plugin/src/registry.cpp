@@ -17,6 +17,17 @@ Result<std::unique_ptr<Technique>> createSmaaTechnique(PluginContext&, SharedTar
 Result<std::unique_ptr<Technique>> createSmaaS2xTechnique(PluginContext&, SharedTargets&);
 Result<std::unique_ptr<Technique>> createTemporalTechnique(PluginContext&, SharedTargets&);
 
+// Each technique's config keys, declared in its file.
+std::vector<Key> resolveKeys();
+std::vector<Key> edgeKeys();
+std::vector<Key> adaptiveKeys();
+std::vector<Key> aggregateKeys();
+std::vector<Key> coverageKeys();
+std::vector<Key> reconstructKeys();
+std::vector<Key> temporalKeys();
+std::vector<Key> fxaaKeys();
+std::vector<Key> smaaKeys();
+
 namespace {
 
 constexpr uint32_t kSliced = kStorageMsaaGBuffer | kStorageSlices;
@@ -28,21 +39,25 @@ std::vector<TechniqueRow>& rows() {
       Row::named(Method::Fxaa, "fxaa", "FXAA 3.11 after tonemapping (FreeSpace Open's -aa_preset 0..2)")
           .uses(kStoragePostTarget)
           .createdBy(createFxaaTechnique)
+          .configuredBy(fxaaKeys)
           .stacks(
               "fxaa", [](const Config& c) { return c.fxaa; }, kStoragePostTarget)
           .postPassLast(),
       Row::named(Method::Smaa, "smaa", "SMAA 1x after tonemapping (FreeSpace Open's -post_process_aa, -aa_preset 3..6)")
           .uses(kStoragePostTarget)
           .createdBy(createSmaaTechnique)
+          .configuredBy(smaaKeys)
           .stacks(
               "smaa", [](const Config& c) { return c.smaa; }, kStoragePostTarget),
       Row::named(Method::Resolve, "resolve", "MSAA G-buffer and a depth-aware resolve into the host's G-buffer")
           .needsMultisampling()
-          .uses(kStorageMsaaGBuffer),
+          .uses(kStorageMsaaGBuffer)
+          .configuredBy(resolveKeys),
       Row::named(Method::Coverage, "coverage", "depth-only MSAA prepass and a coverage filter after tonemapping")
           .needsMultisampling(2)
           .uses(kStoragePostTarget)
           .createdBy(createCoverageTechnique)
+          .configuredBy(coverageKeys)
           .stacks(
               "coverage_filter", [](const Config& c) { return c.coverageFilter && usesMsaa(c.method); },
               kStoragePostTarget),
@@ -51,6 +66,7 @@ std::vector<TechniqueRow>& rows() {
           .needsMultisampling(2)
           .uses(kStoragePostTarget)
           .createdBy(createReconstructTechnique)
+          .configuredBy(reconstructKeys)
           .stacks(
               "reconstruct_filter", [](const Config& c) { return c.reconstructFilter && usesMsaa(c.method); },
               kStoragePostTarget),
@@ -58,20 +74,24 @@ std::vector<TechniqueRow>& rows() {
                  "jittered projection; each frame blended into a reprojected, neighbourhood-clipped history")
           .uses(kStoragePostTarget)
           .createdBy(createTemporalTechnique)
+          .configuredBy(temporalKeys)
           .stacks(
               "temporal_filter", [](const Config& c) { return c.temporalFilter; }, kStoragePostTarget),
       Row::named(Method::Edge, "edge", "edge pixels (a detector decides) lit once per sample through slices")
           .needsMultisampling()
           .uses(kSliced)
-          .createdBy(createEdgeTechnique),
+          .createdBy(createEdgeTechnique)
+          .configuredBy(edgeKeys),
       Row::named(Method::Adaptive, "adaptive", "Holländer's metrics choose k samples per pixel, lit through slices")
           .needsMultisampling()
           .uses(kSliced)
-          .createdBy(createAdaptiveTechnique),
+          .createdBy(createAdaptiveTechnique)
+          .configuredBy(adaptiveKeys),
       Row::named(Method::Aggregate, "aggregate", "AGAA's clustering: at most c aggregates per pixel, each lit once")
           .needsMultisampling()
           .uses(kSliced)
-          .createdBy(createAggregateTechnique),
+          .createdBy(createAggregateTechnique)
+          .configuredBy(aggregateKeys),
       Row::named(Method::SmaaS2x, "smaa-s2x",
                  "SMAA S2x: SMAA 1x on two single-sample slices of the MSAA G-buffer, each lit by the host, blended "
                  "50/50")

@@ -8,7 +8,7 @@
 namespace retroaa {
 
 // Texture units with a fixed meaning across passes. G-buffer attachment i is bound to unit i (≤ 8).
-constexpr int kUnitSliceCounts = 13;   // the slice counts, for the depth writes of the slices (DepthSource::DepthBuffer)
+constexpr int kUnitSliceCounts = 13;  // the slice counts, for the depth writes of the slices (DepthSource::DepthBuffer)
 constexpr int kUnitSliceWeights = 14;  // a technique's per-pixel input to the slice composite
 constexpr int kUnitDepthStencil = 15;  // the MSAA G-buffer's depth-stencil
 constexpr int kMaxAttachments = 8;     // host G-buffer attachments (units 0..7; a layout may have no more)

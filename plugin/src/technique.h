@@ -4,6 +4,7 @@
 // the active rows ask for, and calls every active technique at the points below.
 #pragma once
 
+#include "config_keys.h"
 #include "pipeline/pipeline.h"
 
 #include <memory>
@@ -113,7 +114,8 @@ struct TechniqueRow {
   // +coverage), needing `stackedStorage` then.
   bool (*stackedOn)(const Config&) = nullptr;
   uint32_t stackedStorage = kStorageNone;
-  bool postLast = false;  // its post pass runs after every other active technique's
+  bool postLast = false;                 // its post pass runs after every other active technique's
+  std::vector<Key> (*keys)() = nullptr;  // its config keys, declared beside it (config_keys.h)
 
   static TechniqueRow named(Method method, const char* name, const char* summary) {
     TechniqueRow row{};
@@ -132,6 +134,7 @@ struct TechniqueRow {
     return *this;
   }
   TechniqueRow& postPassLast() { return postLast = true, *this; }
+  TechniqueRow& configuredBy(std::vector<Key> (*techniqueKeys)()) { return keys = techniqueKeys, *this; }
 };
 
 // `temporal`'s jitter for frame `frame` of its sequence (1: the first after the sequence began) of a

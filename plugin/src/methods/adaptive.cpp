@@ -3,6 +3,7 @@
 #include <limits>
 #include <string>
 
+#include "../config_keys.h"
 #include "../shared_constants.h"
 #include "../technique.h"
 
@@ -152,6 +153,27 @@ class AdaptiveTechnique : public Technique {
 
 Result<std::unique_ptr<Technique>> createAdaptiveTechnique(PluginContext& context, SharedTargets& shared) {
   return AdaptiveTechnique::create(context, shared);
+}
+
+// The config keys of `adaptive` (its registry row lists them: registry.cpp).
+std::vector<Key> adaptiveKeys() {
+  return {
+      number("adaptive_depth_scale", &Config::adaptiveDepthScale, 0, 1000,
+             "adaptive: k_d per unit of depth variance (in pixel footprints²); larger refines more"),
+      number("adaptive_normal_scale", &Config::adaptiveNormalScale, 0, 1000,
+             "adaptive: k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"),
+      number("adaptive_shading_scale", &Config::adaptiveShadingScale, 0, 1000,
+             "adaptive: k_s = scale * N * luma range of the first lit sample; larger refines more"),
+      number("adaptive_texture_scale", &Config::adaptiveTextureScale, 0, 1000,
+             "adaptive: k_t = scale * N * luma range of the first lit sample scaled by the albedo over the pixel "
+             "(texture detail inside it); larger refines more"),
+      number("adaptive_threshold_min", &Config::adaptiveThresholdMin, 0, 1,
+             "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"),
+      number("adaptive_threshold_edge", &Config::adaptiveThresholdEdge, 0, 1,
+             "adaptive: luma ranges below this fraction of the local maximum never refine"),
+      integer("adaptive_min_samples", &Config::adaptiveMinSamples, 1, 16,
+              "adaptive: floor of the per-pixel sample count; N lights every sample"),
+  };
 }
 
 }  // namespace retroaa

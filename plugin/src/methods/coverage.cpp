@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "../config_keys.h"
 #include "../shared_constants.h"
 #include "../technique.h"
 
@@ -54,6 +55,16 @@ class CoverageTechnique : public SampleGeometryTechnique {
 
 Result<std::unique_ptr<Technique>> createCoverageTechnique(PluginContext& context, SharedTargets& shared) {
   return CoverageTechnique::create(context, shared);
+}
+
+// The config keys of `coverage` and `+coverage` (its registry row lists them: registry.cpp).
+std::vector<Key> coverageKeys() {
+  return {
+      onOff("coverage_filter", &Config::coverageFilter,
+            "the coverage filter on top of resolve (reuses its MSAA depth; no prepass)"),
+      number("coverage_tolerance", &Config::coverageTolerance, 0, 100,
+             "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"),
+  };
 }
 
 }  // namespace retroaa

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "../config_keys.h"
 #include "../shared_constants.h"
 #include "../technique.h"
 
@@ -69,6 +70,18 @@ class EdgeTechnique : public Technique {
 
 Result<std::unique_ptr<Technique>> createEdgeTechnique(PluginContext& context, SharedTargets& shared) {
   return EdgeTechnique::create(context, shared);
+}
+
+// The config keys of `edge` (its registry row lists them: registry.cpp).
+std::vector<Key> edgeKeys() {
+  return {
+      named("edge_detector", &Config::edgeDetector, kEdgeDetectors,
+            "how `edge` finds pixels to light per sample; free per frame"),
+      number("edge_depth_closeness", &Config::edgeDepthCloseness, 0, 100,
+             "c of the depth detector; smaller marks more pixels (slower, closer to per-sample)"),
+      number("edge_normal_angle_deg", &Config::edgeNormalAngleDegrees, 0, 180,
+             "angle of the normal detector; smaller marks more pixels"),
+  };
 }
 
 }  // namespace retroaa

@@ -2,6 +2,7 @@
 // method, or stacked after any other (`fxaa=on`).
 #include <string>
 
+#include "../config_keys.h"
 #include "../shared_constants.h"
 #include "../technique.h"
 
@@ -57,6 +58,17 @@ class FxaaTechnique : public Technique {
 
 Result<std::unique_ptr<Technique>> createFxaaTechnique(PluginContext& context, SharedTargets& shared) {
   return FxaaTechnique::create(context, shared);
+}
+
+// The config keys of `fxaa` and `+fxaa` (its registry row lists them: registry.cpp).
+std::vector<Key> fxaaKeys() {
+  return {
+      onOff("fxaa", &Config::fxaa, "FXAA after tonemapping, stacked on the method"),
+      named("fxaa_quality", &Config::fxaaQuality, kFxaaQualities,
+            "FXAA edge search length (3, 6, 12 steps); cost grows with it"),
+      number("fxaa_edge_threshold", &Config::fxaaEdgeThreshold, 0.063f, 0.333f,
+             "FXAA local contrast needed to filter; lower softens more"),
+  };
 }
 
 }  // namespace retroaa

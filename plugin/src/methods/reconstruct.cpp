@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <string>
 
+#include "../config_keys.h"
 #include "../shared_constants.h"
 #include "../technique.h"
 
@@ -126,6 +127,25 @@ class ReconstructTechnique : public SampleGeometryTechnique {
 
 Result<std::unique_ptr<Technique>> createReconstructTechnique(PluginContext& context, SharedTargets& shared) {
   return ReconstructTechnique::create(context, shared);
+}
+
+// The config keys of `reconstruct` and `+reconstruct` (its registry row lists them: registry.cpp).
+std::vector<Key> reconstructKeys() {
+  return {
+      onOff("reconstruct_filter", &Config::reconstructFilter,
+            "sub-pixel reconstruction on top of resolve (reuses its MSAA depth and normals; no prepass)"),
+      number("reconstruct_tolerance", &Config::reconstructTolerance, 0, 100,
+             "reconstruct: c of the depth test that ties a sub-sample to a shaded pixel"),
+      integer("reconstruct_search_radius", &Config::reconstructSearchRadius, 1, 8,
+              "reconstruct: how many rings of pixels a sub-sample searches for its surface when no neighbour holds "
+              "it (sub-pixel wires: a pixel centre on the same wire lies a few pixels along it)"),
+      onOff("reconstruct_before_tonemap", &Config::reconstructBeforeTonemap,
+            "reconstruct on the HDR light target before tonemapping (+8 B/px) instead of on the display"),
+      onOff("reconstruct_compute", &Config::reconstructCompute,
+            "reconstruct as a compute pass that packs each 8x8 tile's searching pixels onto adjacent invocations "
+            "instead of a full-screen pass (the same image; where the target's format takes no image stores, the "
+            "full-screen pass with a warning)"),
+  };
 }
 
 }  // namespace retroaa

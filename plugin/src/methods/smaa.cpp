@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "../config_keys.h"
 #include "../shared_constants.h"
 #include "../technique.h"
 
@@ -297,6 +298,19 @@ Result<std::unique_ptr<Technique>> createSmaaTechnique(PluginContext& context, S
 }
 Result<std::unique_ptr<Technique>> createSmaaS2xTechnique(PluginContext& context, SharedTargets& shared) {
   return SmaaS2xTechnique::create(context, shared);
+}
+
+// The config keys of `smaa`, `+smaa` and `smaa-s2x` (its registry row lists them: registry.cpp).
+std::vector<Key> smaaKeys() {
+  return {
+      onOff("smaa", &Config::smaa, "SMAA 1x after tonemapping, stacked on the method (before +fxaa)"),
+      named("smaa_quality", &Config::smaaQuality, kSmaaQualities,
+            "SMAA preset: threshold 0.15/0.1/0.1/0.05, search 8/16/32/64 px each way, diagonals and corner "
+            "rounding from high on; cost grows with it (FreeSpace Open's -aa_preset 3..6)"),
+      named("smaa_edge_detection", &Config::smaaEdgeDetection, kSmaaEdgeDetections,
+            "what SMAA finds edges in: luma contrast, per-channel contrast (chroma edges too), or view-depth steps "
+            "(geometry only: keeps texture detail, misses shading edges)"),
+  };
 }
 
 }  // namespace retroaa

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "../config_keys.h"
 #include "../shared_constants.h"
 #include "../technique.h"
 
@@ -260,6 +261,28 @@ bool runsTemporal(const Config& config) { return config.method == Method::Tempor
 
 Result<std::unique_ptr<Technique>> createTemporalTechnique(PluginContext& context, SharedTargets& shared) {
   return TemporalTechnique::create(context, shared);
+}
+
+// The config keys of `temporal` and `+temporal` (its registry row lists them: registry.cpp).
+std::vector<Key> temporalKeys() {
+  return {
+      onOff("temporal_filter", &Config::temporalFilter,
+            "temporal accumulation on top of another method (resolve+temporal, reconstruct+temporal): the host "
+            "jitters its projection by Plugin::jitter()"),
+      number("temporal_blend", &Config::temporalBlend, 0.02f, 1,
+             "temporal: the current frame's weight in the history; smaller is smoother and converges over more "
+             "frames (about 2/weight), ghosting longer; 1 keeps no history; free per frame"),
+      integer("temporal_jitter_length", &Config::temporalJitterLength, 1, 64,
+              "temporal: frames in the Halton (2, 3) jitter sequence, the sub-pixel positions a still pixel is "
+              "sampled at; 1 is no jitter; resets the history"),
+      number("temporal_lod_bias", &Config::temporalLodBias, -3, 0,
+             "temporal: the mip bias the host adds to its material samplers (Plugin::textureLodBias): sharper mips "
+             "whose detail the history averages over the jitter; FSR 2 advises -1 at native resolution"),
+      onOff("temporal_before_tonemap", &Config::temporalBeforeTonemap,
+            "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather "
+            "than on the display (where the layout has no single float light target, after tonemapping with a "
+            "warning); resets the history"),
+  };
 }
 
 }  // namespace retroaa

@@ -4,6 +4,7 @@
 #include <initializer_list>
 #include <string>
 
+#include "../config_keys.h"
 #include "pipeline.h"
 
 namespace retroaa {
@@ -217,6 +218,20 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
   }
   drawResolve(context, restoreProgram_, source, frame);
   return Status::ok();
+}
+
+// The config keys of every MSAA G-buffer method's resolve (its registry row lists them: registry.cpp).
+std::vector<Key> resolveKeys() {
+  return {
+      named("resolve_weighting", &Config::resolveWeighting, kWeightings,
+            "how resolve weights a pixel's samples; free per frame"),
+      onOff("resolve_compute", &Config::resolveCompute,
+            "the resolve as a compute pass, the depth through a one-fetch full-screen pass (the same G-buffer; for "
+            "GPUs whose pixel shaders run on a small partition; where an attachment's format takes no image stores, "
+            "the full-screen pass with a warning)"),
+      number("closeness", &Config::closeness, 0, 100,
+             "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"),
+  };
 }
 
 }  // namespace retroaa
