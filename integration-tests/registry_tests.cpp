@@ -342,6 +342,33 @@ TEST(PluginErrors, AnInconsistentLayoutIsInvalid) {
   expectError(created.error(), retroaa::ErrorCode::InvalidLayout, "ViewPosition");
 }
 
+// A layout without a display target: every method the registry says filters the display is refused
+// naming it, every other method runs; a stacked filter is refused on any method.
+TEST(PluginErrors, AMethodThatFiltersTheDisplayNeedsADisplayTarget) {
+  PatchedHost host("default", 32, 24);
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  description.layout.displayFramebuffer = description.layout.displayTexture = 0;
+  int filtering = 0;
+  for (const retroaa::MethodInfo& row : retroaa::methodTable()) {
+    if (row.method == kTestMethod) continue;
+    description.config = app::parseMethodSpec(row.name, {}).config;
+    auto created = retroaa::Plugin::create(description);
+    if (row.filtersDisplay) {
+      ++filtering;
+      ASSERT_FALSE(created) << row.name;
+      expectError(created.error(), retroaa::ErrorCode::InvalidLayout, std::string("method '") + row.name + "'");
+    } else {
+      EXPECT_TRUE(created) << row.name << ": " << (created ? "" : created.error().message);
+    }
+  }
+  EXPECT_GE(filtering, 5);  // fxaa, smaa, coverage, reconstruct, temporal at least
+  description.config = app::parseMethodSpec("resolve+fxaa", {}).config;
+  auto stacked = retroaa::Plugin::create(description);
+  ASSERT_FALSE(stacked);
+  expectError(stacked.error(), retroaa::ErrorCode::InvalidLayout, "method 'resolve' (or a filter stacked on it)");
+}
+
 TEST(PluginErrors, DepthEncodingsOutsideTheirDomainAreInvalid) {
   PatchedHost host("default", 32, 24);
   retroaa::Description description;

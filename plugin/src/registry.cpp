@@ -131,7 +131,10 @@ const std::vector<MethodInfo>& methodTable() {
   static std::vector<MethodInfo> infos;
   if (infos.size() != rows().size()) {
     infos.clear();
-    for (const TechniqueRow& row : rows()) infos.push_back(row.info);
+    for (const TechniqueRow& row : rows()) {
+      infos.push_back(row.info);
+      infos.back().filtersDisplay = row.storage & kStoragePostTarget;
+    }
   }
   return infos;
 }

@@ -207,10 +207,11 @@ RETROAA_API const std::vector<ConfigKey>& configKeys();
 // `retroaa config` and the tools read their method lists from here.
 struct MethodInfo {
   Method method = Method::Off;
-  const char* name = "";      // as config files, the command line and reports spell it
-  const char* summary = "";   // what it does, in one line
-  bool multisampled = false;  // needs GL_MAX_SAMPLES >= 2; falls back to fxaa (with a warning) without
-  int minSamples = 1;         // fewer samples are raised to this, with a warning
+  const char* name = "";        // as config files, the command line and reports spell it
+  const char* summary = "";     // what it does, in one line
+  bool multisampled = false;    // needs GL_MAX_SAMPLES >= 2; falls back to fxaa (with a warning) without
+  int minSamples = 1;           // fewer samples are raised to this, with a warning
+  bool filtersDisplay = false;  // its post pass filters the host's display: the layout needs a display target
   // The on/off key that stacks this method's post pass on another method (`resolve+NAME` in specs);
   // empty where it does not stack.
   const char* stackKey = "";

@@ -7,8 +7,8 @@
 //   resolve(frame)          ──► MSAA → host's single-sample G-buffer (or slices)
 //   shade(lighting)         ──► host lighting pass (unchanged shaders), once per slice
 //   host tonemap
-//   post()                  ──► the post filters on the host's display target (the method's own, e.g.
-//                               fxaa, smaa, coverage, reconstruct, then the stacked +filters)
+//   post()                  ──► the post filters on the host's display target (the method's own, then
+//                               the stacked +filters; which methods have one: methodTable())
 //
 // Rules: a current GL 4.5 core context on the calling thread; every call restores the GL state it
 // changed (bindings, viewport, blend, depth, stencil, program, ...), so a host with a GL state cache

@@ -124,8 +124,9 @@ struct GBufferLayout {
   // lighting writes several outputs (SuperTuxKart: diffuse at 0, specular at 1). Each is lit and
   // composited as lightTexture is; each must hold floats (e.g. R11F_G11F_B10F), and lightTexture too.
   std::vector<GLuintHandle> extraLightTextures;
-  // The tonemapped display that post() filters (RGBA8 or GL_SRGB8_ALPHA8); needed only by the post
-  // methods (fxaa, smaa, coverage, reconstruct, and any stacked +filter): 0 elsewhere.
+  // The tonemapped display that post() filters (RGBA8 or GL_SRGB8_ALPHA8); needed only by the methods
+  // whose MethodInfo::filtersDisplay says so and by every stacked +filter (0 elsewhere: a config that
+  // needs it without one is refused with InvalidLayout naming the method).
   GLuintHandle displayFramebuffer = 0, displayTexture = 0;
 };
 

@@ -8,8 +8,9 @@ Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
   const GBufferLayout& layout = context.layout;
   if (!layout.displayFramebuffer)
     return Error{ErrorCode::InvalidLayout,
-                 "the post methods (fxaa, smaa, coverage) filter the host's display: the layout names no "
-                 "displayFramebuffer and displayTexture"};
+                 std::string("method '") + toString(context.config.method) +
+                     "' (or a filter stacked on it) filters the host's display after tonemapping: the layout names "
+                     "no displayFramebuffer and displayTexture"};
   GLint displayFormat = GL_RGBA8;
   glGetTextureLevelParameteriv(layout.displayTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &displayFormat);
   const bool srgb = displayFormat == GL_SRGB8_ALPHA8;
