@@ -157,6 +157,16 @@ class SliceRenderer {
   uint64_t bytes() const { return bytes_; }
 
  private:
+  // shade()'s steps for one slice: write its samples into the host's G-buffer (returns the occlusion
+  // query counting its pixels; 0 for slice 0), run the host's lighting, composite its weighted light;
+  // then, once every slice is in, the half-float sum into the host's light target.
+  Status createTargets(PluginContext& context);  // create()'s framebuffers (and the half-float sum's pass)
+  Status createPrograms(PluginContext& context, const MsaaGBuffer& source);
+  GLuint writeSlice(PluginContext& context, const MsaaGBuffer& source, const Plan& plan, int slice);
+  void lightSlice(PluginContext& context, const LightingFunction& lighting, int slice);
+  Status compositeSlice(PluginContext& context, const Plan& plan, int slice);
+  void presentAccumulation(PluginContext& context);
+
   GlTexture light_, mask_, counts_;
   GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
   // The layout's extraLightTextures: each slice's light for them (lightTarget_'s attachments 1, 2, …)

@@ -26,26 +26,35 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
   slices->mask_ = makeTexture(context, GL_DEPTH24_STENCIL8, w, h, 0, "slices.mask", slices->bytes_);
   slices->counts_ = makeTexture(context, GL_R8UI, w, h, 0, "slices.counts", slices->bytes_);
 
-  slices->maskTarget_ = makeFramebuffer(context, "slices.mask");
-  glNamedFramebufferTexture(slices->maskTarget_.get(), GL_COLOR_ATTACHMENT0, slices->counts_.get(), 0);
-  glNamedFramebufferTexture(slices->maskTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
-  slices->lightTarget_ = makeFramebuffer(context, "slices.light");
-  glNamedFramebufferTexture(slices->lightTarget_.get(), GL_COLOR_ATTACHMENT0, slices->light_.get(), 0);
-  glNamedFramebufferTexture(slices->lightTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
+  if (Status status = slices->createTargets(context); !status) return status.error();
+  if (Status status = slices->createPrograms(context, source); !status) return status.error();
+  return slices;
+}
+
+// The framebuffers over the mask, the light and the host's targets; the half-float sum where needed.
+Status SliceRenderer::createTargets(PluginContext& context) {
+  const GBufferLayout& layout = context.layout;
+  const int w = layout.width, h = layout.height;
+  maskTarget_ = makeFramebuffer(context, "slices.mask");
+  glNamedFramebufferTexture(maskTarget_.get(), GL_COLOR_ATTACHMENT0, counts_.get(), 0);
+  glNamedFramebufferTexture(maskTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
+  lightTarget_ = makeFramebuffer(context, "slices.light");
+  glNamedFramebufferTexture(lightTarget_.get(), GL_COLOR_ATTACHMENT0, light_.get(), 0);
+  glNamedFramebufferTexture(lightTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
   if (!layout.extraLightTextures.empty()) {
     std::vector<GLenum> lightBuffers{GL_COLOR_ATTACHMENT0};
     for (size_t k = 0; k < layout.extraLightTextures.size(); ++k) {
       const std::string label = "slices.extra_light" + std::to_string(k + 1);
-      slices->extraLight_.push_back(makeTexture(context, GL_RGBA16F, w, h, 0, label.c_str(), slices->bytes_));
+      extraLight_.push_back(makeTexture(context, GL_RGBA16F, w, h, 0, label.c_str(), bytes_));
       lightBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT1 + k));
-      glNamedFramebufferTexture(slices->lightTarget_.get(), lightBuffers.back(), slices->extraLight_.back().get(), 0);
+      glNamedFramebufferTexture(lightTarget_.get(), lightBuffers.back(), extraLight_.back().get(), 0);
       GlFramebuffer composite = makeFramebuffer(context, label.c_str());
       glNamedFramebufferTexture(composite.get(), GL_COLOR_ATTACHMENT0, layout.extraLightTextures[k], 0);
-      glNamedFramebufferTexture(composite.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
-      if (Status status = checkFramebuffer(composite.get(), label.c_str()); !status) return status.error();
-      slices->extraCompositeTarget_.push_back(std::move(composite));
+      glNamedFramebufferTexture(composite.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
+      if (Status status = checkFramebuffer(composite.get(), label.c_str()); !status) return status;
+      extraCompositeTarget_.push_back(std::move(composite));
     }
-    glNamedFramebufferDrawBuffers(slices->lightTarget_.get(), GLsizei(lightBuffers.size()), lightBuffers.data());
+    glNamedFramebufferDrawBuffers(lightTarget_.get(), GLsizei(lightBuffers.size()), lightBuffers.data());
   }
   // Slices composite into the host's light texture where it holds floats; into a half-float sum of the
   // plugin's otherwise, or where the host names no light texture (it lights into a framebuffer, the
@@ -53,64 +62,67 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
   GLint redType = GL_FLOAT;
   if (layout.lightTexture) glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
   if (redType != GL_FLOAT || !layout.lightTexture) {
-    slices->accumulation_ = makeTexture(context, GL_RGBA16F, w, h, 0, "slices.accumulation", slices->bytes_);
+    accumulation_ = makeTexture(context, GL_RGBA16F, w, h, 0, "slices.accumulation", bytes_);
     if (layout.lightTexture) {
-      slices->presentTarget_ = makeFramebuffer(context, "slices.present");
-      glNamedFramebufferTexture(slices->presentTarget_.get(), GL_COLOR_ATTACHMENT0, layout.lightTexture, 0);
-      if (Status status = checkFramebuffer(slices->presentTarget_.get(), "slices.present"); !status)
-        return status.error();
+      presentTarget_ = makeFramebuffer(context, "slices.present");
+      glNamedFramebufferTexture(presentTarget_.get(), GL_COLOR_ATTACHMENT0, layout.lightTexture, 0);
+      if (Status status = checkFramebuffer(presentTarget_.get(), "slices.present"); !status) return status;
     }
     auto present =
         context.shaders->program("common/fullscreen.vert", "slices/present_light.frag", "", {"uAccumulated"});
     if (!present) return present.error();
-    slices->presentLight_ = std::move(present.value());
+    presentLight_ = std::move(present.value());
   }
-  slices->compositeTarget_ = makeFramebuffer(context, "slices.composite");
-  glNamedFramebufferTexture(slices->compositeTarget_.get(), GL_COLOR_ATTACHMENT0,
-                            slices->accumulation_ ? slices->accumulation_.get() : layout.lightTexture, 0);
-  glNamedFramebufferTexture(slices->compositeTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
-  slices->sliceWriter_ = makeFramebuffer(context, "slices.writer");
+  compositeTarget_ = makeFramebuffer(context, "slices.composite");
+  glNamedFramebufferTexture(compositeTarget_.get(), GL_COLOR_ATTACHMENT0,
+                            accumulation_ ? accumulation_.get() : layout.lightTexture, 0);
+  glNamedFramebufferTexture(compositeTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
+  sliceWriter_ = makeFramebuffer(context, "slices.writer");
   std::vector<GLenum> drawBuffers;
   for (size_t i = 0; i < layout.attachments.size(); ++i) {
-    glNamedFramebufferTexture(slices->sliceWriter_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i),
-                              layout.attachments[i].texture, 0);
+    glNamedFramebufferTexture(sliceWriter_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i), layout.attachments[i].texture, 0);
     drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
   }
-  glNamedFramebufferDrawBuffers(slices->sliceWriter_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
-  glNamedFramebufferTexture(slices->sliceWriter_.get(), GL_DEPTH_STENCIL_ATTACHMENT, slices->mask_.get(), 0);
-  for (const auto& [fbo, label] : {std::pair{slices->maskTarget_.get(), "slices.mask"},
-                                   {slices->lightTarget_.get(), "slices.light"},
-                                   {slices->compositeTarget_.get(), "slices.composite"},
-                                   {slices->sliceWriter_.get(), "slices.writer"}})
-    if (Status status = checkFramebuffer(fbo, label); !status) return status.error();
+  glNamedFramebufferDrawBuffers(sliceWriter_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
+  glNamedFramebufferTexture(sliceWriter_.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
+  for (const auto& [fbo, label] : {std::pair{maskTarget_.get(), "slices.mask"},
+                                   {lightTarget_.get(), "slices.light"},
+                                   {compositeTarget_.get(), "slices.composite"},
+                                   {sliceWriter_.get(), "slices.writer"}})
+    if (Status status = checkFramebuffer(fbo, label); !status) return status;
   // A host that rebuilds positions from its depth buffer needs each slice's depth there too: a second
   // write into its depth texture alone (the writer's own depth-stencil is the count mask).
   if (layout.depthSource == DepthSource::DepthBuffer || layout.lightingReadsDepth) {
-    slices->depthWriter_ = makeFramebuffer(context, "slices.depth_writer");
-    glNamedFramebufferTexture(slices->depthWriter_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
-    glNamedFramebufferDrawBuffer(slices->depthWriter_.get(), GL_NONE);
-    if (Status status = checkFramebuffer(slices->depthWriter_.get(), "slices.depth_writer"); !status)
-      return status.error();
+    depthWriter_ = makeFramebuffer(context, "slices.depth_writer");
+    glNamedFramebufferTexture(depthWriter_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
+    glNamedFramebufferDrawBuffer(depthWriter_.get(), GL_NONE);
+    if (Status status = checkFramebuffer(depthWriter_.get(), "slices.depth_writer"); !status) return status;
   }
 
+  return Status::ok();
+}
+
+// The slice writers (and their depth-writing variants), the composite and the bitwise mask pass.
+Status SliceRenderer::createPrograms(PluginContext& context, const MsaaGBuffer& source) {
+  const GBufferLayout& layout = context.layout;
   for (const bool depth : {false, true}) {
-    if (depth && !slices->writesHostDepth()) continue;
+    if (depth && !writesHostDepth()) continue;
     auto writeSlice =
         context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag",
                                  depth ? depthWriteDefines(source, layout) : source.shaderDefines(layout),
                                  {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSample"});
     if (!writeSlice) return writeSlice.error();
-    (depth ? slices->writeSliceDepth_ : slices->writeSlice_) = std::move(writeSlice.value());
+    (depth ? writeSliceDepth_ : writeSlice_) = std::move(writeSlice.value());
   }
   auto composite =
       context.shaders->program("common/fullscreen.vert", "slices/composite.frag", "", {"uSliceLight", "uSliceCounts"});
   if (!composite) return composite.error();
-  slices->composite_ = std::move(composite.value());
+  composite_ = std::move(composite.value());
   auto mark =
       context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit", "uSliceCounts"});
   if (!mark) return mark.error();
-  slices->markPixels_ = std::move(mark.value());
-  return slices;
+  markPixels_ = std::move(mark.value());
+  return Status::ok();
 }
 
 Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport, GLuint target) {
@@ -141,134 +153,141 @@ Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool
   return Status::ok();
 }
 
+namespace {
+
+// Stencil for slice s: count > s; slice 0 covers every pixel.
+void sliceStencil(int slice) {
+  if (slice == 0)
+    glDisable(GL_STENCIL_TEST);
+  else
+    stencilPassWhereCountAbove(slice);
+}
+
+}  // namespace
+
 Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting,
                             const Plan& plan) {
-  const GBufferLayout& layout = context.layout;
   const int sliceCount = plan.sliceCount > 0 ? plan.sliceCount : maxCount_;
   context.frameStats.slices = sliceCount;
   lastWriteEverywhere_ = plan.firstSliceEverywhere;
-  auto sampleOf = [&](int slice) { return plan.sampleOrder.empty() ? slice : plan.sampleOrder[slice]; };
-  // Stencil for slice s: count > s; slice 0 covers every pixel (or, when it keeps the resolved
-  // G-buffer of single-count pixels, writes only where count > 1).
-  auto sliceStencil = [](int slice) {
-    if (slice == 0)
-      glDisable(GL_STENCIL_TEST);
-    else
-      stencilPassWhereCountAbove(slice);
-  };
   for (int slice = 0; slice < sliceCount; ++slice) {
-    GLuint slicePixels = 0;  // the write's occlusion query: how many pixels this slice lights
-    {
-      ScopedPass timed(context, "slices.write");
-      context.beginFullscreenPass(sliceWriter_.get());
-      if (slice == 0 && !plan.firstSliceEverywhere)
-        stencilPassWhereCountAbove(1);
-      else
-        sliceStencil(slice);
-      auto useWriter = [&](const ShaderProgram* own, const ShaderProgram& stock) {
-        const ShaderProgram& program = plan.writeProgram ? *own : stock;
-        program.use();
-        source.bind(layout);
-        if (plan.writeProgram) {
-          if (plan.bindWriteInputs) plan.bindWriteInputs(program);
-          program.set("uSlice", slice);
-        } else {
-          program.setDepthEncoding(context);
-          program.set("uSample", sampleOf(slice));
-        }
-        return &program;
-      };
-      useWriter(plan.writeProgram, writeSlice_);
-      // The write passes exactly where this slice's lighting will run (slice 0 lights every pixel):
-      // its occlusion query counts the slice's evaluations, without a pass of its own.
-      const bool countOnGpu = slice > 0;
-      if (countOnGpu) slicePixels = context.statistics->beginEvaluationCount();
-      context.drawFullscreen();
-      if (countOnGpu)
-        context.statistics->endEvaluationCount();
-      else
-        context.statistics->addEvaluations(context.pixelCount());
-      if (writesHostDepth()) {  // the same pixels' depth, selected by the counts instead of the stencil
-        context.beginDepthWritingPass(depthWriter_.get());
-        const ShaderProgram* program = useWriter(plan.writeDepthProgram, writeSliceDepth_);
-        const int minCount = slice > 0 ? slice + 1 : plan.firstSliceEverywhere ? 0 : 2;
-        program->set("uMinCount", minCount);
-        glBindTextureUnit(kUnitSliceCounts, counts_.get());
-        context.drawFullscreen();
-      }
-    }
+    const GLuint slicePixels = writeSlice(context, source, plan, slice);
     // A slice without pixels (every count of the frame at most `slice`) draws nothing: the GPU skips its
     // lighting and composite on its own query's result, without the CPU waiting for it. A slice whose
     // light is filtered (smaa-s2x) always has pixels: its first slice writes everywhere.
     const bool skippable = slicePixels != 0 && !plan.filterSliceLight;
     if (skippable) glBeginConditionalRender(slicePixels, GL_QUERY_WAIT);
-    {
-      ScopedPass timed(context, "slices.lighting");
-      GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
-      context.beginFullscreenPass(lightTarget_.get());
-      // A host whose lighting only adds (blending ONE, ONE) and clears its target outside the call
-      // (SuperTuxKart) finds it black, as its own target would be.
-      const float black[4] = {0, 0, 0, 0};
-      for (GLint buffer = 0; buffer <= GLint(extraLight_.size()); ++buffer)
-        glClearNamedFramebufferfv(lightTarget_.get(), GL_COLOR, buffer, black);
-      sliceStencil(slice);
-      lighting(lightTarget_.get());
-    }
+    lightSlice(context, lighting, slice);
     if (slice == 0 && plan.maskAfterFirstSlice) {
       if (Status status = plan.maskAfterFirstSlice(); !status) return status;
     }
-    GLuint sliceLight = light_.get();
-    if (plan.filterSliceLight) {
-      auto filtered = plan.filterSliceLight(slice, sliceLight);
-      if (!filtered) return filtered.error();
-      sliceLight = filtered.value();
-    }
-    {
-      ScopedPass timed(context, "slices.composite");
-      // weight × light into `target`: slice 0 overwrites the whole target, later slices add.
-      auto composite = [&](GLuint target, GLuint light) {
-        context.beginFullscreenPass(target);
-        sliceStencil(slice);
-        glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB light target (a display lit directly) adds in linear light
-        if (slice > 0) {
-          glEnable(GL_BLEND);
-          glBlendFunc(GL_ONE, GL_ONE);
-        }
-        const ShaderProgram& program = plan.compositeProgram ? *plan.compositeProgram : composite_;
-        program.use();
-        program.bindTexture("uSliceLight", light);
-        if (plan.compositeProgram) {
-          if (plan.bindCompositeInputs) plan.bindCompositeInputs();
-          program.set("uSlice", slice);
-        } else {
-          composite_.bindTexture("uSliceCounts", counts_.get());
-        }
-        context.drawFullscreen();
-      };
-      composite(compositeTarget_.get(), sliceLight);
-      // The host's further light outputs, each through the same weights.
-      for (size_t k = 0; k < extraLight_.size(); ++k) {
-        GLuint extraLight = extraLight_[k].get();
-        if (plan.filterSliceLight) {
-          auto filtered = plan.filterSliceLight(slice, extraLight);
-          if (!filtered) return filtered.error();
-          extraLight = filtered.value();
-        }
-        composite(extraCompositeTarget_[k].get(), extraLight);
-      }
-    }
+    const Status composited = compositeSlice(context, plan, slice);
     if (skippable) glEndConditionalRender();
+    if (!composited) return composited;
   }
-  if (accumulation_) {
-    ScopedPass timed(context, "slices.present");
-    glBindFramebuffer(GL_FRAMEBUFFER, presentTarget_.get() ? presentTarget_.get() : layout.lightFramebuffer);
-    context.beginFullscreenPass(0);  // 0: the binding above (the host's may be the default framebuffer)
-    glEnable(GL_FRAMEBUFFER_SRGB);   // an sRGB target encodes the linear sum
-    presentLight_.use();
-    presentLight_.bindTexture("uAccumulated", accumulation_.get());
+  if (accumulation_) presentAccumulation(context);
+  return Status::ok();
+}
+
+GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& source, const Plan& plan, int slice) {
+  const GBufferLayout& layout = context.layout;
+  ScopedPass timed(context, "slices.write");
+  context.beginFullscreenPass(sliceWriter_.get());
+  if (slice == 0 && !plan.firstSliceEverywhere)
+    stencilPassWhereCountAbove(1);  // slice 0 keeps the resolved G-buffer of single-count pixels
+  else
+    sliceStencil(slice);
+  auto useWriter = [&](const ShaderProgram* own, const ShaderProgram& stock) {
+    const ShaderProgram& program = plan.writeProgram ? *own : stock;
+    program.use();
+    source.bind(layout);
+    if (plan.writeProgram) {
+      if (plan.bindWriteInputs) plan.bindWriteInputs(program);
+      program.set("uSlice", slice);
+    } else {
+      program.setDepthEncoding(context);
+      program.set("uSample", plan.sampleOrder.empty() ? slice : plan.sampleOrder[size_t(slice)]);
+    }
+    return &program;
+  };
+  useWriter(plan.writeProgram, writeSlice_);
+  // The write passes exactly where this slice's lighting will run (slice 0 lights every pixel):
+  // its occlusion query counts the slice's evaluations, without a pass of its own.
+  const bool countOnGpu = slice > 0;
+  const GLuint slicePixels = countOnGpu ? context.statistics->beginEvaluationCount() : 0;
+  context.drawFullscreen();
+  if (countOnGpu)
+    context.statistics->endEvaluationCount();
+  else
+    context.statistics->addEvaluations(context.pixelCount());
+  if (writesHostDepth()) {  // the same pixels' depth, selected by the counts instead of the stencil
+    context.beginDepthWritingPass(depthWriter_.get());
+    const ShaderProgram* program = useWriter(plan.writeDepthProgram, writeSliceDepth_);
+    const int minCount = slice > 0 ? slice + 1 : plan.firstSliceEverywhere ? 0 : 2;
+    program->set("uMinCount", minCount);
+    glBindTextureUnit(kUnitSliceCounts, counts_.get());
+    context.drawFullscreen();
+  }
+  return slicePixels;
+}
+
+void SliceRenderer::lightSlice(PluginContext& context, const LightingFunction& lighting, int slice) {
+  ScopedPass timed(context, "slices.lighting");
+  GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
+  context.beginFullscreenPass(lightTarget_.get());
+  // A host whose lighting only adds (blending ONE, ONE) and clears its target outside the call
+  // (SuperTuxKart) finds it black, as its own target would be.
+  const float black[4] = {0, 0, 0, 0};
+  for (GLint buffer = 0; buffer <= GLint(extraLight_.size()); ++buffer)
+    glClearNamedFramebufferfv(lightTarget_.get(), GL_COLOR, buffer, black);
+  sliceStencil(slice);
+  lighting(lightTarget_.get());
+}
+
+Status SliceRenderer::compositeSlice(PluginContext& context, const Plan& plan, int slice) {
+  // The light of each output (the host's further outputs after the first), filtered first where the plan
+  // filters it: a filter's passes time themselves, outside the composite's.
+  std::vector<GLuint> lights{light_.get()};
+  for (const GlTexture& extra : extraLight_) lights.push_back(extra.get());
+  if (plan.filterSliceLight)
+    for (GLuint& light : lights) {
+      auto filtered = plan.filterSliceLight(slice, light);
+      if (!filtered) return filtered.error();
+      light = filtered.value();
+    }
+  ScopedPass timed(context, "slices.composite");
+  for (size_t output = 0; output < lights.size(); ++output) {
+    // weight × light into the output's target: slice 0 overwrites the whole target, later slices add.
+    context.beginFullscreenPass(output == 0 ? compositeTarget_.get() : extraCompositeTarget_[output - 1].get());
+    sliceStencil(slice);
+    glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB light target (a display lit directly) adds in linear light
+    if (slice > 0) {
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);
+    }
+    const ShaderProgram& program = plan.compositeProgram ? *plan.compositeProgram : composite_;
+    program.use();
+    program.bindTexture("uSliceLight", lights[output]);
+    if (plan.compositeProgram) {
+      if (plan.bindCompositeInputs) plan.bindCompositeInputs();
+      program.set("uSlice", slice);
+    } else {
+      composite_.bindTexture("uSliceCounts", counts_.get());
+    }
     context.drawFullscreen();
   }
   return Status::ok();
+}
+
+void SliceRenderer::presentAccumulation(PluginContext& context) {
+  const GBufferLayout& layout = context.layout;
+  ScopedPass timed(context, "slices.present");
+  glBindFramebuffer(GL_FRAMEBUFFER, presentTarget_.get() ? presentTarget_.get() : layout.lightFramebuffer);
+  context.beginFullscreenPass(0);  // 0: the binding above (the host's may be the default framebuffer)
+  glEnable(GL_FRAMEBUFFER_SRGB);   // an sRGB target encodes the linear sum
+  presentLight_.use();
+  presentLight_.bindTexture("uAccumulated", accumulation_.get());
+  context.drawFullscreen();
 }
 
 std::vector<uint8_t> SliceRenderer::readCounts() const {
