@@ -54,74 +54,70 @@ std::vector<size_t> paretoFront(const std::vector<ScatterPoint>& points) {
   return front;
 }
 
-std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOptions& options) {
-  const double w = 640, h = 380, left = 60, bottom = 62, top = 20, right = 20;
+namespace {
+
+// The plot's frame: its size, margins and data ranges, and where a value lands.
+struct PlotFrame {
+  double w = 640, h = 380, left = 60, bottom = 62, top = 20, right = 20;
   double xMin = 1e9, xMax = -1e9, yMin = 1e9, yMax = -1e9;
+  double px(double v) const { return left + (v - xMin) / (xMax - xMin) * (w - left - right); }
+  double py(double v) const { return h - bottom - (v - yMin) / (yMax - yMin) * (h - top - bottom); }
+};
+
+PlotFrame plotFrame(const std::vector<ScatterPoint>& points, const ScatterOptions& options) {
+  PlotFrame f;
   for (const ScatterPoint& p : points) {
-    xMin = std::min(xMin, p.cost), xMax = std::max(xMax, p.cost);
-    yMin = std::min(yMin, p.quality), yMax = std::max(yMax, p.quality);
+    f.xMin = std::min(f.xMin, p.cost), f.xMax = std::max(f.xMax, p.cost);
+    f.yMin = std::min(f.yMin, p.quality), f.yMax = std::max(f.yMax, p.quality);
   }
-  if (options.target) yMin = std::min(yMin, *options.target), yMax = std::max(yMax, *options.target);
-  if (points.empty()) xMin = 0, xMax = 1, yMin = 0, yMax = 1;
-  if (xMax <= xMin) xMax = xMin + 1;
-  if (yMax <= yMin) yMax = yMin + 1;
-  xMin = 0, yMin = std::floor(yMin - 1), yMax = std::ceil(yMax + 1), xMax *= 1.1;
-  auto px = [&](double v) { return left + (v - xMin) / (xMax - xMin) * (w - left - right); };
-  auto py = [&](double v) { return h - bottom - (v - yMin) / (yMax - yMin) * (h - top - bottom); };
-  std::ostringstream s;
-  s << std::fixed;
-  s.precision(1);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h << "\" class=\"scatter\">";
-  s << "<style>.scatter text{font:11px sans-serif}.tick{fill:#666}.label{fill:#246}.label.hi{fill:#c33}</style>";
-  s << "<line x1=\"" << left << "\" y1=\"" << h - bottom << "\" x2=\"" << w - right << "\" y2=\"" << h - bottom
+  if (options.target) f.yMin = std::min(f.yMin, *options.target), f.yMax = std::max(f.yMax, *options.target);
+  if (points.empty()) f.xMin = 0, f.xMax = 1, f.yMin = 0, f.yMax = 1;
+  if (f.xMax <= f.xMin) f.xMax = f.xMin + 1;
+  if (f.yMax <= f.yMin) f.yMax = f.yMin + 1;
+  f.xMin = 0, f.yMin = std::floor(f.yMin - 1), f.yMax = std::ceil(f.yMax + 1), f.xMax *= 1.1;
+  return f;
+}
+
+// Axes, their labels and ticks, and the target line.
+void drawAxes(std::ostringstream& s, const PlotFrame& f, const ScatterOptions& options) {
+  s << "<line x1=\"" << f.left << "\" y1=\"" << f.h - f.bottom << "\" x2=\"" << f.w - f.right << "\" y2=\""
+    << f.h - f.bottom << "\" stroke=\"#888\"/>";
+  s << "<line x1=\"" << f.left << "\" y1=\"" << f.top << "\" x2=\"" << f.left << "\" y2=\"" << f.h - f.bottom
     << "\" stroke=\"#888\"/>";
-  s << "<line x1=\"" << left << "\" y1=\"" << top << "\" x2=\"" << left << "\" y2=\"" << h - bottom
-    << "\" stroke=\"#888\"/>";
-  s << "<text x=\"" << w / 2 << "\" y=\"" << h - bottom + 32 << "\" text-anchor=\"middle\">"
+  s << "<text x=\"" << f.w / 2 << "\" y=\"" << f.h - f.bottom + 32 << "\" text-anchor=\"middle\">"
     << xmlEscape(options.xLabel) << "</text>";
-  s << "<text x=\"14\" y=\"" << h / 2 << "\" transform=\"rotate(-90 14 " << h / 2 << ")\" text-anchor=\"middle\">"
+  s << "<text x=\"14\" y=\"" << f.h / 2 << "\" transform=\"rotate(-90 14 " << f.h / 2 << ")\" text-anchor=\"middle\">"
     << xmlEscape(options.yLabel) << "</text>";
   for (int i = 0; i <= 4; ++i) {
-    const double xv = xMin + (xMax - xMin) * i / 4, yv = yMin + (yMax - yMin) * i / 4;
-    s << "<text x=\"" << px(xv) << "\" y=\"" << h - bottom + 14 << "\" text-anchor=\"middle\" class=\"tick\">" << xv
-      << "</text>";
-    s << "<text x=\"" << left - 6 << "\" y=\"" << py(yv) + 4 << "\" text-anchor=\"end\" class=\"tick\">" << yv
+    const double xv = f.xMin + (f.xMax - f.xMin) * i / 4, yv = f.yMin + (f.yMax - f.yMin) * i / 4;
+    s << "<text x=\"" << f.px(xv) << "\" y=\"" << f.h - f.bottom + 14 << "\" text-anchor=\"middle\" class=\"tick\">"
+      << xv << "</text>";
+    s << "<text x=\"" << f.left - 6 << "\" y=\"" << f.py(yv) + 4 << "\" text-anchor=\"end\" class=\"tick\">" << yv
       << "</text>";
   }
   if (options.target) {
-    s << "<line class=\"target\" x1=\"" << left << "\" y1=\"" << py(*options.target) << "\" x2=\"" << w - right
-      << "\" y2=\"" << py(*options.target) << "\" stroke=\"#393\" stroke-dasharray=\"2 2\"/>";
-    s << "<text x=\"" << w - right - 4 << "\" y=\"" << py(*options.target) - 4
+    s << "<line class=\"target\" x1=\"" << f.left << "\" y1=\"" << f.py(*options.target) << "\" x2=\"" << f.w - f.right
+      << "\" y2=\"" << f.py(*options.target) << "\" stroke=\"#393\" stroke-dasharray=\"2 2\"/>";
+    s << "<text x=\"" << f.w - f.right - 4 << "\" y=\"" << f.py(*options.target) - 4
       << "\" text-anchor=\"end\" fill=\"#393\">target " << *options.target << "</text>";
   }
+}
 
-  std::vector<bool> onFront(points.size(), false);
-  std::ostringstream front;
-  front << std::fixed;
-  front.precision(1);
-  for (size_t i : paretoFront(points)) {
-    onFront[i] = true;
-    front << px(points[i].cost) << "," << py(points[i].quality) << " ";
-  }
-  s << "<polyline class=\"front\" points=\"" << front.str()
-    << "\" fill=\"none\" stroke=\"#c33\" stroke-dasharray=\"4 3\"/>";
-
+// Labels, the highlighted and front points first so that they get the nearest free places: eight
+// directions at growing distances; a label that had to move away gets a leader line.
+void drawLabels(std::ostringstream& s, const PlotFrame& f, const std::vector<ScatterPoint>& points,
+                const std::vector<bool>& onFront) {
   std::vector<Box> taken;  // points and placed labels
   for (const ScatterPoint& p : points)
-    taken.push_back({px(p.cost) - kPointRadius, py(p.quality) - kPointRadius, px(p.cost) + kPointRadius,
-                     py(p.quality) + kPointRadius});
-  for (const ScatterPoint& p : points)
-    s << "<circle cx=\"" << px(p.cost) << "\" cy=\"" << py(p.quality) << "\" r=\"" << kPointRadius << "\" fill=\""
-      << (p.highlighted ? "#c33" : "#246") << "\"><title>" << xmlEscape(p.label) << "</title></circle>";
-  // Labels, the highlighted and front points first so that they get the nearest free places: eight
-  // directions at growing distances; a label that had to move away gets a leader line.
+    taken.push_back({f.px(p.cost) - kPointRadius, f.py(p.quality) - kPointRadius, f.px(p.cost) + kPointRadius,
+                     f.py(p.quality) + kPointRadius});
   std::vector<size_t> labelOrder = costOrder(points);
   std::stable_sort(labelOrder.begin(), labelOrder.end(), [&](size_t a, size_t b) {
     return int(points[a].highlighted) * 2 + int(onFront[a]) > int(points[b].highlighted) * 2 + int(onFront[b]);
   });
   const double directions[][2] = {{1, -1}, {1, 1}, {-1, -1}, {-1, 1}, {0, -1}, {0, 1}, {1, 0}, {-1, 0}};
   for (size_t i : labelOrder) {
-    const double x = px(points[i].cost), y = py(points[i].quality);
+    const double x = f.px(points[i].cost), y = f.py(points[i].quality);
     const double width = kCharWidth * double(points[i].label.size());
     Box chosen{};
     bool found = false;
@@ -132,7 +128,7 @@ std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOpt
         const double bx = d[0] > 0 ? x + reach : d[0] < 0 ? x - reach - width : x - width / 2;
         const double by = d[1] < 0 ? y - reach - kLabelHeight : d[1] > 0 ? y + reach : y - kLabelHeight / 2;
         const Box box{bx, by, bx + width, by + kLabelHeight};
-        if (box.x0 < left + 2 || box.x1 > w - 2 || box.y0 < 2 || box.y1 > h - bottom - 2) continue;
+        if (box.x0 < f.left + 2 || box.x1 > f.w - 2 || box.y0 < 2 || box.y1 > f.h - f.bottom - 2) continue;
         if (std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(box); })) continue;
         chosen = box, found = true;
         break;
@@ -145,9 +141,11 @@ std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOpt
     s << "<text x=\"" << chosen.x0 << "\" y=\"" << chosen.y1 - 2 << "\" class=\"label"
       << (points[i].highlighted ? " hi" : "") << "\">" << xmlEscape(points[i].label) << "</text>";
   }
+}
 
-  // Legend, under the axis label.
-  const double ly = h - 10;
+// The legend, under the axis label.
+void drawLegend(std::ostringstream& s, const PlotFrame& f, const ScatterOptions& options) {
+  const double ly = f.h - 10, left = f.left;
   s << "<g class=\"legend\"><line x1=\"" << left << "\" y1=\"" << ly - 4 << "\" x2=\"" << left + 24 << "\" y2=\""
     << ly - 4 << "\" stroke=\"#c33\" stroke-dasharray=\"4 3\"/><text x=\"" << left + 30 << "\" y=\"" << ly
     << "\">Pareto front: no cheaper point is better</text>";
@@ -156,6 +154,33 @@ std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOpt
   if (!options.highlightMeaning.empty())
     s << "<circle cx=\"" << left + 420 << "\" cy=\"" << ly - 4 << "\" r=\"4\" fill=\"#c33\"/><text x=\"" << left + 428
       << "\" y=\"" << ly << "\">" << xmlEscape(options.highlightMeaning) << "</text>";
+}
+
+}  // namespace
+
+std::string svgScatter(const std::vector<ScatterPoint>& points, const ScatterOptions& options) {
+  const PlotFrame f = plotFrame(points, options);
+  std::ostringstream s;
+  s << std::fixed;
+  s.precision(1);
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << f.w << "\" height=\"" << f.h << "\" class=\"scatter\">";
+  s << "<style>.scatter text{font:11px sans-serif}.tick{fill:#666}.label{fill:#246}.label.hi{fill:#c33}</style>";
+  drawAxes(s, f, options);
+  std::vector<bool> onFront(points.size(), false);
+  std::ostringstream front;
+  front << std::fixed;
+  front.precision(1);
+  for (size_t i : paretoFront(points)) {
+    onFront[i] = true;
+    front << f.px(points[i].cost) << "," << f.py(points[i].quality) << " ";
+  }
+  s << "<polyline class=\"front\" points=\"" << front.str()
+    << "\" fill=\"none\" stroke=\"#c33\" stroke-dasharray=\"4 3\"/>";
+  for (const ScatterPoint& p : points)
+    s << "<circle cx=\"" << f.px(p.cost) << "\" cy=\"" << f.py(p.quality) << "\" r=\"" << kPointRadius << "\" fill=\""
+      << (p.highlighted ? "#c33" : "#246") << "\"><title>" << xmlEscape(p.label) << "</title></circle>";
+  drawLabels(s, f, points, onFront);
+  drawLegend(s, f, options);
   s << "</g></svg>";
   return s.str();
 }
