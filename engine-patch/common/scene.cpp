@@ -318,8 +318,10 @@ size_t Scene::triangleCount() const {
   return n;
 }
 
-Scene parseScene(const std::string& jsonText, const std::string& fileName, const std::string& baseDirectory,
-                 bool requireCameraPath) {
+namespace {
+
+// The scene's JSON, refusing nesting past what a scene needs before it costs memory.
+json parseSceneDocument(const std::string& jsonText, const std::string& fileName) {
   json document;
   // A scene is a few levels deep; a file of nested arrays under the size cap would otherwise take
   // gigabytes and seconds before any error. The parser stops at the first value past the depth.
@@ -339,6 +341,173 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
     if (!tooDeep) throw;
     throw SceneError(fileName, "(document)", "nested more than " + std::to_string(kMaxSceneNesting) + " levels deep");
   }
+  return document;
+}
+
+// "materials" (optional when every object is a model that keeps its own), within the texture budget.
+void readMaterials(const Reader& root, const std::string& fileName, const std::string& baseDirectory, Scene& scene,
+                   size_t& textureBudget) {
+  // "materials" may be left out when every object is a model that keeps its own.
+  static const json kNoMaterials = json::array();
+  const Reader materials =
+      root.has("materials") ? root.child("materials") : Reader(fileName, kNoMaterials, "$.materials");
+  for (size_t i = 0; i < materials.arraySize(); ++i) {
+    const Reader m = materials.element(i);
+    m.expectObject({"name", "albedo", "specular", "gloss", "emissive", "procedural", "albedo_map", "normal_map",
+                    "specular_map", "emissive_map", "uv_scale"});
+    Material material;
+    material.name = m.child("name").string();
+    material.albedo = m.vec3Or("albedo", material.albedo, 0.0f, 1.0f);
+    material.specular = m.vec3Or("specular", material.specular, 0.0f, 1.0f);
+    material.gloss = m.numberOr("gloss", material.gloss, 0.0f, 1.0f);
+    material.emissive = m.vec3Or("emissive", material.emissive, 0.0f, 1e4f);
+    material.maps = readMaps(m, baseDirectory, textureBudget);
+    scene.materials.push_back(material);
+  }
+}
+
+// Object `i` of "objects": its mesh (generated, or a model, split into its parts where it keeps its own
+// materials) and its repeats, appended to the scene within its object, triangle and texture budgets.
+void readObject(const Reader& o, size_t i, const std::string& baseDirectory, Scene& scene, size_t& textureBudget,
+                size_t& triangles) {
+  o.expectObject({"name", "generator", "model", "material", "transform", "repeat"});
+  Object object;
+  object.name = o.has("name") ? o.child("name").string() : "object" + std::to_string(i);
+  if (o.has("generator") == o.has("model")) o.fail("needs exactly one of 'generator' or 'model'");
+  std::vector<ModelPart> parts;  // a model's own materials, unless "material" overrides them
+  if (o.has("generator")) {
+    object.mesh = readGenerator(o.child("generator"));
+    if (!o.has("material")) o.fail("missing required key 'material'");
+  } else {
+    const std::filesystem::path model = o.child("model").string();
+    const std::string resolved =
+        model.is_absolute() ? model.string() : (std::filesystem::path(baseDirectory) / model).string();
+    // Only regular files: a path like /dev/zero would never end.
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(resolved, error))
+      o.child("model").fail("'" + resolved + "' is not a regular file");
+    try {
+      // A "material" override replaces the model's own: its textures are not read (nor missing ones refused).
+      parts = loadModel(resolved, nullptr, o.has("material") ? ModelTextures::Skip : ModelTextures::Read);
+    } catch (const ModelLoadError& e) {
+      o.child("model").fail(e.what());
+    }
+    if (o.has("material")) object.mesh = mergeParts(parts), parts.clear();
+  }
+  if (o.has("material")) {
+    const std::string materialName = o.child("material").string();
+    object.material = -1;
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+      if (scene.materials[m].name == materialName) object.material = static_cast<int>(m);
+    if (object.material < 0) o.child("material").fail("no material named '" + materialName + "'");
+  }
+  if (o.has("transform")) object.transform = readTransform(o.child("transform"));
+  // "repeat": {"count": n, "offset": [x,y,z]} places n copies, each shifted by offset.
+  int count = 1;
+  glm::vec3 offset(0);
+  if (o.has("repeat")) {
+    const Reader rep = o.child("repeat");
+    rep.expectObject({"count", "offset"});
+    count = rep.child("count").integer(1, 10000);
+    offset = rep.child("offset").vec3();
+  }
+  // Without "material", each of the model's materials becomes a scene material ("<object>/<name>") and
+  // each part an object of its own.
+  std::vector<Object> pieces;
+  for (ModelPart& part : parts) {
+    const size_t bytes = textureBytes(part.maps);
+    if (bytes > textureBudget)
+      o.child("model").fail("the scene's textures would exceed " + std::to_string(kMaxSceneTextureBytes >> 20) +
+                            " MiB");
+    textureBudget -= bytes;
+    Material material;
+    material.name = object.name + "/" + part.materialName;
+    material.albedo = part.albedo;
+    material.emissive = part.emissive;
+    material.maps = part.maps;
+    scene.materials.push_back(material);
+    Object piece = object;
+    piece.mesh = std::move(part.mesh);
+    piece.material = int(scene.materials.size() - 1);
+    pieces.push_back(std::move(piece));
+  }
+  if (parts.empty()) pieces.push_back(std::move(object));
+  if (scene.objects.size() + pieces.size() * size_t(count) > kMaxSceneObjects)
+    o.fail("the scene exceeds " + std::to_string(kMaxSceneObjects) +
+           " objects (with its repeats and parts this one brings it to " +
+           std::to_string(scene.objects.size() + pieces.size() * size_t(count)) + ")");
+  for (const Object& piece : pieces) {
+    triangles += piece.mesh.triangleCount() * size_t(count);
+    if (triangles > kMaxSceneTriangles)
+      o.fail("the scene exceeds " + std::to_string(kMaxSceneTriangles) + " triangles (this object brings it to " +
+             std::to_string(triangles) + ")");
+    for (int c = 0; c < count; ++c) {
+      Object copy = piece;
+      copy.transform = glm::translate(glm::mat4(1.0f), offset * float(c)) * piece.transform;
+      if (count > 1) copy.name += "#" + std::to_string(c);
+      scene.objects.push_back(std::move(copy));
+    }
+  }
+}
+
+std::vector<Light> readLights(const Reader& lights) {
+  std::vector<Light> out;
+  for (size_t i = 0; i < lights.arraySize(); ++i) {
+    const Reader l = lights.element(i);
+    l.expectObject({"type", "color", "intensity", "position", "end", "direction", "radius"});
+    Light light;
+    const std::string type = l.child("type").string();
+    light.color = l.vec3Or("color", light.color, 0.0f, 1e4f);
+    light.intensity = l.numberOr("intensity", light.intensity, 0.0f, 1e9f);
+    if (type == "directional") {
+      light.type = LightType::Directional;
+      light.direction = l.child("direction").vec3();
+      if (glm::length(light.direction) <= 0.0f) l.child("direction").fail("zero-length direction");
+      light.direction = glm::normalize(light.direction);
+    } else if (type == "point" || type == "tube") {
+      light.type = type == "point" ? LightType::Point : LightType::Tube;
+      light.position = l.child("position").vec3();
+      light.end = light.type == LightType::Tube ? l.child("end").vec3() : light.position;
+      light.radius = l.child("radius").number(1e-4f, 1e7f);
+    } else {
+      l.child("type").fail("unknown light type '" + type + "' (allowed: directional, point, tube)");
+    }
+    out.push_back(light);
+  }
+  return out;
+}
+
+// "camera_path": inline, or the name of a file `retroaa record` wrote (relative to the scene file). A
+// missing file is an error only where `requireCameraPath`; otherwise the scene has no path.
+CameraPath readScenePath(const Reader& p, const std::string& baseDirectory, bool requireCameraPath) {
+  if (!p.raw().is_string()) return readCameraPath(p);
+  const std::filesystem::path file = p.string();
+  const std::string resolved =
+      file.is_absolute() ? file.string() : (std::filesystem::path(baseDirectory) / file).string();
+  std::string problem;
+  const std::optional<std::string> text = readUserTextFile(resolved, problem);
+  if (!text && !requireCameraPath) return CameraPath{};
+  if (!text) p.fail("cannot open camera path file '" + resolved + "': " + problem);
+  // Errors inside the path file name both: the scene's field and the path file's own field.
+  try {
+    json pathDocument;
+    try {
+      pathDocument = json::parse(*text);
+    } catch (const json::exception& e) {
+      throw SceneError(resolved, "(document)", std::string("not valid JSON: ") + e.what());
+    }
+    return readCameraPath(Reader(resolved, pathDocument, "$"));
+  } catch (const SceneError& e) {
+    p.fail(e.what());
+  }
+  return CameraPath{};  // not reached: fail() throws
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& jsonText, const std::string& fileName, const std::string& baseDirectory,
+                 bool requireCameraPath) {
+  const json document = parseSceneDocument(jsonText, fileName);
   const Reader root(fileName, document, "$");
   root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient", "sky_color",
                      "star_density", "exposure", "shading", "depth_buffer", "position_depth", "comment"});
@@ -370,24 +539,8 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
     if (scene.positionDepth == PositionDepth::FsoCompressed && !(scene.camera.farPlane > 100000.0f))
       root.child("position_depth").fail("fso-compressed needs a camera far plane beyond 100000 m (FSO's GLOBAL_FAR_Z)");
   }
-  // "materials" may be left out when every object is a model that keeps its own.
-  static const json kNoMaterials = json::array();
-  const Reader materials =
-      root.has("materials") ? root.child("materials") : Reader(fileName, kNoMaterials, "$.materials");
   size_t textureBudget = kMaxSceneTextureBytes;
-  for (size_t i = 0; i < materials.arraySize(); ++i) {
-    const Reader m = materials.element(i);
-    m.expectObject({"name", "albedo", "specular", "gloss", "emissive", "procedural", "albedo_map", "normal_map",
-                    "specular_map", "emissive_map", "uv_scale"});
-    Material material;
-    material.name = m.child("name").string();
-    material.albedo = m.vec3Or("albedo", material.albedo, 0.0f, 1.0f);
-    material.specular = m.vec3Or("specular", material.specular, 0.0f, 1.0f);
-    material.gloss = m.numberOr("gloss", material.gloss, 0.0f, 1.0f);
-    material.emissive = m.vec3Or("emissive", material.emissive, 0.0f, 1e4f);
-    material.maps = readMaps(m, baseDirectory, textureBudget);
-    scene.materials.push_back(material);
-  }
+  readMaterials(root, fileName, baseDirectory, scene, textureBudget);
 
   if (!root.has("objects")) root.fail("missing required key 'objects'");
   const Reader objects = root.child("objects");
@@ -395,146 +548,15 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
     objects.fail("has " + std::to_string(objects.arraySize()) + " objects (at most " +
                  std::to_string(kMaxSceneObjects) + ")");
   size_t triangles = 0;
-  for (size_t i = 0; i < objects.arraySize(); ++i) {
-    const Reader o = objects.element(i);
-    o.expectObject({"name", "generator", "model", "material", "transform", "repeat"});
-    Object object;
-    object.name = o.has("name") ? o.child("name").string() : "object" + std::to_string(i);
-    if (o.has("generator") == o.has("model")) o.fail("needs exactly one of 'generator' or 'model'");
-    std::vector<ModelPart> parts;  // a model's own materials, unless "material" overrides them
-    if (o.has("generator")) {
-      object.mesh = readGenerator(o.child("generator"));
-      if (!o.has("material")) o.fail("missing required key 'material'");
-    } else {
-      const std::filesystem::path model = o.child("model").string();
-      const std::string resolved =
-          model.is_absolute() ? model.string() : (std::filesystem::path(baseDirectory) / model).string();
-      // Only regular files: a path like /dev/zero would never end.
-      std::error_code error;
-      if (!std::filesystem::is_regular_file(resolved, error))
-        o.child("model").fail("'" + resolved + "' is not a regular file");
-      try {
-        // A "material" override replaces the model's own: its textures are not read (nor missing ones refused).
-        parts = loadModel(resolved, nullptr, o.has("material") ? ModelTextures::Skip : ModelTextures::Read);
-      } catch (const ModelLoadError& e) {
-        o.child("model").fail(e.what());
-      }
-      if (o.has("material")) object.mesh = mergeParts(parts), parts.clear();
-    }
-    if (o.has("material")) {
-      const std::string materialName = o.child("material").string();
-      object.material = -1;
-      for (size_t m = 0; m < scene.materials.size(); ++m)
-        if (scene.materials[m].name == materialName) object.material = static_cast<int>(m);
-      if (object.material < 0) o.child("material").fail("no material named '" + materialName + "'");
-    }
-    if (o.has("transform")) object.transform = readTransform(o.child("transform"));
-    // "repeat": {"count": n, "offset": [x,y,z]} places n copies, each shifted by offset.
-    int count = 1;
-    glm::vec3 offset(0);
-    if (o.has("repeat")) {
-      const Reader rep = o.child("repeat");
-      rep.expectObject({"count", "offset"});
-      count = rep.child("count").integer(1, 10000);
-      offset = rep.child("offset").vec3();
-    }
-    // Without "material", each of the model's materials becomes a scene material ("<object>/<name>") and
-    // each part an object of its own.
-    std::vector<Object> pieces;
-    for (ModelPart& part : parts) {
-      const size_t bytes = textureBytes(part.maps);
-      if (bytes > textureBudget)
-        o.child("model").fail("the scene's textures would exceed " + std::to_string(kMaxSceneTextureBytes >> 20) +
-                              " MiB");
-      textureBudget -= bytes;
-      Material material;
-      material.name = object.name + "/" + part.materialName;
-      material.albedo = part.albedo;
-      material.emissive = part.emissive;
-      material.maps = part.maps;
-      scene.materials.push_back(material);
-      Object piece = object;
-      piece.mesh = std::move(part.mesh);
-      piece.material = int(scene.materials.size() - 1);
-      pieces.push_back(std::move(piece));
-    }
-    if (parts.empty()) pieces.push_back(std::move(object));
-    if (scene.objects.size() + pieces.size() * size_t(count) > kMaxSceneObjects)
-      o.fail("the scene exceeds " + std::to_string(kMaxSceneObjects) +
-             " objects (with its repeats and parts this one brings it to " +
-             std::to_string(scene.objects.size() + pieces.size() * size_t(count)) + ")");
-    for (const Object& piece : pieces) {
-      triangles += piece.mesh.triangleCount() * size_t(count);
-      if (triangles > kMaxSceneTriangles)
-        o.fail("the scene exceeds " + std::to_string(kMaxSceneTriangles) + " triangles (this object brings it to " +
-               std::to_string(triangles) + ")");
-      for (int c = 0; c < count; ++c) {
-        Object copy = piece;
-        copy.transform = glm::translate(glm::mat4(1.0f), offset * float(c)) * piece.transform;
-        if (count > 1) copy.name += "#" + std::to_string(c);
-        scene.objects.push_back(std::move(copy));
-      }
-    }
-  }
+  for (size_t i = 0; i < objects.arraySize(); ++i)
+    readObject(objects.element(i), i, baseDirectory, scene, textureBudget, triangles);
 
   if (fitToObjects) {
     if (scene.objects.empty()) root.child("camera").fail("\"fit\" needs at least one object to frame");
     scene.camera = fitCamera(scene.objects, scene.camera, glm::vec3(-0.5f, -0.3f, -0.8f));  // a three-quarter view
   }
-
-  if (root.has("lights")) {
-    const Reader lights = root.child("lights");
-    for (size_t i = 0; i < lights.arraySize(); ++i) {
-      const Reader l = lights.element(i);
-      l.expectObject({"type", "color", "intensity", "position", "end", "direction", "radius"});
-      Light light;
-      const std::string type = l.child("type").string();
-      light.color = l.vec3Or("color", light.color, 0.0f, 1e4f);
-      light.intensity = l.numberOr("intensity", light.intensity, 0.0f, 1e9f);
-      if (type == "directional") {
-        light.type = LightType::Directional;
-        light.direction = l.child("direction").vec3();
-        if (glm::length(light.direction) <= 0.0f) l.child("direction").fail("zero-length direction");
-        light.direction = glm::normalize(light.direction);
-      } else if (type == "point" || type == "tube") {
-        light.type = type == "point" ? LightType::Point : LightType::Tube;
-        light.position = l.child("position").vec3();
-        light.end = light.type == LightType::Tube ? l.child("end").vec3() : light.position;
-        light.radius = l.child("radius").number(1e-4f, 1e7f);
-      } else {
-        l.child("type").fail("unknown light type '" + type + "' (allowed: directional, point, tube)");
-      }
-      scene.lights.push_back(light);
-    }
-  }
-
-  if (root.has("camera_path")) {
-    // Inline, or the name of a file `retroaa record` wrote (relative to the scene file).
-    const Reader p = root.child("camera_path");
-    if (p.raw().is_string()) {
-      const std::filesystem::path file = p.string();
-      const std::string resolved =
-          file.is_absolute() ? file.string() : (std::filesystem::path(baseDirectory) / file).string();
-      std::string problem;
-      const std::optional<std::string> text = readUserTextFile(resolved, problem);
-      if (!text && !requireCameraPath) return scene;
-      if (!text) p.fail("cannot open camera path file '" + resolved + "': " + problem);
-      // Errors inside the path file name both: the scene's field and the path file's own field.
-      try {
-        json pathDocument;
-        try {
-          pathDocument = json::parse(*text);
-        } catch (const json::exception& e) {
-          throw SceneError(resolved, "(document)", std::string("not valid JSON: ") + e.what());
-        }
-        scene.path = readCameraPath(Reader(resolved, pathDocument, "$"));
-      } catch (const SceneError& e) {
-        p.fail(e.what());
-      }
-    } else {
-      scene.path = readCameraPath(p);
-    }
-  }
+  if (root.has("lights")) scene.lights = readLights(root.child("lights"));
+  if (root.has("camera_path")) scene.path = readScenePath(root.child("camera_path"), baseDirectory, requireCameraPath);
   return scene;
 }
 
