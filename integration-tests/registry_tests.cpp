@@ -244,18 +244,9 @@ TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {
   EXPECT_EQ(counter.live, 1) << "the refused program is deleted";
 
   // An override that drops a uniform the plugin sets falls back to the built-in, saying which.
-  const auto dir = std::filesystem::temp_directory_path() / "retroaa_contract_test";
-  std::filesystem::create_directories(dir / "resolve");
-  {
-    std::ifstream in(std::string(RETROAA_SOURCE_DIR) + "/shaders/resolve/resolve.glsl");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string source = text.str();
-    const std::string declaration = "uniform float uCloseness;";
-    ASSERT_NE(source.find(declaration), std::string::npos);
-    source.replace(source.find(declaration), declaration.size(), "const float uCloseness = 5.0;");
-    std::ofstream(dir / "resolve" / "resolve.glsl") << source;
-  }
+  const std::filesystem::path dir =
+      writeShaderOverride("retroaa_contract_test", "resolve/resolve.glsl",
+                          {{"uniform float uCloseness;", "const float uCloseness = 5.0;"}});
   const app::DisplayImage builtIn = host.render("resolve");
   retroaa::Config config = app::parseMethodSpec("resolve", {}).config;
   config.shaderOverrideDirectory = dir.string();
@@ -273,17 +264,10 @@ TEST(PluginErrors, AShaderLackingAUniformThePluginSetsIsAShaderError) {
 // on another unit than the C++ side binds, refuse the program; an override doing so falls back.
 TEST(PluginErrors, SamplersSharingAUnitOrOffTheirSharedUnitAreAShaderError) {
   PatchedHost host("default", 32, 24);
-  const auto dir = std::filesystem::temp_directory_path() / "retroaa_sampler_units_test";
-  std::filesystem::create_directories(dir / "slices");
+  const std::filesystem::path dir = writeShaderOverride("retroaa_sampler_units_test", "slices/composite.frag",
+                                                        {{"layout(binding = 1) uniform usampler2D uSliceCounts;",
+                                                          "layout(binding = 0) uniform usampler2D uSliceCounts;"}});
   {
-    std::ifstream in(std::string(RETROAA_SOURCE_DIR) + "/shaders/slices/composite.frag");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string source = text.str();
-    const std::string counts = "layout(binding = 1) uniform usampler2D uSliceCounts;";
-    ASSERT_NE(source.find(counts), std::string::npos);
-    source.replace(source.find(counts), counts.size(), "layout(binding = 0) uniform usampler2D uSliceCounts;");
-    std::ofstream(dir / "slices" / "composite.frag") << source;
     std::ofstream(dir / "slices" / "mark_pixels.frag")
         << "#version 450 core\nlayout(binding = 1) uniform usampler2D uSliceCounts;\n"
            "layout(binding = 3) uniform sampler2DMS uDepthBuffer;\nuniform int uBit;\nout vec4 outColour;\n"

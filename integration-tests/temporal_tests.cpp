@@ -257,17 +257,7 @@ TEST(Temporal, TheSecondHostJittersAndAccumulatesAfterTonemappingWhereItLightsIn
 // The built-in temporal.frag with each `from` replaced by its `to`, as a shader override folder.
 std::string temporalShaderVariant(const std::string& name,
                                   const std::vector<std::pair<std::string, std::string>>& replacements) {
-  std::ifstream in(std::string(RETROAA_SOURCE_DIR) + "/shaders/temporal/temporal.frag");
-  std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const auto& [from, to] : replacements) {
-    const size_t at = source.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) source.replace(at, from.size(), to);
-  }
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("retroaa_temporal_" + name);
-  std::filesystem::create_directories(folder / "temporal");
-  std::ofstream(folder / "temporal" / "temporal.frag") << source;
-  return folder.string();
+  return writeShaderOverride("retroaa_temporal_" + name, "temporal/temporal.frag", replacements);
 }
 
 TEST(Temporal, AMovingCameraReprojectsTheHistoryOntoTheSameSurfaces) {

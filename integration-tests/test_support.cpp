@@ -8,6 +8,9 @@
 #include <glm/gtc/packing.hpp>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace testing_support {
 
@@ -247,6 +250,23 @@ CliRun runCommand(const std::string& shellCommand) {
   while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+std::string writeShaderOverride(const std::string& folder, const std::string& shader,
+                                const std::vector<std::pair<std::string, std::string>>& replacements) {
+  std::ifstream in(std::string(RETROAA_SOURCE_DIR) + "/shaders/" + shader);
+  std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_FALSE(source.empty()) << shader;
+  for (const auto& [from, to] : replacements) {
+    const size_t at = source.find(from);
+    EXPECT_NE(at, std::string::npos) << shader << ": " << from;
+    if (at != std::string::npos) source.replace(at, from.size(), to);
+  }
+  const std::filesystem::path root = std::filesystem::temp_directory_path() / folder;
+  const std::filesystem::path file = root / shader;
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream(file) << source;
+  return root.string();
 }
 
 }  // namespace testing_support

@@ -103,6 +103,12 @@ struct SyntheticFrame {
   std::vector<glm::vec4> read(GLuint texture) const;  // RGBA float, GL's bottom-up rows
 };
 
+// A shader override folder (Config::shaderOverrideDirectory) under the temporary directory: `shader`
+// (relative to shaders/) as built in, with each `from` replaced by its `to` (a `from` not found is a test
+// failure). Returns the folder; several calls with the same `folder` add files to it.
+std::string writeShaderOverride(const std::string& folder, const std::string& shader,
+                                const std::vector<std::pair<std::string, std::string>>& replacements);
+
 // Runs the `retroaa` binary with `arguments`, capturing stdout and stderr together.
 struct CliRun {
   int exitCode;
