@@ -25,7 +25,7 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
   const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, samplesPerAxis);
   const int w = session.renderer->width(), h = session.renderer->height();
   FrameReference reference{truth.display, DisplayImage::fromRgba8(w, h, truth.display),
-                           edgeMaskFromSpread(truth.lumaStdDev), std::nullopt};
+                           edgeMaskFromSpread(truth.lumaStdDev), std::nullopt, {}};
   if (perSampleBase) {
     retroaa::Config config = *perSampleBase;
     config.method = retroaa::Method::PerSample;
@@ -35,6 +35,14 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
     reference.perSample = DisplayImage::fromRgba8(w, h, session.renderer->readDisplay());
   }
   return reference;
+}
+
+void markChangedSince(Session& session, const host::Camera& previous, int samplesPerAxis, FrameReference& reference) {
+  const host::GroundTruth before = host::renderGroundTruth(*session.renderer, previous, samplesPerAxis);
+  reference.changed.assign(reference.truthRgba.size() / 4, 0);
+  for (size_t p = 0; p < reference.changed.size(); ++p)
+    for (size_t c = 0; c < 3; ++c)
+      if (std::abs(int(before.display[p * 4 + c]) - int(reference.truthRgba[p * 4 + c])) > 4) reference.changed[p] = 1;
 }
 
 double measureWallMs(Session& session, const host::Camera& camera, int frames) {

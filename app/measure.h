@@ -20,11 +20,17 @@ struct FrameReference {
   DisplayImage truth;                     // the same as metric values
   std::vector<uint8_t> edges;             // ground-truth edge pixels (metrics.h)
   std::optional<DisplayImage> perSample;  // the per-sample render at the run's sample count
+  // Where the ground truth changed since the previous frame (markChangedSince; empty: not computed): with
+  // a still camera, what objects that move covered or uncovered. A history's error there is its lag.
+  std::vector<uint8_t> changed;
 };
 // Ground truth of `camera` (`samplesPerAxis`² lit supersamples per pixel) and, with
 // `perSampleBase`, the per-sample render under that config (its method and FXAA replaced).
 FrameReference renderReference(Session& session, const host::Camera& camera, int samplesPerAxis,
                                const retroaa::Config* perSampleBase);
+// Fills `reference.changed`: the pixels whose ground truth at `previous` (the frame before) differs from
+// `reference`'s by more than 4/255 in a channel.
+void markChangedSince(Session& session, const host::Camera& previous, int samplesPerAxis, FrameReference& reference);
 
 struct Measurement {
   std::vector<uint8_t> display;  // RGBA8 top-down, of the last frame

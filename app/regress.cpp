@@ -41,6 +41,8 @@ std::string fileSafe(std::string name) {
 // Per method, summed over a scene's frames.
 struct MethodTotals {
   double psnr = 0, edgePsnr = 0, minEdgePsnr = 1e9, interiorPsnr = 0, psnrVsPerSample = 0, ssim = 0, maxError = 0;
+  double lagPsnr = 0;  // on the pixels whose ground truth changed since the previous frame (FrameReference)
+  int lagFrames = 0;
   double evaluations = 0, gpuMs = 0, flicker = 0;
   double wallMs = 0;  // of the first frame (0: not measured)
   std::map<std::string, double> passMs;
@@ -54,6 +56,8 @@ struct MethodTotals {
     if (m.error.edgePixels > 0)
       edgePsnr += m.error.edgePsnrDb, minEdgePsnr = std::min(minEdgePsnr, m.error.edgePsnrDb), ++edgeFrames;
     if (m.error.interiorPixels > 0) interiorPsnr += m.error.interiorPsnrDb, ++interiorFrames;
+    if (std::count(reference.changed.begin(), reference.changed.end(), 1) > 0)
+      lagPsnr += compare(m.image, reference.truth, reference.changed).edgePsnrDb, ++lagFrames;
     psnrVsPerSample += m.psnrVsPerSampleDb.value_or(0);
     ssim += m.error.ssim, maxError = std::max(maxError, m.error.maxAbsError);
     evaluations += m.stats.evaluationsPerPixel(), gpuMs += m.gpuMs;
@@ -89,6 +93,7 @@ struct MethodTotals {
             {"edge_psnr_db", edgeFrames ? json(edgePsnr / edgeFrames) : json(nullptr)},
             {"min_edge_psnr_db", edgeFrames ? json(minEdgePsnr) : json(nullptr)},
             {"interior_psnr_db", interiorFrames ? json(interiorPsnr / interiorFrames) : json(nullptr)},
+            {"lag_psnr_db", lagFrames ? json(lagPsnr / lagFrames) : json(nullptr)},
             {"psnr_vs_per_sample_db", psnrVsPerSample / n},
             {"ssim", ssim / n},
             {"max_abs_error", maxError},
@@ -227,8 +232,12 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
   const fs::path sceneDir = fs::path(options.out) / fileSafe(key);
   fs::create_directories(sceneDir);
   std::vector<FrameReference> references;
+  const bool objectsMove = std::any_of(session.scene.objects.begin(), session.scene.objects.end(),
+                                       [](const host::Object& o) { return o.velocity != glm::vec3(0.0f); });
   for (int frame : frames) {
     references.push_back(renderReference(session, session.camera(frame), options.groundTruthSamples, &options.base));
+    if (objectsMove && frame > 0)
+      markChangedSince(session, session.camera(frame - 1), options.groundTruthSamples, references.back());
     progress.step(key + " ground truth and per-sample, frame " + std::to_string(frame));
   }
   const int cropW = std::min(48, w), cropH = std::min(36, h);
@@ -273,7 +282,7 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
   html << "<h2>" << htmlEscape(scene["name"]) << "</h2>\n<p>" << htmlEscape(scene["file"]) << ", " << scene["frames"]
        << " frames</p>\n<table><tr><th>method</th><th>evals/px</th><th>GPU ms</th><th>wall ms (frame 1)</th><th>plugin "
           "overhead ms</th><th>plugin B/px</th><th>PSNR dB</th>"
-       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>interior PSNR dB</th><th>PSNR vs "
+       << "<th>edge PSNR dB</th><th>min edge PSNR</th><th>interior PSNR dB</th><th>lag PSNR dB</th><th>PSNR vs "
           "per-sample</th><th>SSIM</th><th>max "
           "err</th><th>flicker</th></tr>\n";
   for (const auto& r : scene["rows"]) {
@@ -288,6 +297,7 @@ void writeSceneHtml(std::ostringstream& html, const json& scene, int w) {
                                                             {"edge_psnr_db", 2},
                                                             {"min_edge_psnr_db", 2},
                                                             {"interior_psnr_db", 2},
+                                                            {"lag_psnr_db", 2},
                                                             {"psnr_vs_per_sample_db", 2},
                                                             {"ssim", 4},
                                                             {"max_abs_error", 3},

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -54,6 +55,31 @@ TEST(Regress, CheckFailsNamingTheFigureWhenAMethodIsDegraded) {
       out.string() + " --golden-dir " + golden.string() + " --check");
   EXPECT_EQ(otherSize.exitCode, 2);
   EXPECT_NE(otherSize.output.find("golden was made with settings"), std::string::npos) << otherSize.output;
+}
+
+// An object that moves on its own (the scene's "velocity"): the lag figure is the error on the pixels
+// whose ground truth changed since the previous frame. A history that follows the camera alone (temporal
+// without a velocity attachment) keeps the crate where it was and lags behind off; a scene where nothing
+// moves on its own has no such figure.
+TEST(Regress, AMovingObjectGivesALagFigureThatAHistoryFallsBehindOn) {
+  const fs::path out = tempDir("lag");
+  const CliRun run =
+      runCli(std::string("regress ") + RETROAA_SOURCE_DIR + "/integration-tests/scenes/moving_object.json default" +
+             " --frames 2 --stride 6 --width 96 --height 72 --gt-samples 3 --wall-frames 0 --methods off,temporal " +
+             "--out " + out.string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(out / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(in);
+  std::map<std::string, nlohmann::json> lag;
+  for (const auto& scene : report["scenes"])
+    for (const auto& row : scene["rows"])
+      lag[scene["scene"].get<std::string>() + "/" + row["method"].get<std::string>()] = row["lag_psnr_db"];
+  ASSERT_TRUE(lag["moving_object/off"].is_number()) << lag["moving_object/off"];
+  ASSERT_TRUE(lag["moving_object/temporal"].is_number());
+  std::printf("lag PSNR: off %.2f dB, temporal %.2f dB\n", lag["moving_object/off"].get<double>(),
+              lag["moving_object/temporal"].get<double>());
+  EXPECT_LT(lag["moving_object/temporal"].get<double>(), lag["moving_object/off"].get<double>() - 3.0);
+  EXPECT_TRUE(lag["default/off"].is_null()) << lag["default/off"];
 }
 
 TEST(Regress, ReportHtmlIsWellFormedAndEveryReferenceExists) {

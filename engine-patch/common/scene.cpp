@@ -295,6 +295,7 @@ int CameraPath::frameCount() const {
 
 Camera CameraPath::at(const Camera& base, int frame) const {
   Camera camera = base;
+  camera.time = frame / framesPerSecond;
   if (keys.empty()) return camera;
   const float t = keys.front().time + frame / framesPerSecond;
   size_t i = 0;
@@ -311,6 +312,8 @@ Camera CameraPath::at(const Camera& base, int frame) const {
   camera.target = glm::mix(keys[i].target, keys[i + 1].target, smooth);
   return camera;
 }
+
+glm::mat4 Object::transformAt(float time) const { return glm::translate(glm::mat4(1.0f), velocity * time) * transform; }
 
 size_t Scene::triangleCount() const {
   size_t n = 0;
@@ -370,7 +373,7 @@ void readMaterials(const Reader& root, const std::string& fileName, const std::s
 // materials) and its repeats, appended to the scene within its object, triangle and texture budgets.
 void readObject(const Reader& o, size_t i, const std::string& baseDirectory, Scene& scene, size_t& textureBudget,
                 size_t& triangles) {
-  o.expectObject({"name", "generator", "model", "material", "transform", "repeat"});
+  o.expectObject({"name", "generator", "model", "material", "transform", "velocity", "repeat"});
   Object object;
   object.name = o.has("name") ? o.child("name").string() : "object" + std::to_string(i);
   if (o.has("generator") == o.has("model")) o.fail("needs exactly one of 'generator' or 'model'");
@@ -402,6 +405,7 @@ void readObject(const Reader& o, size_t i, const std::string& baseDirectory, Sce
     if (object.material < 0) o.child("material").fail("no material named '" + materialName + "'");
   }
   if (o.has("transform")) object.transform = readTransform(o.child("transform"));
+  if (o.has("velocity")) object.velocity = o.child("velocity").vec3();
   // "repeat": {"count": n, "offset": [x,y,z]} places n copies, each shifted by offset.
   int count = 1;
   glm::vec3 offset(0);

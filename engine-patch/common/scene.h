@@ -20,6 +20,7 @@ struct Camera {
   float fovYDegrees = 50.0f;
   float nearPlane = 0.1f;   // metres
   float farPlane = 2.0e6f;  // metres
+  float time = 0;           // seconds into the scene: where objects that move are (Object::velocity)
 
   glm::mat4 view() const;
   // `jitterPixels` shifts the image by a sub-pixel offset (ground-truth supersampling).
@@ -54,7 +55,9 @@ struct Object {
   std::string name;
   Mesh mesh;
   int material = 0;
-  glm::mat4 transform{1.0f};
+  glm::mat4 transform{1.0f};  // at time 0
+  glm::vec3 velocity{0.0f};   // m/s in world space: an object that moves on its own (not the camera)
+  glm::mat4 transformAt(float time) const;
 };
 
 enum class LightType { Directional, Point, Tube };

@@ -209,7 +209,7 @@ void Renderer::drawModels(const Camera& camera, const glm::mat4& projection) {
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
     const Object& object = scene_.objects[i];
     const Material& material = scene_.materials[object.material];
-    const glm::mat4 modelView = view * object.transform;
+    const glm::mat4 modelView = view * object.transformAt(camera.time);
     setUniform(modelProgram_.uniform("uModelView"), modelView);
     setUniform(modelProgram_.uniform("uNormalMatrix"), glm::transpose(glm::inverse(glm::mat3(modelView))));
     setUniform(modelProgram_.uniform("uAlbedo"), material.albedo);

@@ -82,7 +82,8 @@ glm::mat4 SecondRenderer::projection(const Camera& camera, glm::vec2 jitterPixel
   return p;
 }
 
-void SecondRenderer::drawObjects(const Program& program, const glm::mat4& viewProjection, ObjectPass pass) const {
+void SecondRenderer::drawObjects(const Program& program, const glm::mat4& viewProjection, ObjectPass pass,
+                                 float time) const {
   glUseProgram(program.get());
   setUniform(program.uniform("uViewProjection"), viewProjection);
   setUniform(program.uniform("uExposure"), scene_.exposure);
@@ -94,8 +95,9 @@ void SecondRenderer::drawObjects(const Program& program, const glm::mat4& viewPr
                        : pass == ObjectPass::Emissive ? emits(material) && !glows
                                                       : glows;
     if (!drawn) continue;
-    setUniform(program.uniform("uModel"), object.transform);
-    setUniform(program.uniform("uNormalToWorld"), glm::transpose(glm::inverse(glm::mat3(object.transform))));
+    const glm::mat4 model = object.transformAt(time);
+    setUniform(program.uniform("uModel"), model);
+    setUniform(program.uniform("uNormalToWorld"), glm::transpose(glm::inverse(glm::mat3(model))));
     setUniform(program.uniform("uAlbedo"), material.albedo);
     setUniform(program.uniform("uSpecular"), glm::dot(material.specular, glm::vec3(1.0f / 3.0f)));
     setUniform(program.uniform("uEmissive"), material.emissive);
@@ -138,7 +140,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 hostJitter) {
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
     glEnable(GL_CULL_FACE);
-    drawObjects(geometryProgram_, viewProjection, ObjectPass::Geometry);
+    drawObjects(geometryProgram_, viewProjection, ObjectPass::Geometry, camera.time);
     glDisable(GL_CULL_FACE);
   };
   geometryInto(seams_->geometryTarget(gbufferFramebuffer_), seams_->geometryScale());
@@ -167,12 +169,12 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 hostJitter) {
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_FALSE);
   glEnable(GL_CULL_FACE);
-  drawObjects(forwardProgram_, viewProjection, ObjectPass::Emissive);
+  drawObjects(forwardProgram_, viewProjection, ObjectPass::Emissive, camera.time);
   // Glow maps over their own lit surfaces: the same depth passes, the light adds.
   glDepthFunc(GL_GEQUAL);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
-  drawObjects(forwardProgram_, viewProjection, ObjectPass::Glow);
+  drawObjects(forwardProgram_, viewProjection, ObjectPass::Glow, camera.time);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);

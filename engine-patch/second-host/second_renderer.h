@@ -78,7 +78,7 @@ class SecondRenderer : public Engine {
   // Which objects a pass draws: the G-buffer's (all but the purely emissive), the purely emissive ones
   // (forward, opaque), and the glow of lit objects whose material has an emissive map (forward, added).
   enum class ObjectPass { Geometry, Emissive, Glow };
-  void drawObjects(const Program& program, const glm::mat4& viewProjection, ObjectPass pass) const;
+  void drawObjects(const Program& program, const glm::mat4& viewProjection, ObjectPass pass, float time) const;
   void lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection);
 
   const Scene& scene_;
