@@ -324,6 +324,19 @@ TEST(PluginErrors, AnInconsistentLayoutIsInvalid) {
   auto created = retroaa::Plugin::create(description);
   ASSERT_FALSE(created);
   expectError(created.error(), retroaa::ErrorCode::InvalidLayout, "ViewPosition");
+
+  // A velocity attachment must be one of the layout's, holding floats in two channels or more.
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  description.layout.velocityAttachment = int(description.layout.attachments.size());
+  auto missing = retroaa::Plugin::create(description);
+  ASSERT_FALSE(missing);
+  expectError(missing.error(), retroaa::ErrorCode::InvalidLayout, "velocityAttachment 5 names no attachment");
+  description.layout.velocityAttachment = 3;  // the specular target: RGBA8, no floats
+  auto unorm = retroaa::Plugin::create(description);
+  ASSERT_FALSE(unorm);
+  expectError(unorm.error(), retroaa::ErrorCode::InvalidLayout, "must hold floats in at least two channels");
+  description.layout.velocityAttachment = 1;  // a float target: accepted (what it holds is the host's word)
+  EXPECT_TRUE(retroaa::Plugin::create(description));
 }
 
 // A layout without a display target: every method the registry says filters the display is refused

@@ -79,6 +79,10 @@ class Reader {
     if (!node_.is_string()) fail("expected a string");
     return node_.get<std::string>();
   }
+  bool boolean() const {
+    if (!node_.is_boolean()) fail("expected true or false");
+    return node_.get<bool>();
+  }
   glm::vec3 vec3(float minimum = -1e9f, float maximum = 1e9f) const {
     if (!node_.is_array() || node_.size() != 3) fail("expected an array of 3 numbers");
     return {element(0).number(minimum, maximum), element(1).number(minimum, maximum),
@@ -315,6 +319,10 @@ Camera CameraPath::at(const Camera& base, int frame) const {
 
 glm::mat4 Object::transformAt(float time) const { return glm::translate(glm::mat4(1.0f), velocity * time) * transform; }
 
+bool Scene::objectsMove() const {
+  return std::any_of(objects.begin(), objects.end(), [](const Object& o) { return o.velocity != glm::vec3(0.0f); });
+}
+
 size_t Scene::triangleCount() const {
   size_t n = 0;
   for (const Object& o : objects) n += o.mesh.triangleCount();
@@ -514,7 +522,8 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   const json document = parseSceneDocument(jsonText, fileName);
   const Reader root(fileName, document, "$");
   root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient", "sky_color",
-                     "star_density", "exposure", "shading", "depth_buffer", "position_depth", "comment"});
+                     "star_density", "exposure", "shading", "depth_buffer", "position_depth", "velocity_attachment",
+                     "comment"});
   Scene scene;
   scene.name = root.has("name") ? root.child("name").string() : fileName;
   if (!root.has("camera")) root.fail("missing required key 'camera'");
@@ -525,6 +534,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   if (!fitToObjects) scene.camera = readCamera(root.child("camera"));
   scene.ambient = root.vec3Or("ambient", scene.ambient, 0.0f, 1e4f);
   scene.skyColor = root.vec3Or("sky_color", scene.skyColor, 0.0f, 1e4f);
+  if (root.has("velocity_attachment")) scene.velocityAttachmentAllowed = root.child("velocity_attachment").boolean();
   scene.starDensity = root.numberOr("star_density", scene.starDensity, 0.0f, 10.0f);
   scene.exposure = root.numberOr("exposure", scene.exposure, 1e-4f, 1e4f);
   scene.shading = root.has("shading") ? namedValue<ShadingModel>(

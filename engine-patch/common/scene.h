@@ -96,6 +96,10 @@ struct Scene {
   ShadingModel shading = ShadingModel::BlinnPhong;
   DepthBuffer depthBuffer = DepthBuffer::Logarithmic;
   PositionDepth positionDepth = PositionDepth::LogAboveKnee;
+  // The FSO-shaped host's model pass also writes each pixel's screen motion (a velocity attachment) when
+  // an object moves on its own, unless the scene says "velocity_attachment": false.
+  bool velocityAttachmentAllowed = true;
+  bool objectsMove() const;
   size_t triangleCount() const;
 };
 

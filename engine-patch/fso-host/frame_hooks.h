@@ -17,8 +17,9 @@ struct HostTargets {
   GLuint gbufferFramebuffer = 0;                                           // attachments 0..4 + depth-stencil
   GLuint color = 0, position = 0, normal = 0, specular = 0, emissive = 0;  // textures
   GLuint depthStencil = 0;                                                 // DEPTH24_STENCIL8 texture
-  GLuint lightFramebuffer = 0, lightTexture = 0;                           // RGBA16F light accumulation ("composite")
-  GLuint displayFramebuffer = 0, displayTexture = 0;                       // RGBA8 tonemapped output
+  GLuint velocity = 0;  // RG16F attachment 5: screen motion in pixels (this − previous); 0: not written
+  GLuint lightFramebuffer = 0, lightTexture = 0;      // RGBA16F light accumulation ("composite")
+  GLuint displayFramebuffer = 0, displayTexture = 0;  // RGBA8 tonemapped output
   bool logarithmicDepth = true;        // depth buffer holds log2(d/near)/log2(far/near), else perspective depth
   bool fsoCompressedPosition = false;  // position z is FSO's compressed view z (fso_z), else depth_codec
   float globalFarZ = 2.0e6f;           // metres: FSO's GLOBAL_FAR_Z for fso_z (the camera's far plane)

@@ -54,19 +54,23 @@ void Renderer::createTargets(int width, int height) {
   depthStencil_ = makeTexture2D(GL_DEPTH24_STENCIL8, width, height, "host.gbuffer.depth_stencil");
   light_ = makeTexture2D(GL_RGBA16F, width, height, "host.light");
   display_ = makeTexture2D(GL_RGBA8, width, height, "host.display");
+  // Objects that move on their own: the model pass writes their motion too (engines with TAA do).
+  const bool writesVelocity = scene_.objectsMove() && scene_.velocityAttachmentAllowed;
+  velocity_ = writesVelocity ? makeTexture2D(GL_RG16F, width, height, "host.gbuffer.velocity") : Texture();
 
   GLuint fbos[3];
   glCreateFramebuffers(3, fbos);
   gbufferFramebuffer_ = Framebuffer(fbos[0]);
   lightFramebuffer_ = Framebuffer(fbos[1]);
   displayFramebuffer_ = Framebuffer(fbos[2]);
-  const GLuint attachments[] = {color_, position_, normal_, specular_, emissive_};
-  GLenum drawBuffers[5];
-  for (int i = 0; i < 5; ++i) {
+  const GLuint attachments[] = {color_, position_, normal_, specular_, emissive_, velocity_};
+  const int attachmentCount = writesVelocity ? 6 : 5;
+  GLenum drawBuffers[6];
+  for (int i = 0; i < attachmentCount; ++i) {
     glNamedFramebufferTexture(gbufferFramebuffer_, GL_COLOR_ATTACHMENT0 + i, attachments[i], 0);
     drawBuffers[i] = GL_COLOR_ATTACHMENT0 + i;
   }
-  glNamedFramebufferDrawBuffers(gbufferFramebuffer_, 5, drawBuffers);
+  glNamedFramebufferDrawBuffers(gbufferFramebuffer_, attachmentCount, drawBuffers);
   glNamedFramebufferTexture(gbufferFramebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_, 0);
   glNamedFramebufferTexture(lightFramebuffer_, GL_COLOR_ATTACHMENT0, light_, 0);
   glNamedFramebufferTexture(displayFramebuffer_, GL_COLOR_ATTACHMENT0, display_, 0);
@@ -86,6 +90,7 @@ void Renderer::createTargets(int width, int height) {
                          specular_,
                          emissive_,
                          depthStencil_,
+                         velocity_,
                          lightFramebuffer_,
                          light_,
                          displayFramebuffer_,
@@ -117,6 +122,11 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   const int width = targets_.width, height = targets_.height;
   const glm::mat4 view = camera.view();
   const glm::mat4 projection = camera.projection(width, height, jitterPixels + hooks_->projectionJitter());
+  // The velocity attachment's two frames, without jitter (the first frame: no motion).
+  motion_.current = camera.projection(width, height) * view, motion_.currentTime = camera.time;
+  motion_.previous = hasPrevious_ ? previousViewProjection_ : motion_.current;
+  motion_.previousTime = hasPrevious_ ? previousTime_ : camera.time;
+  previousViewProjection_ = motion_.current, previousTime_ = camera.time, hasPrevious_ = true;
   applyTextureLodBias(hooks_->textureLodBias());
   GLuint timestamps[5] = {};
   if (measureTime) glGenQueries(5, timestamps);
@@ -133,7 +143,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   const float zero[4] = {0, 0, 0, 0};
-  for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(modelTarget, GL_COLOR, i, zero);
+  for (int i = 0; i < attachmentCount(); ++i) glClearNamedFramebufferfv(modelTarget, GL_COLOR, i, zero);
   glClearNamedFramebufferfi(modelTarget, GL_DEPTH_STENCIL, 0, 1.0f, 0);
 
   // The sky goes into emissive first (FSO copies what was drawn before the models there).
@@ -168,7 +178,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
     glViewport(0, 0, width, height);
     glDepthMask(GL_TRUE);
     // Draw buffers the target leaves GL_NONE ignore both the clear and the writes.
-    for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(target, GL_COLOR, i, zero);
+    for (int i = 0; i < attachmentCount(); ++i) glClearNamedFramebufferfv(target, GL_COLOR, i, zero);
     glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, 0);
     drawModels(camera, projection);
     glPopDebugGroup();
@@ -206,11 +216,14 @@ void Renderer::drawModels(const Camera& camera, const glm::mat4& projection) {
   setUniform(modelProgram_.uniform("uProjection"), projection);
   setUniform(modelProgram_.uniform("uNear"), camera.nearPlane);
   setUniform(modelProgram_.uniform("uFar"), camera.farPlane);
+  setUniform(modelProgram_.uniform("uViewportPixels"), glm::vec2(targets_.width, targets_.height));
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
     const Object& object = scene_.objects[i];
     const Material& material = scene_.materials[object.material];
     const glm::mat4 modelView = view * object.transformAt(camera.time);
     setUniform(modelProgram_.uniform("uModelView"), modelView);
+    setUniform(modelProgram_.uniform("uCurrentClip"), motion_.current * object.transformAt(motion_.currentTime));
+    setUniform(modelProgram_.uniform("uPreviousClip"), motion_.previous * object.transformAt(motion_.previousTime));
     setUniform(modelProgram_.uniform("uNormalMatrix"), glm::transpose(glm::inverse(glm::mat3(modelView))));
     setUniform(modelProgram_.uniform("uAlbedo"), material.albedo);
     setUniform(modelProgram_.uniform("uSpecular"), material.specular);

@@ -21,6 +21,10 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
                         {AttachmentRole::NormalGloss, GL_RGBA16F, targets.normal},
                         {AttachmentRole::Specular, GL_RGBA8, targets.specular},
                         {AttachmentRole::Emissive, GL_RGBA16F, targets.emissive}};
+  if (targets.velocity) {  // written where objects move on their own: `temporal` follows it
+    layout.attachments.push_back({AttachmentRole::Other, GL_RG16F, targets.velocity});
+    layout.velocityAttachment = int(layout.attachments.size()) - 1;
+  }
   layout.depthChannel = 2;
   if (targets.fsoCompressedPosition) {  // FreeSpace Open's own z-compress.sdr
     layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::FsoCompressedViewZ;

@@ -35,6 +35,20 @@ Status validateLayout(const GBufferLayout& layout) {
         (depthInPosition && positions == 0 ? "; a host without one sets depthSource = DepthSource::DepthBuffer" : ""));
   if (normals > 1) return invalid("layout has " + std::to_string(normals) + " NormalGloss attachments (at most one)");
   if (layout.depthChannel < 0 || layout.depthChannel > 3) return invalid("depthChannel must be 0..3");
+  if (layout.velocityAttachment >= int(layout.attachments.size()))
+    return invalid("velocityAttachment " + std::to_string(layout.velocityAttachment) + " names no attachment (has " +
+                   std::to_string(layout.attachments.size()) + ")");
+  if (layout.velocityAttachment >= 0) {
+    const GLuint velocity = layout.attachments[size_t(layout.velocityAttachment)].texture;
+    GLint redType = 0, greenBits = 0;
+    if (glIsTexture(velocity)) {
+      glGetTextureLevelParameteriv(velocity, 0, GL_TEXTURE_RED_TYPE, &redType);
+      glGetTextureLevelParameteriv(velocity, 0, GL_TEXTURE_GREEN_SIZE, &greenBits);
+    }
+    if (redType != GL_FLOAT || greenBits == 0)
+      return invalid("velocityAttachment " + std::to_string(layout.velocityAttachment) +
+                     " must hold floats in at least two channels (e.g. GL_RG16F)");
+  }
   const DepthEncoding& depth = layout.depthEncoding;
   if (depth.kind == DepthEncoding::Kind::LogAboveKnee && !(depth.knee > 0 && std::isfinite(depth.knee)))
     return invalid("depthEncoding.knee must be a positive number of metres");

@@ -7,12 +7,15 @@
 // Writes the pixel (location 0) and the new history (location 1: linear colour, view depth in w).
 //
 // Defines: LINEAR_INPUT (the display is read through its sRGB view, which the texture unit decodes, so
-// the output is encoded again) and the depth buffer's encoding. The history always holds linear colour.
+// the output is encoded again), HAS_VELOCITY (the layout's velocity attachment: geometry follows it
+// instead of the camera, so objects that move on their own keep their history) and the depth buffer's
+// encoding. The history always holds linear colour.
 #include "common/depth_buffer.glsl"
 
 layout(binding = 0) uniform sampler2D uInput;    // a copy of this frame (display or light target)
 layout(binding = 1) uniform sampler2D uHistory;  // the previous output, bilinear; w the view depth (m), -1 sky
 layout(binding = 2) uniform sampler2D uDepth;    // the host's single-sample depth buffer
+layout(binding = 3) uniform sampler2D uVelocity;  // HAS_VELOCITY: the host's screen motion (px, this − previous)
 
 uniform mat4 uViewToPreviousClip;  // previous projection × previous view × inverse(this view)
 uniform vec4 uProjection;          // P[0][0], P[1][1], P[2][0], P[2][1] of this frame's unjittered projection
@@ -132,6 +135,11 @@ void main() {
   vec4 viewPoint = sky ? vec4(ray, zPerDepth, 0.0) : vec4(ray * depth, zPerDepth * depth, 1.0);
   vec4 previousClip = uViewToPreviousClip * viewPoint;
   vec2 previousUv = previousClip.xy / previousClip.w * 0.5 + 0.5;
+#if HAS_VELOCITY
+  // The host's own motion, for geometry (the sky keeps the camera's: no model pass drew it). The depth
+  // test below still expects the camera's depth: an object that moves across the view keeps its own.
+  if (!sky) previousUv = (vec2(pixel) + 0.5 - texelFetch(uVelocity, pixel, 0).xy) / vec2(last + 1);
+#endif
   // A perspective projection's clip w is the view depth.
   float expectedDepth = sky ? kSkyDepth : previousClip.w;
 

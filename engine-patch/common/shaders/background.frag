@@ -34,4 +34,5 @@ void main() {
   outNormal = vec4(0.0);
   outSpecular = vec4(0.0);
   outEmissive = vec4(sky, 1.0);
+  outVelocity = vec4(0.0);  // the sky reprojects by the camera
 }

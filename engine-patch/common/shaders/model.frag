@@ -6,6 +6,8 @@ in vec3 vViewPosition;
 in vec3 vNormal;
 in vec2 vUv;
 in vec4 vTangent;
+in vec4 vCurrentClip, vPreviousClip;
+uniform vec2 uViewportPixels;
 uniform vec3 uAlbedo;
 uniform vec3 uSpecular;
 uniform float uGloss;
@@ -22,6 +24,8 @@ void main() {
   outNormal = vec4(n, uGloss * specular.a);
   outSpecular = vec4(uSpecular * specular.rgb, 1.0);
   outEmissive = vec4(uEmissive * emissiveAt(vUv), 1.0);
+  outVelocity = vec4((vCurrentClip.xy / vCurrentClip.w - vPreviousClip.xy / vPreviousClip.w) * 0.5 * uViewportPixels,
+                     0.0, 0.0);
 #ifdef LOGARITHMIC_DEPTH
   // Logarithmic depth: D24 keeps ~1e-6 relative precision from the near plane to 1e6 m. (It costs
   // early depth tests, and every sample of a primitive gets the pixel's depth.)

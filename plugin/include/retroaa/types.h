@@ -104,6 +104,12 @@ struct GBufferLayout {
   // `reconstruct`'s prepass then keeps x and y alone (RG16F, 4 B a sample) and rebuilds z; otherwise
   // (world space, or any other) it keeps the whole normal in the attachment's own format.
   bool normalsInViewSpace = false;
+  // `temporal`: the attachment (index into `attachments`, any role, a float format of two or more
+  // channels) where the model pass writes each pixel's screen motion since the previous frame: xy =
+  // this frame's position − the previous frame's, in pixels, both without jitter, camera and object
+  // motion together. Its geometry pixels then fetch their history there, so objects that move on their
+  // own keep theirs; background pixels reproject by the camera. -1: none, the camera alone.
+  int velocityAttachment = -1;
   GlossEncoding glossEncoding;
   DepthBufferEncoding depthBufferEncoding = DepthBufferEncoding::Perspective;
   GLuintHandle gbufferFramebuffer = 0;   // the host's single-sample G-buffer (attachments + depth)

@@ -137,9 +137,10 @@ class TemporalTechnique : public Technique {
     }
     auto program =
         context.shaders->program("common/fullscreen.vert", "temporal/temporal.frag",
-                                 depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_),
+                                 depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_) +
+                                     defineLine("HAS_VELOCITY", layout.velocityAttachment >= 0),
                                  {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ",
-                                  "uBlend", "uHistoryValid", "uInput", "uHistory", "uDepth"});
+                                  "uBlend", "uHistoryValid", "uInput", "uHistory", "uDepth", "uVelocity"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -215,6 +216,8 @@ class TemporalTechnique : public Technique {
     program_.bindTexture("uInput", input);
     program_.bindTexture("uHistory", history_[previous].get());
     program_.bindTexture("uDepth", layout.depthStencilTexture);
+    if (layout.velocityAttachment >= 0)
+      program_.bindTexture("uVelocity", layout.attachments[size_t(layout.velocityAttachment)].texture);
     for (const char* filtered : {"uInput", "uHistory"})  // their textures' own filtering: no post pass's sampler
       if (const int unit = program_.unit(filtered); unit >= 0) glBindSampler(GLuint(unit), 0);
     program_.setMatrix4("uViewToPreviousClip", viewToPreviousClip.data());
