@@ -24,8 +24,11 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
                                const retroaa::Config* perSampleBase) {
   const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, samplesPerAxis);
   const int w = session.renderer->width(), h = session.renderer->height();
-  FrameReference reference{truth.display, DisplayImage::fromRgba8(w, h, truth.display),
-                           edgeMaskFromSpread(truth.lumaStdDev), std::nullopt, {}};
+  FrameReference reference{truth.display,
+                           DisplayImage::fromRgba8(w, h, truth.display),
+                           edgeMaskFromSpread(truth.lumaStdDev),
+                           std::nullopt,
+                           {}};
   if (perSampleBase) {
     retroaa::Config config = *perSampleBase;
     config.method = retroaa::Method::PerSample;

@@ -59,9 +59,9 @@ class RETROAA_API Plugin {
   GLuintHandle multisampledAttachment(AttachmentRole role) const;
   // For `coverage` and `reconstruct`: a multisampled framebuffer the host draws its models into once
   // more, after the model pass, with its own model shaders and colour writes on. Clear its depth to the far
-  // value and its draw buffers 0 … K−1 (K: the layout's attachments) to 0 first. Its depth is always kept; `reconstruct` also keeps the output at the
-  // NormalGloss attachment's location (every other draw buffer is GL_NONE). 0 when the method needs no
-  // such pass. Valid until the next reconfigure() or resize().
+  // value and its draw buffers 0 … K−1 (K: the layout's attachments) to 0 first. Its depth is always kept;
+  // `reconstruct` also keeps the output at the NormalGloss attachment's location (every other draw buffer is GL_NONE).
+  // 0 when the method needs no such pass. Valid until the next reconfigure() or resize().
   GLuintHandle prepassFramebuffer() const;
   // Where `temporal` runs (as the method or stacked): this frame's sub-pixel offset of the projection,
   // Halton (2, 3) over temporal_jitter_length frames; (0, 0) otherwise. Call it once before the model
