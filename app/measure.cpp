@@ -40,12 +40,12 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
   return reference;
 }
 
-void markChangedSince(Session& session, const host::Camera& previous, int samplesPerAxis, FrameReference& reference) {
-  const host::GroundTruth before = host::renderGroundTruth(*session.renderer, previous, samplesPerAxis);
+void markChangedSince(const std::vector<uint8_t>& previousTruthRgba, FrameReference& reference) {
   reference.changed.assign(reference.truthRgba.size() / 4, 0);
   for (size_t p = 0; p < reference.changed.size(); ++p)
     for (size_t c = 0; c < 3; ++c)
-      if (std::abs(int(before.display[p * 4 + c]) - int(reference.truthRgba[p * 4 + c])) > 4) reference.changed[p] = 1;
+      if (std::abs(int(previousTruthRgba[p * 4 + c]) - int(reference.truthRgba[p * 4 + c])) > 4)
+        reference.changed[p] = 1;
 }
 
 double measureWallMs(Session& session, const host::Camera& camera, int frames) {

@@ -28,9 +28,9 @@ struct FrameReference {
 // `perSampleBase`, the per-sample render under that config (its method and FXAA replaced).
 FrameReference renderReference(Session& session, const host::Camera& camera, int samplesPerAxis,
                                const retroaa::Config* perSampleBase);
-// Fills `reference.changed`: the pixels whose ground truth at `previous` (the frame before) differs from
-// `reference`'s by more than 4/255 in a channel.
-void markChangedSince(Session& session, const host::Camera& previous, int samplesPerAxis, FrameReference& reference);
+// Fills `reference.changed`: the pixels where `previousTruthRgba` (the frame before's ground truth, display
+// RGBA8 top-down) differs from `reference`'s by more than 4/255 in a channel.
+void markChangedSince(const std::vector<uint8_t>& previousTruthRgba, FrameReference& reference);
 
 struct Measurement {
   std::vector<uint8_t> display;  // RGBA8 top-down, of the last frame

@@ -232,12 +232,18 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
   const fs::path sceneDir = fs::path(options.out) / fileSafe(key);
   fs::create_directories(sceneDir);
   std::vector<FrameReference> references;
-  const bool objectsMove = std::any_of(session.scene.objects.begin(), session.scene.objects.end(),
-                                       [](const host::Object& o) { return o.velocity != glm::vec3(0.0f); });
   for (int frame : frames) {
     references.push_back(renderReference(session, session.camera(frame), options.groundTruthSamples, &options.base));
-    if (objectsMove && frame > 0)
-      markChangedSince(session, session.camera(frame - 1), options.groundTruthSamples, references.back());
+    if (session.scene.objectsMove() && frame > 0) {
+      // The frame before's ground truth: the previous reference's where the run renders every frame.
+      const bool previousMeasured = references.size() > 1 && frames[references.size() - 2] == frame - 1;
+      if (previousMeasured)
+        markChangedSince(references[references.size() - 2].truthRgba, references.back());
+      else
+        markChangedSince(
+            host::renderGroundTruth(*session.renderer, session.camera(frame - 1), options.groundTruthSamples).display,
+            references.back());
+    }
     progress.step(key + " ground truth and per-sample, frame " + std::to_string(frame));
   }
   const int cropW = std::min(48, w), cropH = std::min(36, h);

@@ -123,10 +123,10 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   const glm::mat4 view = camera.view();
   const glm::mat4 projection = camera.projection(width, height, jitterPixels + hooks_->projectionJitter());
   // The velocity attachment's two frames, without jitter (the first frame: no motion).
-  motion_.current = camera.projection(width, height) * view, motion_.currentTime = camera.time;
-  motion_.previous = hasPrevious_ ? previousViewProjection_ : motion_.current;
-  motion_.previousTime = hasPrevious_ ? previousTime_ : camera.time;
-  previousViewProjection_ = motion_.current, previousTime_ = camera.time, hasPrevious_ = true;
+  const glm::mat4 viewProjection = camera.projection(width, height) * view;
+  motion_.previous = hasPrevious_ ? motion_.current : viewProjection;
+  motion_.previousTime = hasPrevious_ ? motion_.currentTime : camera.time;
+  motion_.current = viewProjection, motion_.currentTime = camera.time, hasPrevious_ = true;
   applyTextureLodBias(hooks_->textureLodBias());
   GLuint timestamps[5] = {};
   if (measureTime) glGenQueries(5, timestamps);

@@ -56,14 +56,13 @@ class Renderer : public Engine {
   FrameHooks* suspendedHooks_ = nullptr;  // the installed hooks while setStockPath(true)
   HostTargets targets_;
   Texture color_, position_, normal_, specular_, emissive_, depthStencil_, light_, display_, velocity_;
-  // The previous frame's unjittered view-projection and scene time, for the velocity attachment.
-  glm::mat4 previousViewProjection_{1.0f};
-  float previousTime_ = 0;
-  bool hasPrevious_ = false;
-  struct Motion {  // this frame's and the previous frame's unjittered view-projection and time
+  // This frame's and the previous frame's unjittered view-projection and scene time, for the velocity
+  // attachment (the first frame has no previous one).
+  struct Motion {
     glm::mat4 current{1.0f}, previous{1.0f};
     float currentTime = 0, previousTime = 0;
   } motion_;
+  bool hasPrevious_ = false;
   int attachmentCount() const { return targets_.velocity ? 6 : 5; }
   Framebuffer gbufferFramebuffer_, lightFramebuffer_, displayFramebuffer_;
   Program modelProgram_, backgroundProgram_, ambientProgram_, pointProgram_, emissiveProgram_, tonemapProgram_;

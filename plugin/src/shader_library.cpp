@@ -40,7 +40,6 @@ GLuint compile(GLenum stage, const std::string& source, std::string& log) {
   return 0;
 }
 
-// Whether a line of `source` declares a uniform called `name` (whole identifier).
 bool isSampler(GLenum type) {
   switch (type) {
     case GL_SAMPLER_2D:
@@ -108,6 +107,7 @@ std::string samplerUnitProblem(const std::vector<std::pair<std::string, int>>& s
   return "";
 }
 
+// Whether a line of `source` declares a uniform called `name` (whole identifier).
 bool declaresUniform(const std::string& source, const std::string& name) {
   auto isIdentifier = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   std::istringstream lines(source);
