@@ -66,6 +66,15 @@ struct CommandLine {
     sub->add_flag("--post_process_aa", postProcessAa,
                   "FreeSpace Open's -post_process_aa (SMAA low unless --aa_preset)");
   }
+  // The config options, and a command that runs with the config they build as its options' base.
+  template <typename Options>
+  void addConfiguredCommand(CLI::App* sub, std::shared_ptr<Options> options, int (*run)(const Options&)) {
+    addConfigOptions(sub);
+    commands.push_back({sub, [options, run](const retroaa::Config& config) {
+                          options->base = config;
+                          return run(*options);
+                        }});
+  }
   retroaa::Config config() {
     if (!samples.empty()) sets.insert(sets.begin(), "samples=" + samples);
     return buildConfig(configFile, sets, msaa, aaPreset, postProcessAa);
@@ -74,53 +83,57 @@ struct CommandLine {
 
 const char* kMethodsHelp = "comma-separated method specs; 'all' (every method and variant), 'each' (one per method)";
 
+void addHostOption(CLI::App* sub, std::string& host) {
+  sub->add_option("--host", host, "host engine: fso (FreeSpace Open-shaped) or second (docs/integration.md)")
+      ->check(CLI::IsMember({"fso", "second"}));
+}
+void addGroundTruthOption(CLI::App* sub, int& samplesPerAxis) {
+  sub->add_option("--gt-samples", samplesPerAxis, "ground truth supersamples per axis")->check(CLI::Range(1, 32));
+}
+// --methods, --width, --height and --gt-samples of a command that measures methods against ground truth.
+template <typename Options>
+void addMeasureOptions(CommandLine& line, CLI::App* sub, Options& options) {
+  sub->add_option("--methods", options.methods, kMethodsHelp);
+  line.addSizeOptions(sub, options.width, options.height);
+  addGroundTruthOption(sub, options.groundTruthSamples);
+}
+void addWallFramesOption(CLI::App* sub, int& frames, const std::string& whichFrames) {
+  sub->add_option("--wall-frames", frames,
+                  "back-to-back frames per method (" + whichFrames + "), statistics off, for wall_ms (0: skip)")
+      ->check(CLI::Range(0, 10000));
+}
+
 void addRender(CommandLine& line) {
   auto options = std::make_shared<app::RenderOptions>();
   CLI::App* sub = line.cli.add_subcommand("render", "render one frame headless");
-  sub->add_option("--host", options->host, "host engine: fso (FreeSpace Open-shaped) or second (docs/integration.md)")
-      ->check(CLI::IsMember({"fso", "second"}));
+  addHostOption(sub, options->host);
   sub->add_option("--scene", options->scene, "scene file, or 'default'");
   sub->add_option("--method", options->method,
                   "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
   line.addSizeOptions(sub, options->width, options->height);
   sub->add_option("--frame", options->frame, "camera path frame (default: the scene camera)");
-  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")
-      ->check(CLI::Range(1, 32));
+  addGroundTruthOption(sub, options->groundTruthSamples);
   sub->add_option("--out", options->out, "output image (.png display, .exr linear radiance)")->required();
   sub->add_option("--heatmap", options->heatmap, "also write the error against ground truth as a heat map");
   sub->add_option("--show", options->show,
                   "write a visualisation instead: edges | samples | aggregates (lighting evaluations per pixel)");
-  line.addConfigOptions(sub);
-  line.commands.push_back({sub, [options](const retroaa::Config& config) {
-                             options->base = config;
-                             return app::runRender(*options);
-                           }});
+  line.addConfiguredCommand(sub, options, app::runRender);
 }
 
 void addBench(CommandLine& line) {
   auto options = std::make_shared<app::BenchOptions>();
   CLI::App* sub = line.cli.add_subcommand("bench", "every method on one frame: speed against error");
-  sub->add_option("--host", options->host, "host engine: fso (FreeSpace Open-shaped) or second (docs/integration.md)")
-      ->check(CLI::IsMember({"fso", "second"}));
+  addHostOption(sub, options->host);
   sub->add_option("--scene", options->scene, "scene file, or 'default'");
-  sub->add_option("--methods", options->methods, kMethodsHelp);
-  line.addSizeOptions(sub, options->width, options->height);
+  addMeasureOptions(line, sub, *options);
   sub->add_option("--frame", options->frame, "camera path frame (default: the scene camera)");
-  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")
-      ->check(CLI::Range(1, 32));
   sub->add_option("--repeats", options->repeats, "timed frames per method (median)")->check(CLI::Range(1, 100));
-  sub->add_option("--wall-frames", options->wallFrames,
-                  "back-to-back frames per method, statistics off, for wall_ms (0: skip)")
-      ->check(CLI::Range(0, 10000));
+  addWallFramesOption(sub, options->wallFrames, "the one frame");
   sub->add_option("--json", options->json, "write the rows as JSON");
   sub->add_option("--csv", options->csv, "write the rows as CSV");
   sub->add_option("--report", options->report, "write a Markdown report");
   sub->add_option("--images", options->imagesDirectory, "write each method's image and error heat map here");
-  line.addConfigOptions(sub);
-  line.commands.push_back({sub, [options](const retroaa::Config& config) {
-                             options->base = config;
-                             return app::runBench(*options);
-                           }});
+  line.addConfiguredCommand(sub, options, app::runBench);
 }
 
 void addRecord(CommandLine& line) {
@@ -144,29 +157,19 @@ void addRegress(CommandLine& line) {
   auto options = std::make_shared<app::RegressOptions>();
   CLI::App* sub =
       line.cli.add_subcommand("regress", "every frame of recorded demo scenes with every method: report and goldens");
-  sub->add_option("--host", options->host, "host engine: fso (FreeSpace Open-shaped) or second (docs/integration.md)")
-      ->check(CLI::IsMember({"fso", "second"}));
+  addHostOption(sub, options->host);
   sub->add_option("scenes", options->scenes, "scene files (default: the five recorded scenes)");
-  sub->add_option("--methods", options->methods, kMethodsHelp);
-  line.addSizeOptions(sub, options->width, options->height);
-  sub->add_option("--gt-samples", options->groundTruthSamples, "ground truth supersamples per axis")
-      ->check(CLI::Range(1, 32));
+  addMeasureOptions(line, sub, *options);
   sub->add_option("--stride", options->frameStride, "every n-th frame of each path")->check(CLI::Range(1, 1000));
   sub->add_option("--frames", options->maxFrames, "at most this many frames per scene (0: all)")
       ->check(CLI::Range(0, 100000));
-  sub->add_option("--wall-frames", options->wallFrames,
-                  "back-to-back frames of each scene's first frame per method, statistics off, for wall_ms (0: skip)")
-      ->check(CLI::Range(0, 10000));
+  addWallFramesOption(sub, options->wallFrames, "each scene's first frame");
   sub->add_option("--out", options->out, "report folder");
   sub->add_option("--golden-dir", options->goldenDirectory,
                   "where the goldens live (default: the source tree's integration-tests/golden)");
   sub->add_flag("--check", options->check, "compare with the goldens; exit 1 naming each figure that got worse");
   sub->add_flag("--update-golden", options->updateGolden, "rewrite the goldens from this run");
-  line.addConfigOptions(sub);
-  line.commands.push_back({sub, [options](const retroaa::Config& config) {
-                             options->base = config;
-                             return app::runRegress(*options);
-                           }});
+  line.addConfiguredCommand(sub, options, app::runRegress);
 }
 
 void addSoak(CommandLine& line) {
@@ -188,11 +191,7 @@ void addView(CommandLine& line) {
   line.addSizeOptions(sub, options->width, options->height);
   sub->add_option("--script", options->script, "timed actions with a fixed time step (docs/viewer.md)");
   sub->add_option("--record-path", options->recordPath, "where R writes the recorded camera path");
-  line.addConfigOptions(sub);
-  line.commands.push_back({sub, [options](const retroaa::Config& config) {
-                             options->base = config;
-                             return app::runView(*options);
-                           }});
+  line.addConfiguredCommand(sub, options, app::runView);
 #else
   (void)line;
 #endif
@@ -211,7 +210,7 @@ void addTune(CommandLine& line) {
   sub->add_option("--candidates", options->candidates,
                   "comma-separated method specs (default: 'grid', the registry's)");
   line.addSizeOptions(sub, options->width, options->height);
-  sub->add_option("--gt-samples", options->groundTruthSamples)->check(CLI::Range(1, 32));
+  addGroundTruthOption(sub, options->groundTruthSamples);
   sub->add_option("--frames", options->frames, "frames of each scene's path")->check(CLI::Range(1, 10000));
   sub->add_option("--out", options->out, "the config file to write (a report beside it: .md, .json)");
   sub->add_option("--cache", options->cache, "measured points, reused by later runs");

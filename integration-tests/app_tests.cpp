@@ -71,14 +71,9 @@ TEST(Cli, RenderWritesPngWithMetadataAndExr) {
 }
 
 TEST(Cli, BenchWritesEveryRowWithTheFieldsReportsNeed) {
-  const std::string json = temp("bench.json");
-  const CliRun r = runCli(
-      "bench --methods off,fxaa,resolve,per-sample --width 64 --height 48 --gt-samples 4 --repeats 1 "
-      "--wall-frames 3 --json " +
-      json);
+  const auto [r, document] = runBench(
+      "--methods off,fxaa,resolve,per-sample --width 64 --height 48 --gt-samples 4 --repeats 1 --wall-frames 3");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  std::ifstream in(json);
-  const nlohmann::json document = nlohmann::json::parse(in);
   ASSERT_EQ(document["rows"].size(), 4u);
   EXPECT_GE(document["gl_max_samples"].get<int>(), 1);
   EXPECT_GT(document["copy_gb_per_s"].get<double>(), 0.0);
@@ -199,12 +194,9 @@ TEST(Cli, EdgeFiguresOfAFrameWithoutEdgesAreNotApplicable) {
   const std::string scene = temp("sky-only.json");
   std::ofstream(scene) << R"({"camera": {"position": [0,0,5], "target": [0,0,0]}, "materials": [{"name": "m"}],
                              "objects": [], "star_density": 0})";
-  const std::string json = temp("sky-only-bench.json");
-  const CliRun r = runCli("bench --scene " + scene +
-                          " --methods off,edge --width 48 --height 32 --gt-samples 2 --repeats 1 --json " + json);
+  const auto [r, document] =
+      runBench("--scene " + scene + " --methods off,edge --width 48 --height 32 --gt-samples 2 --repeats 1");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  std::ifstream in(json);
-  const nlohmann::json document = nlohmann::json::parse(in);
   EXPECT_EQ(document["edge_pixels"], 0);
   EXPECT_EQ(document["shading_floor_evals_per_pixel"].get<double>(), 1.0) << "one surface (the sky) per pixel";
   for (const auto& row : document["rows"]) {

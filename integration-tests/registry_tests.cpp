@@ -65,6 +65,13 @@ void expectError(const retroaa::Error& error, retroaa::ErrorCode code, const std
   EXPECT_NE(error.message.find(fragment), std::string::npos) << error.message;
 }
 
+// A description of `host`'s G-buffer, every setting its default.
+retroaa::Description describedHost(const PatchedHost& host) {
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  return description;
+}
+
 }  // namespace
 
 TEST(Registry, ATechniqueInOneFileAndOneRowRunsThroughEveryLayer) {
@@ -185,8 +192,7 @@ TEST(PluginErrors, ShadeWithoutResolveIsAWrongCallOrder) {
 
 TEST(PluginErrors, ATargetTheDriverRefusesIsAnIncompleteFramebuffer) {
   PatchedHost host("default", 32, 24);
-  retroaa::Description description;
-  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  retroaa::Description description = describedHost(host);
   description.layout.attachments[0].internalFormat = GL_RGB9_E5;  // shared-exponent: not colour-renderable
   description.config.method = retroaa::Method::Resolve;
   auto created = retroaa::Plugin::create(description);
@@ -204,8 +210,7 @@ TEST(PluginLayout, UnsizedFormatsTakeTheSizedOnesOfTheHostsOwnObjects) {
   glBindTexture(GL_TEXTURE_2D, 0);
   glCreateRenderbuffers(1, &depth);
   glNamedRenderbufferStorage(depth, GL_DEPTH_COMPONENT, 32, 24);
-  retroaa::Description description;
-  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  retroaa::Description description = describedHost(host);
   description.layout.attachments[3] = {retroaa::AttachmentRole::Specular, GL_RGBA, specular};
   description.layout.depthStencilTexture = 0;
   description.layout.depthStencilRenderbuffer = depth;
@@ -307,8 +312,7 @@ TEST(PluginErrors, AContextBelowGl45IsUnsupported) {
   eglBindAPI(EGL_OPENGL_API);
   if (es == EGL_NO_CONTEXT) GTEST_FAIL() << "the EGL display offers no OpenGL ES 3 context to test with";
   ASSERT_TRUE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, es));
-  retroaa::Description description;
-  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  retroaa::Description description = describedHost(host);
   auto created = retroaa::Plugin::create(description);
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, previous);
   eglDestroyContext(display, es);
@@ -318,8 +322,7 @@ TEST(PluginErrors, AContextBelowGl45IsUnsupported) {
 
 TEST(PluginErrors, AnInconsistentLayoutIsInvalid) {
   PatchedHost host("default", 32, 24);
-  retroaa::Description description;
-  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  retroaa::Description description = describedHost(host);
   description.layout.attachments[1].role = retroaa::AttachmentRole::Other;  // no ViewPosition left
   auto created = retroaa::Plugin::create(description);
   ASSERT_FALSE(created);
@@ -343,8 +346,7 @@ TEST(PluginErrors, AnInconsistentLayoutIsInvalid) {
 // naming it, every other method runs; a stacked filter is refused on any method.
 TEST(PluginErrors, AMethodThatFiltersTheDisplayNeedsADisplayTarget) {
   PatchedHost host("default", 32, 24);
-  retroaa::Description description;
-  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  retroaa::Description description = describedHost(host);
   description.layout.displayFramebuffer = description.layout.displayTexture = 0;
   int filtering = 0;
   for (const retroaa::MethodInfo& row : retroaa::methodTable()) {
@@ -368,8 +370,7 @@ TEST(PluginErrors, AMethodThatFiltersTheDisplayNeedsADisplayTarget) {
 
 TEST(PluginErrors, DepthEncodingsOutsideTheirDomainAreInvalid) {
   PatchedHost host("default", 32, 24);
-  retroaa::Description description;
-  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  retroaa::Description description = describedHost(host);
   description.layout.depthEncoding.kind = retroaa::DepthEncoding::Kind::FsoCompressedViewZ;
   description.layout.depthEncoding.farDistance = 100000.0f;  // FSO's last segment would divide by 0
   auto created = retroaa::Plugin::create(description);

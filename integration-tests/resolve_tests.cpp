@@ -246,9 +246,7 @@ TEST(Plugin, AHostDrawsIntoAMultisampledAttachmentBeforeResolve) {
   // resolve(); the resolved G-buffer carries it.
   constexpr int w = 8, h = 4;
   SyntheticFrame frame(w, h);
-  retroaa::Config config;
-  config.method = retroaa::Method::Resolve;
-  auto hooks = frame.attach(config);
+  auto hooks = frame.attach(retroaa::Method::Resolve);
   ASSERT_TRUE(hooks);
   retroaa::Plugin& plugin = hooks->plugin();
   fillGeometry(plugin, w, h, std::vector<std::vector<SyntheticSample>>(w * h, {surfaceSample(10)}));
@@ -267,8 +265,9 @@ TEST(Plugin, AHostDrawsIntoAMultisampledAttachmentBeforeResolve) {
   for (const glm::vec4& c : frame.read(frame.renderer->targets().color))
     ASSERT_EQ(c, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
   // Without an MSAA G-buffer there is none to hand out.
-  config.method = retroaa::Method::Fxaa;
-  ASSERT_TRUE(plugin.reconfigure(config));
+  retroaa::Config fxaa;
+  fxaa.method = retroaa::Method::Fxaa;
+  ASSERT_TRUE(plugin.reconfigure(fxaa));
   EXPECT_EQ(plugin.multisampledAttachment(retroaa::AttachmentRole::Albedo), 0u);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
@@ -368,9 +367,7 @@ TEST(Plugin, ALayoutWhoseDataLooksWrongIsNamedInAWarning) {
       {"view depth <= 0", worldSpace}, {"no sample with geometry", backgroundSample()}, {nullptr, surfaceSample(10)}};
   for (const auto& [expected, sample] : cases) {
     SyntheticFrame frame(w, h);
-    retroaa::Config config;
-    config.method = retroaa::Method::Resolve;
-    auto hooks = frame.attach(config);
+    auto hooks = frame.attach(retroaa::Method::Resolve);
     ASSERT_TRUE(hooks);
     retroaa::Plugin& plugin = hooks->plugin();
     for (int f = 0; f < 2; ++f) {

@@ -186,21 +186,16 @@ TEST(SecondHost, ReconstructOnWorldSpaceNormalsBeatsFxaaOnEdgesByADecibel) {
 }
 
 TEST(SecondHost, BenchTakesTheSecondHostAndRefusesAnUnknownOne) {
-  const std::string json = (std::filesystem::temp_directory_path() / "retroaa_second_host_bench.json").string();
-  CliRun r = runCli(
-      "bench --host second --methods off,per-sample --width 96 --height 72 --gt-samples 3 --repeats 1 "
-      "--wall-frames 0 --json " +
-      json);
+  const auto [r, document] = runBench(
+      "--host second --methods off,per-sample --width 96 --height 72 --gt-samples 3 --repeats 1 --wall-frames 0");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  std::ifstream in(json);
-  const nlohmann::json document = nlohmann::json::parse(in);
   ASSERT_EQ(document["rows"].size(), 2u);
   EXPECT_GT(document["rows"][1]["edge_psnr_db"].get<double>(), document["rows"][0]["edge_psnr_db"].get<double>());
   EXPECT_DOUBLE_EQ(document["rows"][1]["evals_per_pixel"].get<double>(), 4.0);
 
-  r = runCli("bench --host unreal --methods off --width 32 --height 24 --json " + json);
-  EXPECT_EQ(r.exitCode, 2);
-  EXPECT_NE(r.output.find("--host"), std::string::npos) << r.output;
+  const CliRun unknown = runBench("--host unreal --methods off --width 32 --height 24").run;
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.output.find("--host"), std::string::npos) << unknown.output;
 }
 
 namespace {

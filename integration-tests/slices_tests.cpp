@@ -174,9 +174,7 @@ TEST(Slices, BackgroundSamplesReachTheHostsLightingAsTheHostClearedThem) {
   SyntheticFrame frame(w, h);
   std::vector<std::vector<SyntheticSample>> pixels(w * h, {backgroundSample()});
   pixels[0] = {surfaceSample(10), backgroundSample(), surfaceSample(10), backgroundSample()};
-  retroaa::Config config;
-  config.method = retroaa::Method::PerSample;
-  auto hooks = frame.attach(config);
+  auto hooks = frame.attach(retroaa::Method::PerSample);
   ASSERT_TRUE(hooks);
   retroaa::Plugin& plugin = hooks->plugin();
   fillGeometry(plugin, w, h, pixels);

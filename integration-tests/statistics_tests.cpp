@@ -8,91 +8,80 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <tuple>
+#include <type_traits>
+#include <vector>
 
 using namespace testing_support;
 
 namespace {
 
+std::map<std::string, int>& blockingCalls() {
+  static std::map<std::string, int> counts;
+  return counts;
+}
+
 // Counts the calls that make the CPU wait for the GPU, by swapping libepoxy's function pointers (the
 // plugin's calls go through the same pointers) for wrappers. The originals come from
 // eglGetProcAddress, not from the pointers, which may still hold epoxy's resolving stubs (those would
 // overwrite the wrapper on their first call).
+template <auto& epoxyPointer>
+class SpiedCall {
+ public:
+  using Pointer = std::remove_reference_t<decltype(epoxyPointer)>;
+  // Returns what puts the original back. `onlyQueryResult`: a query object call counts only when it
+  // asks for the result (GL_QUERY_RESULT waits; GL_QUERY_RESULT_AVAILABLE does not).
+  static void (*install(const char* name, bool onlyQueryResult = false))() {
+    name_ = onlyQueryResult ? std::string(name) + "(GL_QUERY_RESULT)" : name;
+    onlyQueryResult_ = onlyQueryResult;
+    saved_ = epoxyPointer;
+    real_ = reinterpret_cast<Pointer>(eglGetProcAddress(name));
+    if (!real_) throw std::runtime_error(std::string("eglGetProcAddress found no ") + name);
+    epoxyPointer = wrapperFor(epoxyPointer);
+    return [] { epoxyPointer = saved_; };
+  }
+
+ private:
+  template <typename R, typename... Args>
+  static R counted(Args... args) {
+    bool waits = true;
+    if constexpr (sizeof...(Args) == 3)
+      waits = !onlyQueryResult_ || std::get<1>(std::tuple<Args...>(args...)) == GLenum(GL_QUERY_RESULT);
+    if (waits) ++blockingCalls()[name_];
+    return real_(args...);
+  }
+  template <typename R, typename... Args>
+  static Pointer wrapperFor(R (*)(Args...)) {
+    return &counted<R, Args...>;
+  }
+  static inline std::string name_;
+  static inline bool onlyQueryResult_ = false;
+  static inline Pointer saved_ = nullptr, real_ = nullptr;
+};
+
 class BlockingCallSpy {
  public:
-  BlockingCallSpy() {
+  BlockingCallSpy()
+      : restore_{SpiedCall<epoxy_glFinish>::install("glFinish"),
+                 SpiedCall<epoxy_glGetQueryObjectuiv>::install("glGetQueryObjectuiv", true),
+                 SpiedCall<epoxy_glGetQueryObjectiv>::install("glGetQueryObjectiv", true),
+                 SpiedCall<epoxy_glGetQueryObjectui64v>::install("glGetQueryObjectui64v", true),
+                 SpiedCall<epoxy_glGetQueryObjecti64v>::install("glGetQueryObjecti64v", true),
+                 SpiedCall<epoxy_glReadPixels>::install("glReadPixels"),
+                 SpiedCall<epoxy_glGetTextureImage>::install("glGetTextureImage"),
+                 SpiedCall<epoxy_glGetTexImage>::install("glGetTexImage"),
+                 SpiedCall<epoxy_glClientWaitSync>::install("glClientWaitSync"),
+                 SpiedCall<epoxy_glGetNamedBufferSubData>::install("glGetNamedBufferSubData"),
+                 SpiedCall<epoxy_glMapNamedBufferRange>::install("glMapNamedBufferRange")} {
     calls().clear();
-    swap(epoxy_glFinish, finish_, "glFinish", [] {
-      note("glFinish");
-      real().finish();
-    });
-    swap(epoxy_glGetQueryObjectuiv, queryUiv_, "glGetQueryObjectuiv", [](GLuint id, GLenum pname, GLuint* out) {
-      if (pname == GL_QUERY_RESULT) note("glGetQueryObjectuiv(GL_QUERY_RESULT)");
-      real().queryUiv(id, pname, out);
-    });
-    swap(epoxy_glGetQueryObjectiv, queryIv_, "glGetQueryObjectiv", [](GLuint id, GLenum pname, GLint* out) {
-      if (pname == GL_QUERY_RESULT) note("glGetQueryObjectiv(GL_QUERY_RESULT)");
-      real().queryIv(id, pname, out);
-    });
-    swap(epoxy_glGetQueryObjectui64v, queryUi64v_, "glGetQueryObjectui64v", [](GLuint id, GLenum pname, GLuint64* out) {
-      if (pname == GL_QUERY_RESULT) note("glGetQueryObjectui64v(GL_QUERY_RESULT)");
-      real().queryUi64v(id, pname, out);
-    });
-    swap(epoxy_glGetQueryObjecti64v, queryI64v_, "glGetQueryObjecti64v", [](GLuint id, GLenum pname, GLint64* out) {
-      if (pname == GL_QUERY_RESULT) note("glGetQueryObjecti64v(GL_QUERY_RESULT)");
-      real().queryI64v(id, pname, out);
-    });
-    swap(epoxy_glReadPixels, readPixels_, "glReadPixels",
-         [](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
-           note("glReadPixels");
-           real().readPixels(x, y, w, h, format, type, pixels);
-         });
-    swap(epoxy_glGetTextureImage, textureImage_, "glGetTextureImage",
-         [](GLuint t, GLint level, GLenum format, GLenum type, GLsizei size, void* pixels) {
-           note("glGetTextureImage");
-           real().textureImage(t, level, format, type, size, pixels);
-         });
-    swap(epoxy_glGetTexImage, texImage_, "glGetTexImage",
-         [](GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
-           note("glGetTexImage");
-           real().texImage(target, level, format, type, pixels);
-         });
-    swap(epoxy_glClientWaitSync, clientWaitSync_, "glClientWaitSync", [](GLsync sync, GLbitfield flags, GLuint64 t) {
-      note("glClientWaitSync");
-      return real().clientWaitSync(sync, flags, t);
-    });
-    swap(epoxy_glGetNamedBufferSubData, bufferSubData_, "glGetNamedBufferSubData",
-         [](GLuint buffer, GLintptr offset, GLsizeiptr size, void* data) {
-           note("glGetNamedBufferSubData");
-           real().bufferSubData(buffer, offset, size, data);
-         });
-    swap(epoxy_glMapNamedBufferRange, mapRange_, "glMapNamedBufferRange",
-         [](GLuint buffer, GLintptr offset, GLsizeiptr length, GLbitfield access) {
-           note("glMapNamedBufferRange");
-           return real().mapRange(buffer, offset, length, access);
-         });
-    instance() = this;
   }
   ~BlockingCallSpy() {
-    epoxy_glFinish = finish_;
-    epoxy_glGetQueryObjectuiv = queryUiv_;
-    epoxy_glGetQueryObjectiv = queryIv_;
-    epoxy_glGetQueryObjectui64v = queryUi64v_;
-    epoxy_glGetQueryObjecti64v = queryI64v_;
-    epoxy_glReadPixels = readPixels_;
-    epoxy_glGetTextureImage = textureImage_;
-    epoxy_glGetTexImage = texImage_;
-    epoxy_glClientWaitSync = clientWaitSync_;
-    epoxy_glGetNamedBufferSubData = bufferSubData_;
-    epoxy_glMapNamedBufferRange = mapRange_;
-    instance() = nullptr;
+    for (auto restore : restore_) restore();
   }
   BlockingCallSpy(const BlockingCallSpy&) = delete;
   BlockingCallSpy& operator=(const BlockingCallSpy&) = delete;
 
-  static std::map<std::string, int>& calls() {
-    static std::map<std::string, int> counts;
-    return counts;
-  }
+  static std::map<std::string, int>& calls() { return blockingCalls(); }
   static std::string describe() {
     std::string text;
     for (const auto& [name, count] : calls()) text += name + " × " + std::to_string(count) + "; ";
@@ -100,71 +89,16 @@ class BlockingCallSpy {
   }
 
  private:
-  template <typename Pointer, typename Wrapper>
-  void swap(Pointer& epoxyPointer, Pointer& original, const char* name, Wrapper wrapper) {
-    original = epoxyPointer;
-    real_[name] = reinterpret_cast<void*>(eglGetProcAddress(name));
-    if (!real_[name]) throw std::runtime_error(std::string("eglGetProcAddress found no ") + name);
-    epoxyPointer = +wrapper;
-  }
-  static void note(const char* name) { ++calls()[name]; }
-  static BlockingCallSpy*& instance() {
-    static BlockingCallSpy* spy = nullptr;
-    return spy;
-  }
-  struct Real {
-    std::map<std::string, void*>& table;
-    template <typename F>
-    F get(const char* name) const {
-      return reinterpret_cast<F>(table.at(name));
-    }
-    void finish() const { get<PFNGLFINISHPROC>("glFinish")(); }
-    void queryUiv(GLuint id, GLenum p, GLuint* o) const {
-      get<PFNGLGETQUERYOBJECTUIVPROC>("glGetQueryObjectuiv")(id, p, o);
-    }
-    void queryIv(GLuint id, GLenum p, GLint* o) const {
-      get<PFNGLGETQUERYOBJECTIVPROC>("glGetQueryObjectiv")(id, p, o);
-    }
-    void queryUi64v(GLuint id, GLenum p, GLuint64* o) const {
-      get<PFNGLGETQUERYOBJECTUI64VPROC>("glGetQueryObjectui64v")(id, p, o);
-    }
-    void queryI64v(GLuint id, GLenum p, GLint64* o) const {
-      get<PFNGLGETQUERYOBJECTI64VPROC>("glGetQueryObjecti64v")(id, p, o);
-    }
-    void readPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, void* p) const {
-      get<PFNGLREADPIXELSPROC>("glReadPixels")(x, y, w, h, f, t, p);
-    }
-    void textureImage(GLuint tex, GLint l, GLenum f, GLenum t, GLsizei s, void* p) const {
-      get<PFNGLGETTEXTUREIMAGEPROC>("glGetTextureImage")(tex, l, f, t, s, p);
-    }
-    void texImage(GLenum target, GLint l, GLenum f, GLenum t, void* p) const {
-      get<PFNGLGETTEXIMAGEPROC>("glGetTexImage")(target, l, f, t, p);
-    }
-    GLenum clientWaitSync(GLsync s, GLbitfield f, GLuint64 t) const {
-      return get<PFNGLCLIENTWAITSYNCPROC>("glClientWaitSync")(s, f, t);
-    }
-    void bufferSubData(GLuint b, GLintptr o, GLsizeiptr s, void* d) const {
-      get<PFNGLGETNAMEDBUFFERSUBDATAPROC>("glGetNamedBufferSubData")(b, o, s, d);
-    }
-    void* mapRange(GLuint b, GLintptr o, GLsizeiptr l, GLbitfield a) const {
-      return get<PFNGLMAPNAMEDBUFFERRANGEPROC>("glMapNamedBufferRange")(b, o, l, a);
-    }
-  };
-  static Real real() { return Real{instance()->real_}; }
-
-  std::map<std::string, void*> real_;
-  decltype(epoxy_glFinish) finish_;
-  decltype(epoxy_glGetQueryObjectuiv) queryUiv_;
-  decltype(epoxy_glGetQueryObjectiv) queryIv_;
-  decltype(epoxy_glGetQueryObjectui64v) queryUi64v_;
-  decltype(epoxy_glGetQueryObjecti64v) queryI64v_;
-  decltype(epoxy_glReadPixels) readPixels_;
-  decltype(epoxy_glGetTextureImage) textureImage_;
-  decltype(epoxy_glGetTexImage) texImage_;
-  decltype(epoxy_glClientWaitSync) clientWaitSync_;
-  decltype(epoxy_glGetNamedBufferSubData) bufferSubData_;
-  decltype(epoxy_glMapNamedBufferRange) mapRange_;
+  std::vector<void (*)()> restore_;
 };
+
+// The figures of one frame of `method` with the statistics on, waited for (a test may wait).
+retroaa::Stats measuredStats(PatchedHost& host, const std::string& method) {
+  retroaa::Config base;
+  base.measureGpuTime = true;
+  host.render(method, base);
+  return host.hooks->plugin().waitForStats();
+}
 
 uint64_t fragmentInvocations(const retroaa::Stats& stats, const std::string& pass) {
   uint64_t sum = 0;
@@ -225,10 +159,7 @@ TEST(FramePath, TheSpyCatchesAWaitAndStatisticsArriveWithoutOne) {
 
 TEST(Statistics, TheQueryRingIsBoundedAndFreedOnReconfigure) {
   PatchedHost host("default", 48, 32);
-  retroaa::Config base;
-  base.measureGpuTime = true;
-  host.render("edge", base);
-  const retroaa::Stats first = host.hooks->plugin().waitForStats();
+  const retroaa::Stats first = measuredStats(host, "edge");
   // timer + fragment and compute invocations per pass, 1 per slice
   const int perFrame = int(3 * first.passes.size()) + first.slices;
   for (int frame = 0; frame < 50; ++frame) host.renderer->renderFrame(host.scene.camera);
@@ -244,14 +175,9 @@ TEST(Statistics, TheQueryRingIsBoundedAndFreedOnReconfigure) {
 // performance model; issue 22).
 TEST(Statistics, EdgeLightsAtMostOnePassPerSliceAndOnlyWhereItsPixelsAre) {
   PatchedHost host("default", 160, 120);
-  retroaa::Config base;
-  base.measureGpuTime = true;
-  host.render("off", base);
-  const retroaa::Stats off = host.hooks->plugin().waitForStats();
-  const uint64_t offLighting = fragmentInvocations(off, "lighting");
+  const uint64_t offLighting = fragmentInvocations(measuredStats(host, "off"), "lighting");
   ASSERT_GT(offLighting, 0u) << "no pipeline statistics on this context";
-  host.render("edge", base);
-  const retroaa::Stats edge = host.hooks->plugin().waitForStats();
+  const retroaa::Stats edge = measuredStats(host, "edge");
   const uint64_t edgeLighting = fragmentInvocations(edge, "slices.lighting");
   const uint64_t fullScreen = fragmentInvocations(edge, "edge_mask");
   ASSERT_EQ(edge.slices, 4);
@@ -325,10 +251,7 @@ TEST(Statistics, SlicesWithoutPixelsLightNothing) {
 // (what the resolve method holds), one value per attachment and depth written.
 TEST(Statistics, TheResolveStatesItsMinimumTraffic) {
   PatchedHost host("default", 64, 48);
-  retroaa::Config base;
-  base.measureGpuTime = true;
-  host.render("resolve", base);
-  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
+  const retroaa::Stats stats = measuredStats(host, "resolve");
   uint64_t resolveBytes = 0;
   for (const retroaa::PassStats& pass : stats.passes)
     if (pass.name == "resolve") resolveBytes = pass.minimumBytes;

@@ -4,6 +4,7 @@
 #include "depth_codec.h"
 
 #include <sys/wait.h>
+#include <unistd.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
@@ -221,6 +222,12 @@ std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::attach(const retroaa::Confi
   return std::move(hooks.value());
 }
 
+std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::attach(retroaa::Method method) {
+  retroaa::Config config;
+  config.method = method;
+  return attach(config);
+}
+
 std::unique_ptr<patch::RetroaaHooks> SyntheticFrame::run(const retroaa::Config& config,
                                                          const std::vector<std::vector<SyntheticSample>>& pixels,
                                                          const std::string& irradiance) {
@@ -241,6 +248,17 @@ std::vector<glm::vec4> SyntheticFrame::read(GLuint texture) const {
 }
 
 CliRun runCli(const std::string& arguments) { return runCommand(std::string(RETROAA_CLI) + " " + arguments); }
+
+BenchRun runBench(const std::string& arguments) {
+  static int runs = 0;  // each run its own file within this test process
+  const std::filesystem::path json =
+      std::filesystem::temp_directory_path() /
+      ("retroaa_bench_" + std::to_string(getpid()) + "_" + std::to_string(++runs) + ".json");
+  BenchRun bench{runCli("bench " + arguments + " --json " + json.string()), nullptr};
+  if (bench.run.exitCode == 0) bench.document = nlohmann::json::parse(std::ifstream(json));
+  std::filesystem::remove(json);
+  return bench;
+}
 
 CliRun runCommand(const std::string& shellCommand) {
   const std::string command = shellCommand + " 2>&1";

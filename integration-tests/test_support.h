@@ -10,6 +10,7 @@
 #include "scene.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <functional>
 #include <memory>
@@ -96,6 +97,7 @@ struct SyntheticFrame {
   SyntheticFrame(int width, int height);
   // The patch installed on this host with `config`, no frame run yet (a failure is a test failure).
   std::unique_ptr<patch::RetroaaHooks> attach(const retroaa::Config& config);
+  std::unique_ptr<patch::RetroaaHooks> attach(retroaa::Method method);  // every other setting its default
   // Resolves and shades `pixels` (see fillGeometry) with `config`; the returned hooks own the plugin.
   std::unique_ptr<patch::RetroaaHooks> run(const retroaa::Config& config,
                                            const std::vector<std::vector<SyntheticSample>>& pixels,
@@ -116,6 +118,12 @@ struct CliRun {
 };
 CliRun runCli(const std::string& arguments);
 CliRun runCommand(const std::string& command);  // any shell command
+// `retroaa bench ARGUMENTS --json FILE` and the JSON it wrote (null where it failed).
+struct BenchRun {
+  CliRun run;
+  nlohmann::json document;
+};
+BenchRun runBench(const std::string& arguments);
 
 // The vertical field of view (FrameInfo's) whose horizontal one at width × height is `horizontalFov`.
 float verticalFovFor(float horizontalFov, int width, int height);

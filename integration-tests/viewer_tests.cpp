@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace testing_support;
 namespace fs = std::filesystem;
@@ -21,6 +22,20 @@ CliRun view(const fs::path& script, int width, int height) {
   const size_t at = run.output.rfind("retroaa-exit=");
   run.exitCode = at == std::string::npos ? -1 : std::stoi(run.output.substr(at + 13));
   return run;
+}
+
+// The run ended with `exitCode` and its output says `fragment`.
+void expectRun(const CliRun& run, int exitCode, const std::string& fragment) {
+  EXPECT_EQ(run.exitCode, exitCode) << run.output;
+  EXPECT_NE(run.output.find(fragment), std::string::npos) << run.output;
+}
+
+// Writes `text` as a script in a folder of the test's own and runs the viewer on it.
+CliRun viewScript(const std::string& name, const std::string& text, int width, int height) {
+  const fs::path dir = fs::temp_directory_path() / ("retroaa_viewer_" + name);
+  fs::create_directories(dir);
+  std::ofstream(dir / (name + ".txt")) << text;
+  return view(dir / (name + ".txt"), width, height);
 }
 }  // namespace
 
@@ -70,9 +85,7 @@ TEST(Viewer, ScreenshotsOfEveryMethodAtThreeSizesMatchTheHeadlessRenders) {
 }
 
 TEST(Viewer, ResizeStormLeavesNoObjectAndNoGlError) {
-  const fs::path dir = fs::temp_directory_path() / "retroaa_viewer_storm";
-  fs::create_directories(dir);
-  std::ofstream script(dir / "storm.txt");
+  std::ostringstream script;
   const char* methods[] = {"edge", "resolve+coverage", "aggregate",  "adaptive",
                            "fxaa", "coverage",         "per-sample", "off"};
   for (int i = 0; i < 200; ++i) {
@@ -80,34 +93,19 @@ TEST(Viewer, ResizeStormLeavesNoObjectAndNoGlError) {
     if (i % 3 == 0) script << i << " method " << methods[(i / 3) % 8] << "\n";
   }
   script << 201 << " quit\n";
-  script.close();
-  const CliRun run = view(dir / "storm.txt", 96, 72);
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("view: 0 GL errors; plugin GL objects 1 at start, 1 at the end"), std::string::npos)
-      << run.output;
+  expectRun(viewScript("storm", script.str(), 96, 72), 0,
+            "view: 0 GL errors; plugin GL objects 1 at start, 1 at the end");
 }
 
 TEST(Viewer, ABadScriptLineIsNamed) {
-  const fs::path dir = fs::temp_directory_path() / "retroaa_viewer_bad";
-  fs::create_directories(dir);
-  std::ofstream(dir / "bad.txt") << "0 method edge\n1 teleport 1 2 3\n";
-  const CliRun run = view(dir / "bad.txt", 64, 48);
-  EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("bad.txt:2: unknown action 'teleport'"), std::string::npos) << run.output;
+  expectRun(viewScript("bad", "0 method edge\n1 teleport 1 2 3\n", 64, 48), 2, "bad.txt:2: unknown action 'teleport'");
 }
 
 TEST(Viewer, AScriptThatIsNotARegularFileIsRefused) {
-  const CliRun run = view("/dev/zero", 64, 48);  // would otherwise be read forever
-  EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("/dev/zero: cannot open script: it is not a regular file"), std::string::npos)
-      << run.output;
+  // /dev/zero would otherwise be read forever.
+  expectRun(view("/dev/zero", 64, 48), 2, "/dev/zero: cannot open script: it is not a regular file");
 }
 
 TEST(Viewer, ReportsItsFrameTime) {
-  const fs::path dir = fs::temp_directory_path() / "retroaa_viewer_time";
-  fs::create_directories(dir);
-  std::ofstream(dir / "time.txt") << "0 method edge\n5 quit\n";
-  const CliRun run = view(dir / "time.txt", 64, 48);
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("frames timed, median frame"), std::string::npos) << run.output;
+  expectRun(viewScript("time", "0 method edge\n5 quit\n", 64, 48), 0, "frames timed, median frame");
 }
