@@ -13,8 +13,9 @@ constexpr int kExitOk = 0;
 constexpr int kExitCheckFailed = 1;
 constexpr int kExitBadInput = 2;
 
-// A method as named in reports and on the command line: `method[/weighting][+fxaa][@key=value]...`,
-// e.g. `off`, `fxaa`, `resolve`, `resolve/fso`, `resolve+fxaa`, `adaptive@adaptive_shading_scale=4`.
+// A method as named in reports and on the command line: `method[/weighting][+stacked][@key=value]...`,
+// e.g. `off`, `resolve`, `resolve/fso`, `resolve@samples=8`, and `resolve+NAME` for a method that stacks
+// (MethodInfo::stackKey).
 // Settings (--set, --config) apply first, then the spec's own.
 struct MethodSpec {
   std::string name;

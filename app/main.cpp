@@ -109,7 +109,7 @@ void addRender(CommandLine& line) {
   addHostOption(sub, options->host);
   sub->add_option("--scene", options->scene, "scene file, or 'default'");
   sub->add_option("--method", options->method,
-                  "method[/weighting][+fxaa][@key=value], or ground-truth (default: the config's)");
+                  "method[/weighting][+stacked][@key=value], or ground-truth (default: the config's)");
   line.addSizeOptions(sub, options->width, options->height);
   sub->add_option("--frame", options->frame, "camera path frame (default: the scene camera)");
   addGroundTruthOption(sub, options->groundTruthSamples);

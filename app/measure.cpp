@@ -32,7 +32,8 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
   if (perSampleBase) {
     retroaa::Config config = *perSampleBase;
     config.method = retroaa::Method::PerSample;
-    config.fxaa = false;
+    for (const retroaa::MethodInfo& row : retroaa::methodTable())  // the reference unfiltered
+      if (*row.stackKey) retroaa::applySetting(config, row.stackKey, "off");
     session.configure(config);
     session.renderer->renderFrame(camera);
     reference.perSample = DisplayImage::fromRgba8(w, h, session.renderer->readDisplay());

@@ -1,5 +1,5 @@
 // Image error metrics. All are computed on display values: 8-bit sRGB after tonemapping, scaled to
-// [0, 1] — what a player sees, and the space FXAA and the coverage filter work in.
+// [0, 1] — what a player sees, and the space the post filters work in.
 #pragma once
 
 #include <cstdint>

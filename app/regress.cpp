@@ -258,7 +258,7 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
     MethodTotals totals;
     const int historyFrames = historyWarmUpFrames(spec.config);
     for (size_t fi = 0; fi < frames.size(); ++fi) {
-      // A method with a history (temporal) is judged as an engine would run it: the path played through
+      // A method with a history is judged as an engine would run it: the path played through
       // every frame, from historyFrames before the first measured one (its first camera held before the
       // path starts).
       if (historyFrames > 0)

@@ -394,6 +394,19 @@ class Viewer {
     return !chosen.empty() && retroaa::applySetting(config, name, chosen);  // out of range: refused, unchanged
   }
 
+  // The keys the panel shows for `config`: the sample count, the keys of the method in use (and of the
+  // resolve where it multisamples), and the switch of every method that stacks on it.
+  static std::vector<std::string> panelKeys(const retroaa::Config& config) {
+    const std::string method = retroaa::toString(config.method);
+    const bool multisampled = retroaa::usesMsaa(config.method);
+    std::vector<std::string> keys = {"samples"};
+    for (const retroaa::ConfigKey& key : retroaa::configKeys())
+      if (key.method == method || (multisampled && std::string(key.method) == "resolve")) keys.push_back(key.name);
+    for (const retroaa::MethodInfo& row : retroaa::methodTable())
+      if (*row.stackKey && row.name != method) keys.push_back(row.stackKey);
+    return keys;
+  }
+
   // The panel: method and settings, what they cost, what they buy.
   void drawPanel() {
     ImGui_ImplOpenGL3_NewFrame();
@@ -410,9 +423,7 @@ class Viewer {
     }
     retroaa::Config config = a_->config;
     bool changed = false;
-    for (const char* key : {"samples", "resolve_weighting", "edge_detector", "closeness", "adaptive_shading_scale",
-                            "adaptive_texture_scale", "aggregate_count", "coverage_tolerance", "fxaa"})
-      changed |= settingWidget(key, config);
+    for (const std::string& key : panelKeys(config)) changed |= settingWidget(key, config);
     changed |= settingInput(config);  // every other key, by name (the config reference lists them)
     if (changed) configure(*a_, config, a_->method);
     drawStats();

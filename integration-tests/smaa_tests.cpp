@@ -8,7 +8,7 @@
 #include <array>
 #include <cmath>
 
-#include "pipeline/pipeline.h"
+#include "methods/smaa.h"
 
 using namespace testing_support;
 

@@ -48,10 +48,10 @@ class FrameHooks {
   // opengl_setup_scene_textures(): the host (re)created its targets.
   virtual void targetsCreated(const HostTargets&) {}
   // gr_set_proj_matrix() (code/graphics/matrix.cpp, for the 3D scene): a sub-pixel shift, in pixels, of
-  // this frame's projection (temporal AA).
+  // this frame's projection (an AA module that accumulates a jittered history).
   virtual glm::vec2 projectionJitter() { return glm::vec2(0.0f); }
-  // The material samplers' mip bias the AA module asks for (temporal AA: sharper mips, which the history
-  // averages). FSO sets no bias today: the patch adds GL_TEXTURE_LOD_BIAS where it sets its model
+  // The material samplers' mip bias the AA module asks for (with a jittered history: sharper mips, which
+  // the history averages). FSO sets no bias today: the patch adds GL_TEXTURE_LOD_BIAS where it sets its model
   // textures' sampling state.
   virtual float textureLodBias() { return 0.0f; }
   // gr_opengl_deferred_lighting_begin(): the framebuffer the background and models render into.
@@ -60,8 +60,8 @@ class FrameHooks {
   virtual int modelPassScale() { return 1; }
   // gr_opengl_deferred_lighting_msaa() / _end(): the model pass is done.
   virtual void modelPassEnd(const FrameView&) {}
-  // After the model pass: an AA module that wants a multisampled copy of the models' depth (coverage)
-  // or depth and normals (reconstruct) draws them here. FreeSpace Open has no such call site: it would
+  // After the model pass: an AA module that wants a multisampled copy of the models' depth (and
+  // normals) draws them here. FreeSpace Open has no such call site: it would
   // be a second model loop at the end of gr_opengl_deferred_lighting_end() into that framebuffer.
   virtual void modelPrepass(const ModelPrepass&) {}
   // gr_opengl_deferred_lighting_finish(): run the host's lighting.

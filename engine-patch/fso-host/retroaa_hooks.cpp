@@ -21,7 +21,7 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
                         {AttachmentRole::NormalGloss, GL_RGBA16F, targets.normal},
                         {AttachmentRole::Specular, GL_RGBA8, targets.specular},
                         {AttachmentRole::Emissive, GL_RGBA16F, targets.emissive}};
-  if (targets.velocity) {  // written where objects move on their own: `temporal` follows it
+  if (targets.velocity) {  // written where objects move on their own: a history follows it
     layout.attachments.push_back({AttachmentRole::Other, GL_RG16F, targets.velocity});
     layout.velocityAttachment = int(layout.attachments.size()) - 1;
   }
@@ -94,7 +94,7 @@ GLuint RetroaaHooks::modelPassFramebuffer(GLuint) { return plugin_->geometryFram
 // gr_opengl_deferred_lighting_msaa(): the depth-aware resolve replaces FSO's.
 void RetroaaHooks::modelPassEnd(const host::FrameView& view) { report(plugin_->resolve(frameInfo(view))); }
 
-// (no FSO call site yet: a second model loop into the plugin's prepass; see docs/methods/coverage.md)
+// (no FSO call site yet: a second model loop into the plugin's prepass; docs/integration.md)
 void RetroaaHooks::modelPrepass(const host::ModelPrepass& pass) {
   if (const GLuint target = plugin_->prepassFramebuffer()) pass(target);
 }

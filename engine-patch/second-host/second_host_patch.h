@@ -20,7 +20,7 @@ class SecondHostHooks : public host::SecondSeams {
   float textureLodBias() override { return plugin_->textureLodBias(); }
   void geometryDone(const host::FrameView& v) override { report(plugin_->resolve(frameInfo(v))); }
   void geometryAgain(const std::function<void(GLuint)>& draw) override {
-    if (const GLuint target = plugin_->prepassFramebuffer()) draw(target);  // coverage, reconstruct
+    if (const GLuint target = plugin_->prepassFramebuffer()) draw(target);  // a method with a prepass
   }
   void lighting(const std::function<void(GLuint)>& pass, GLuint) override { report(plugin_->shade(pass)); }
   void frameDone() override { report(plugin_->post()); }

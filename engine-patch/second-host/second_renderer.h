@@ -34,7 +34,7 @@ class SecondSeams {
   // The framebuffer the geometry pass clears and draws into (same draw buffers as the host's own).
   virtual GLuint geometryTarget(GLuint own) { return own; }
   virtual int geometryScale() { return 1; }
-  virtual glm::vec2 projectionJitter() { return glm::vec2(0.0f); }  // this frame's sub-pixel shift (temporal AA)
+  virtual glm::vec2 projectionJitter() { return glm::vec2(0.0f); }  // this frame's sub-pixel shift (a history's jitter)
   virtual float textureLodBias() {
     return 0.0f;
   }  // added to the material samplers' mip bias  // how many times the host's size that target is

@@ -1,4 +1,4 @@
-// Frame-time budget for `adaptive` (and `edge` with the depth detector): a damped integral controller
+// Frame-time budget for the techniques that follow it (Technique::followsBudget): a damped integral controller
 // on the log of a quality scale that multiplies the refinement metrics, fed the plugin's measured GPU
 // time each frame it has (the frame statistics come back a frame or two late, without a wait).
 //

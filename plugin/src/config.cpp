@@ -271,7 +271,10 @@ std::vector<Key> buildKeys() {
              "reallocates"));
   for (const TechniqueRow& row : techniqueRegistry())
     if (row.keys)
-      for (Key& key : row.keys()) keys.push_back(std::move(key));
+      for (Key& key : row.keys()) {
+        key.info.method = row.info.name;
+        keys.push_back(std::move(key));
+      }
   keys.push_back(
       onOff("restore_gbuffer_after_shade", &Config::restoreGBufferAfterShade,
             "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "
@@ -279,8 +282,8 @@ std::vector<Key> buildKeys() {
   keys.push_back(presetKey());
   keys.push_back(
       number("budget_ms", &Config::budgetMs, 0, 1000,
-             "GPU budget of the plugin's passes; adaptive (and edge/depth) adjust their refinement frame to frame "
-             "to keep it; 0 is off"));
+             "GPU budget of the plugin's passes; the methods that refine per pixel scale their refinement frame to "
+             "frame to keep it; 0 is off"));
   keys.push_back(folder("shader_override_dir", &Config::shaderOverrideDirectory,
                         "files there replace built-in shaders of the same path; compile errors fall back"));
   keys.push_back(
@@ -465,7 +468,7 @@ Status applyMethodSpec(Config& config, const std::string& spec) {
     return Error{ErrorCode::InvalidConfig, "method '" + spec + "': " + why};
   };
   std::string rest = spec;
-  // Settings after '@' apply to this spec only: adaptive@adaptive_shading_scale=4@adaptive_depth_scale=1
+  // Settings after '@' apply to this spec only: resolve@samples=8@resolve_weighting=fso
   for (size_t at = rest.rfind('@'); at != std::string::npos; at = rest.rfind('@')) {
     const std::string setting = rest.substr(at + 1);
     const size_t equals = setting.find('=');

@@ -33,8 +33,8 @@ struct PluginContext {
   Stats frameStats;                             // of the frame in flight: what the CPU knows of it (slice count)
   std::unique_ptr<FrameStatistics> statistics;  // what the GPU counts of it, read back frames later
   bool timePasses = false;                      // measure_gpu_time, or a budget that needs the times
-  double budgetScale = 1.0;                     // multiplies the refinement of adaptive and edge/depth (budget mode)
-  // `temporal`: frames started when its jitter sequence last began (a new history), so that the frame
+  double budgetScale = 1.0;                     // multiplies the refinement of Technique::followsBudget (budget mode)
+  // A history's frames started when its jitter sequence last began (a new history), so that the frame
   // after a switch or reset always takes the sequence's first point, whatever ran before.
   uint64_t jitterOrigin = 0;
 

@@ -251,10 +251,10 @@ struct Plugin::Impl {
       requested.method = fallbackWithoutMultisampling();
       method = findMethod(requested.method);
     }
-    if (requested.method == Method::Ssaa && requested.supersample < 2) {
-      context.warn("method ssaa renders a supersampled G-buffer and supersample=" +
-                   std::to_string(requested.supersample) + "; using supersample=2");
-      requested.supersample = 2;
+    if (const int least = findTechnique(requested.method)->minSupersample; requested.supersample < least) {
+      context.warn(std::string("method ") + method->name + " renders a supersampled G-buffer and supersample=" +
+                   std::to_string(requested.supersample) + "; using supersample=" + std::to_string(least));
+      requested.supersample = least;
     }
     if (requested.samples < method->minSamples && caps.maxSamples >= method->minSamples) {
       context.warn(std::string("method ") + method->name + " needs at least " + std::to_string(method->minSamples) +
@@ -262,7 +262,7 @@ struct Plugin::Impl {
                    std::to_string(method->minSamples));
       requested.samples = method->minSamples;
     }
-    // A stacked filter that reads the MSAA G-buffer's sub-samples (+coverage, +reconstruct) has none at 1×.
+    // A stacked filter that reads the MSAA G-buffer's sub-samples has none at 1×.
     for (const TechniqueRow& row : techniqueRegistry())
       if (row.stackedOn && row.stackedOn(requested) && requested.samples < row.info.minSamples) {
         context.warn(std::string(row.info.stackKey) + " needs at least " + std::to_string(row.info.minSamples) +
@@ -548,7 +548,7 @@ Status Plugin::reconfigure(const Config& config) {
     }
   }
   impl_->configureBudget(previous);
-  // A history (temporal) starts anew when the image changes: not for the statistics or the blend weight.
+  // A history starts anew when the image changes: not for the statistics or the blend weight.
   Config sameImage = previous;
   sameImage.measureGpuTime = context.config.measureGpuTime;
   sameImage.temporalBlend = context.config.temporalBlend;

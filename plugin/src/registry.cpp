@@ -105,6 +105,7 @@ std::vector<TechniqueRow>& rows() {
       // per-sample's technique in Bayer order (edge.cpp).
       Row::named(Method::Ssaa, "ssaa",
                  "ordered-grid supersampling: an m x m supersampled G-buffer (supersample=m), every sub-position lit")
+          .needsSupersampling(2)
           .uses(kSliced)
           .createdBy(createEdgeTechnique),
   };

@@ -50,7 +50,7 @@ class Technique {
 // Where a post filter finds each pixel's sub-sample depth (and normals): a multisampled prepass it owns
 // and hands the host (Plugin::prepassFramebuffer: depth, and with `withNormals` the output at the
 // NormalGloss location, encoded as the layout says), or, stacked on a G-buffer method, the MSAA
-// G-buffer's own depth and normals. `coverage` and `reconstruct` read their sub-samples through it.
+// G-buffer's own depth and normals. The prepass methods read their sub-samples through it.
 struct SampleGeometry {
   GlTexture depthTexture, normalTexture;  // the prepass's; empty when reading the MSAA G-buffer
   GlFramebuffer prepass;
@@ -110,11 +110,12 @@ struct TechniqueRow {
   MethodInfo info;          // name, summary, samples, stack key (config.h)
   uint32_t storage;         // Storage bits when this row is the config's method
   TechniqueFactory create;  // null: the shared pieces do all of it
-  // Non-null: the row is also active on top of another method when this says so (+fxaa,
-  // +coverage), needing `stackedStorage` then.
+  // Non-null: the row is also active on top of another method when this says so (`resolve+NAME`),
+  // needing `stackedStorage` then.
   bool (*stackedOn)(const Config&) = nullptr;
   uint32_t stackedStorage = kStorageNone;
-  bool postLast = false;                 // its post pass runs after every other active technique's
+  int minSupersample = 0;  // a supersampled G-buffer of at least this factor (a smaller `supersample` is raised)
+  bool postLast = false;   // its post pass runs after every other active technique's
   std::vector<Key> (*keys)() = nullptr;  // its config keys, declared beside it (config_keys.h)
 
   static TechniqueRow named(Method method, const char* name, const char* summary) {
@@ -126,6 +127,7 @@ struct TechniqueRow {
     info.multisampled = true, info.minSamples = leastSamples;
     return *this;
   }
+  TechniqueRow& needsSupersampling(int leastFactor) { return minSupersample = leastFactor, *this; }
   TechniqueRow& uses(uint32_t storageBits) { return storage = storageBits, *this; }
   TechniqueRow& createdBy(TechniqueFactory factory) { return create = factory, *this; }
   // Also active on top of another method while `when` holds; `key` is the on/off config key (`+NAME`).
@@ -137,7 +139,7 @@ struct TechniqueRow {
   TechniqueRow& configuredBy(std::vector<Key> (*techniqueKeys)()) { return keys = techniqueKeys, *this; }
 };
 
-// `temporal`'s jitter for frame `frame` of its sequence (1: the first after the sequence began) of a
+// The jitter of a method with a history for frame `frame` of its sequence (1: the first after the sequence began) of a
 // sequence of `length` (methods/temporal.cpp), and whether `config` runs it (as the method or stacked).
 Jitter temporalJitter(uint64_t frame, int length);
 bool runsTemporal(const Config& config);

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 using namespace retroaa;
 
@@ -13,6 +14,19 @@ TEST(Config, DefaultsAreDocumentedOnce) {
   Config parsed;
   for (const ConfigKey& key : configKeys()) ASSERT_TRUE(applySetting(parsed, key.name, key.defaultValue)) << key.name;
   EXPECT_EQ(toConfigText(parsed), toConfigText(defaults));
+}
+
+// A technique's keys say whose they are (the viewer shows a method's own keys); shared keys say "".
+TEST(Config, EachKeyNamesTheMethodThatDeclaresIt) {
+  std::map<std::string, std::string> owner;
+  for (const ConfigKey& key : configKeys()) owner[key.name] = key.method;
+  EXPECT_EQ(owner.at("samples"), "");
+  EXPECT_EQ(owner.at("budget_ms"), "");
+  EXPECT_EQ(owner.at("closeness"), "resolve");
+  EXPECT_EQ(owner.at("adaptive_min_samples"), "adaptive");
+  EXPECT_EQ(owner.at("edge_detector"), "edge");
+  for (const MethodInfo& row : methodTable())  // a stacking switch belongs to the method it stacks
+    if (*row.stackKey) EXPECT_EQ(owner.at(row.stackKey), row.name);
 }
 
 TEST(Config, UnknownKeyNamesKnownKeys) {

@@ -1,7 +1,7 @@
 #version 450 core
 // The shading floor of a pixel: how many distinct surfaces its samples hold. A primitive's model
 // shader runs once per pixel and writes the same values to every sample it covers, so samples whose
-// attributes are bit-identical belong to one surface (as retroaa's coverage detector decides). Sample
+// attributes are bit-identical belong to one surface (the plugin's own surface test says the same). Sample
 // s counts when no earlier sample equals it in every attachment. Needs SAMPLES and ATTACHMENTS defined.
 layout(binding = 0) uniform sampler2DMS uAttachments[ATTACHMENTS];
 layout(location = 0) out float outSurfaces;

@@ -200,6 +200,7 @@ struct ConfigKey {
   const char* effect;        // one line: what it changes and what changing it costs
   Kind kind;
   float minimum, maximum;  // Number and Integer
+  const char* method = "";  // the method whose registry row declares it; "" for keys every method shares
 };
 RETROAA_API const std::vector<ConfigKey>& configKeys();
 

@@ -52,8 +52,8 @@ struct GlossEncoding {
   float log2ExponentBias = 1.0f;
 };
 
-// How the host's depth buffer maps to view depth d, with FrameInfo's near and far planes (coverage,
-// reconstruct, and every pass when the depth source is the depth buffer). The value at the far end
+// How the host's depth buffer maps to view depth d, with FrameInfo's near and far planes (the methods
+// with a prepass or a history, and every pass when the depth source is the depth buffer). The value at the far end
 // (1, or 0 for the reversed kinds) marks "no geometry".
 enum class DepthBufferEncoding : uint8_t {
   Perspective,  // a standard perspective projection's window depth, near 0, far 1 (FreeSpace Open)
@@ -101,10 +101,10 @@ struct GBufferLayout {
   DepthEncoding depthEncoding;
   NormalEncoding normalEncoding = NormalEncoding::Xyz;
   // With NormalEncoding::Xyz: the normal is in view space, so z ≥ 0 for whatever the camera sees (FSO's).
-  // `reconstruct`'s prepass then keeps x and y alone (RG16F, 4 B a sample) and rebuilds z; otherwise
+  // A prepass that keeps normals then keeps x and y alone (RG16F, 4 B a sample) and rebuilds z; otherwise
   // (world space, or any other) it keeps the whole normal in the attachment's own format.
   bool normalsInViewSpace = false;
-  // `temporal`: the attachment (index into `attachments`, any role, a float format of two or more
+  // For a method with a history: the attachment (index into `attachments`, any role, a float format of two or more
   // channels) where the model pass writes each pixel's screen motion since the previous frame: xy =
   // this frame's position − the previous frame's, in pixels, both without jitter, camera and object
   // motion together. Its geometry pixels then fetch their history there, so objects that move on their
@@ -161,19 +161,19 @@ struct FrameInfo {
   // Eq. 1's pixel footprint uses the horizontal one, derived from this and the layout's aspect ratio.
   float verticalFovRadians = 1.0f;
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres, for DepthBufferEncoding (and DepthSource::DepthBuffer)
-  // World to view, column-major as GL and GLM store it (DepthSource::WorldPosition, and `temporal`).
+  // World to view, column-major as GL and GLM store it (DepthSource::WorldPosition, and a history).
   float viewMatrix[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  // `temporal`: the frame's perspective projection without the jitter, column-major (view to clip, GL
+  // For a method with a history: the frame's perspective projection without the jitter, column-major (view to clip, GL
   // conventions; reversed-Z and infinite far planes included). The plugin keeps the previous frame's
   // view and projection itself and reprojects with them. All zero (the default): not given, and
-  // `temporal` keeps no history (with one warning).
+  // no history is kept (with one warning).
   float projectionMatrix[16] = {};
-  // `temporal`: the view does not continue the previous frame's (a cut, a teleport, a new level): the
+  // For a method with a history: the view does not continue the previous frame's (a cut, a teleport, a new level): the
   // history is dropped and this frame starts a new one.
   bool cameraCut = false;
 };
 
-// `temporal`: the sub-pixel offset, in pixels (x right, y up), by which the host shifts this frame's
+// For a method with a history: the sub-pixel offset, in pixels (x right, y up), by which the host shifts this frame's
 // projection (Plugin::jitter).
 struct Jitter {
   float x = 0, y = 0;
@@ -181,7 +181,7 @@ struct Jitter {
 
 // One plugin pass of a measured frame (Config::measureGpuTime).
 struct PassStats {
-  std::string name;                  // e.g. "resolve", "fxaa"
+  std::string name;                  // e.g. "resolve", "lighting"
   double ms = 0;                     // GPU time (GL_TIME_ELAPSED); 0 without timer queries
   uint64_t fragmentInvocations = 0;  // fragment-shader invocations (pipeline statistics; 0 without them)
   uint64_t computeInvocations = 0;   // compute-shader invocations (the same)

@@ -1,9 +1,9 @@
 // `edge` (Thibieroz), `per-sample` and `ssaa`: the per-pixel slice count from an edge detector; per-sample's
 // and ssaa's detector marks every pixel. The slices light N samples where the count is N, with weights 1 / N.
 // `ssaa` is ordered-grid supersampling, the reference of Holländer et al.'s Table 1: every sub-position of
-// an m×m supersampled G-buffer (the grant raises `supersample` 0 to 2), lit in the Bayer order `adaptive`
-// takes them in, so that `adaptive` forced to m² samples composites the same lights in the same order and
-// equals it bit for bit.
+// an m×m supersampled G-buffer (the grant raises `supersample` 0 to 2), lit in the Bayer order
+// (pipeline.h's sampleOrder), so that a sliced method forced to m² samples in that order composites the
+// same lights in the same order and equals it bit for bit.
 #include <cmath>
 #include <string>
 
@@ -49,7 +49,7 @@ class EdgeTechnique : public Technique {
   SliceRenderer::Plan slicePlan(PluginContext&, SharedTargets&) override {
     SliceRenderer::Plan plan;
     plan.sampleOrder = order_;
-    plan.firstSliceEverywhere = !order_.empty();  // ssaa: as adaptive writes its first slice
+    plan.firstSliceEverywhere = !order_.empty();  // ssaa: every pixel's first slice, in sample order
     return plan;
   }
 

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <string>
 
+#include "smaa.h"
+
 #include "../config_keys.h"
 #include "../shared_constants.h"
 #include "../technique.h"
@@ -303,7 +305,7 @@ Result<std::unique_ptr<Technique>> createSmaaS2xTechnique(PluginContext& context
 // The config keys of `smaa`, `+smaa` and `smaa-s2x` (its registry row lists them: registry.cpp).
 std::vector<Key> smaaKeys() {
   return {
-      onOff("smaa", &Config::smaa, "SMAA 1x after tonemapping, stacked on the method (before +fxaa)"),
+      onOff("smaa", &Config::smaa, "SMAA 1x after tonemapping, stacked on the method (before FXAA)"),
       named("smaa_quality", &Config::smaaQuality, kSmaaQualities,
             "SMAA preset: threshold 0.15/0.1/0.1/0.05, search 8/16/32/64 px each way, diagonals and corner "
             "rounding from high on; cost grows with it (FreeSpace Open's -aa_preset 3..6)"),

@@ -270,7 +270,7 @@ Result<std::unique_ptr<Technique>> createTemporalTechnique(PluginContext& contex
 std::vector<Key> temporalKeys() {
   return {
       onOff("temporal_filter", &Config::temporalFilter,
-            "temporal accumulation on top of another method (resolve+temporal, reconstruct+temporal): the host "
+            "temporal accumulation on top of another method (resolve+temporal): the host "
             "jitters its projection by Plugin::jitter()"),
       number("temporal_blend", &Config::temporalBlend, 0.02f, 1,
              "temporal: the current frame's weight in the history; smaller is smoother and converges over more "

@@ -5,7 +5,6 @@
 
 #include "../context.h"
 
-#include <array>
 #include <functional>
 #include <vector>
 
@@ -196,16 +195,7 @@ std::vector<int> bayerSampleOrder(int m);
 // driver's sample positions for a multisampled one.
 std::vector<int> sampleOrder(const MsaaGBuffer& source);
 
-// SMAA's subsample indices for a sample at (x, y) in its pixel ([0, 1)², the driver's position): the
-// area-texture rows of its orthogonal offsets along x and y and of its diagonal offset (smaa.cpp).
-// The reference's S2x samples at D3D's (+¼, +¼) and (−¼, −¼) read rows (1, 1, 1, 0) and (2, 2, 2, 0).
-std::array<float, 4> smaaSubsampleIndices(float x, float y);
-// The two samples S2x lights, from the driver's positions (x, y pairs): the pair whose midpoint is
-// nearest the pixel centre (their average must not shift the image), the farther apart on a tie, the
-// lowest indices after that. 2×: samples 0 and 1; llvmpipe's 4× (0.375, 0.125) … : samples 0 and 3.
-std::array<int, 2> smaaS2xSamplePair(const std::vector<float>& positionsXY);
-
-// Where the post passes (coverage filter, SMAA, FXAA) render: a plugin-owned copy of the host's display
+// Where the post passes (MethodInfo::filtersDisplay) render: a plugin-owned copy of the host's display
 // target in its format, copied back after each pass, and the bilinear sampler they read the display
 // with. The passes work on the display's stored (gamma-encoded) values: an sRGB-format display
 // (GL_SRGB8_ALPHA8), whose reads would decode to linear and whose writes would encode again, is copied

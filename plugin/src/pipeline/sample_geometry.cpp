@@ -1,4 +1,4 @@
-// The multisampled depth (and normals) that `coverage` and `reconstruct` filter with (technique.h).
+// The multisampled depth (and normals) that the prepass methods filter with (technique.h).
 #include "../technique.h"
 
 namespace retroaa {

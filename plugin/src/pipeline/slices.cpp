@@ -174,7 +174,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     const GLuint slicePixels = writeSlice(context, source, plan, slice);
     // A slice without pixels (every count of the frame at most `slice`) draws nothing: the GPU skips its
     // lighting and composite on its own query's result, without the CPU waiting for it. A slice whose
-    // light is filtered (smaa-s2x) always has pixels: its first slice writes everywhere.
+    // light is filtered (Plan::filterSliceLight) always has pixels: its first slice writes everywhere.
     const bool skippable = slicePixels != 0 && !plan.filterSliceLight;
     if (skippable) glBeginConditionalRender(slicePixels, GL_QUERY_WAIT);
     lightSlice(context, lighting, slice);
