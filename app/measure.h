@@ -25,7 +25,7 @@ struct FrameReference {
   std::vector<uint8_t> changed;
 };
 // Ground truth of `camera` (`samplesPerAxis`² lit supersamples per pixel) and, with
-// `perSampleBase`, the per-sample render under that config (its method and FXAA replaced).
+// `perSampleBase`, the per-sample render under that config (its method replaced, no filter stacked).
 FrameReference renderReference(Session& session, const host::Camera& camera, int samplesPerAxis,
                                const retroaa::Config* perSampleBase);
 // Fills `reference.changed`: the pixels where `previousTruthRgba` (the frame before's ground truth, display

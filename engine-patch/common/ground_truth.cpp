@@ -7,6 +7,40 @@
 
 namespace host {
 
+namespace {
+
+// The accumulated radiance, presented for the display image, and the luma moments as a spread, both
+// read back top row first.
+GroundTruth readBack(Engine& renderer, GLuint radiance, GLuint moments, int samplesPerAxis) {
+  const int width = renderer.width(), height = renderer.height();
+  renderer.present(radiance);
+  GroundTruth truth;
+  truth.width = width;
+  truth.height = height;
+  truth.samplesPerAxis = samplesPerAxis;
+  truth.display = renderer.readDisplay();
+  truth.radiance.resize(size_t(width) * height * 4);
+  std::vector<float> momentPixels(truth.radiance.size());
+  glGetTextureImage(radiance, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(truth.radiance.size() * 4),
+                    truth.radiance.data());
+  glGetTextureImage(moments, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(momentPixels.size() * 4), momentPixels.data());
+  truth.lumaStdDev.resize(size_t(width) * height);
+  std::vector<float> flipped(truth.radiance.size());
+  for (int y = 0; y < height; ++y) {
+    const int source = height - 1 - y;  // GL rows run bottom-up
+    std::copy_n(truth.radiance.begin() + size_t(source) * width * 4, width * 4,
+                flipped.begin() + size_t(y) * width * 4);
+    for (int x = 0; x < width; ++x) {
+      const float* m = &momentPixels[(size_t(source) * width + x) * 4];
+      truth.lumaStdDev[size_t(y) * width + x] = std::sqrt(std::fmax(m[1] - m[0] * m[0], 0.0f));
+    }
+  }
+  truth.radiance = std::move(flipped);
+  return truth;
+}
+
+}  // namespace
+
 GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int samplesPerAxis, TextureFootprint footprint) {
   const int width = renderer.width(), height = renderer.height();
   renderer.setStockPath(true);
@@ -66,27 +100,7 @@ GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int sample
     accumulatePass(true, true);
   }
 
-  renderer.present(radiance);
-  GroundTruth truth;
-  truth.width = width;
-  truth.height = height;
-  truth.samplesPerAxis = samplesPerAxis;
-  truth.display = renderer.readDisplay();
-  truth.radiance.resize(size_t(width) * height * 4);
-  std::vector<float> momentPixels(truth.radiance.size());
-  glGetTextureImage(radiance, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(truth.radiance.size() * 4), truth.radiance.data());
-  glGetTextureImage(moments, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(momentPixels.size() * 4), momentPixels.data());
-  truth.lumaStdDev.resize(size_t(width) * height);
-  std::vector<float> flipped(truth.radiance.size());
-  for (int y = 0; y < height; ++y) {
-    const int source = height - 1 - y;  // GL rows run bottom-up
-    std::copy_n(truth.radiance.begin() + size_t(source) * width * 4, width * 4, flipped.begin() + size_t(y) * width * 4);
-    for (int x = 0; x < width; ++x) {
-      const float* m = &momentPixels[(size_t(source) * width + x) * 4];
-      truth.lumaStdDev[size_t(y) * width + x] = std::sqrt(std::fmax(m[1] - m[0] * m[0], 0.0f));
-    }
-  }
-  truth.radiance = std::move(flipped);
+  GroundTruth truth = readBack(renderer, radiance, moments, samplesPerAxis);
   renderer.setTextureLodBias(0.0f);
   renderer.setStockPath(false);
   return truth;

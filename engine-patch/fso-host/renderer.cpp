@@ -146,18 +146,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   for (int i = 0; i < attachmentCount(); ++i) glClearNamedFramebufferfv(modelTarget, GL_COLOR, i, zero);
   glClearNamedFramebufferfi(modelTarget, GL_DEPTH_STENCIL, 0, 1.0f, 0);
 
-  // The sky goes into emissive first (FSO copies what was drawn before the models there).
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  glUseProgram(backgroundProgram_.get());
-  setUniform(backgroundProgram_.uniform("uInverseProjection"), glm::inverse(projection));
-  setUniform(backgroundProgram_.uniform("uViewToWorld"), glm::mat3(glm::inverse(view)));
-  setUniform(backgroundProgram_.uniform("uViewportSize"), glm::vec2(width, height) * float(modelScale));
-  setUniform(backgroundProgram_.uniform("uSkyColor"), scene_.skyColor);
-  setUniform(backgroundProgram_.uniform("uStarDensity"), scene_.starDensity);
-  glBindVertexArray(emptyVertexArray_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-
+  drawBackground(view, projection, glm::vec2(width, height) * float(modelScale));
   drawModels(camera, projection);
   glPopDebugGroup();
   if (measureTime) glQueryCounter(timestamps[4], GL_TIMESTAMP);
@@ -172,17 +161,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   frameView.view = view;
   frameView.projection = camera.projection(width, height, jitterPixels);
   hooks_->modelPassEnd(frameView);
-  hooks_->modelPrepass([&](GLuint target) {
-    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 4, -1, "host.model_prepass");
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, width, height);
-    glDepthMask(GL_TRUE);
-    // Draw buffers the target leaves GL_NONE ignore both the clear and the writes.
-    for (int i = 0; i < attachmentCount(); ++i) glClearNamedFramebufferfv(target, GL_COLOR, i, zero);
-    glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, 0);
-    drawModels(camera, projection);
-    glPopDebugGroup();
-  });
+  hooks_->modelPrepass([&](GLuint target) { drawPrepass(target, camera, projection); });
   if (measureTime) glQueryCounter(timestamps[1], GL_TIMESTAMP);
 
   // gr_opengl_deferred_lighting_finish()
@@ -203,6 +182,34 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
     timings_.tonemapMs = (t[3] - t[2]) * 1e-6;
     timings_.frameMs = (t[3] - t[0]) * 1e-6;
   }
+}
+
+// The sky goes into emissive first (FSO copies what was drawn before the models there).
+void Renderer::drawBackground(const glm::mat4& view, const glm::mat4& projection, glm::vec2 viewportSize) {
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glUseProgram(backgroundProgram_.get());
+  setUniform(backgroundProgram_.uniform("uInverseProjection"), glm::inverse(projection));
+  setUniform(backgroundProgram_.uniform("uViewToWorld"), glm::mat3(glm::inverse(view)));
+  setUniform(backgroundProgram_.uniform("uViewportSize"), viewportSize);
+  setUniform(backgroundProgram_.uniform("uSkyColor"), scene_.skyColor);
+  setUniform(backgroundProgram_.uniform("uStarDensity"), scene_.starDensity);
+  glBindVertexArray(emptyVertexArray_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+// The models once more into the AA module's prepass target.
+void Renderer::drawPrepass(GLuint target, const Camera& camera, const glm::mat4& projection) {
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 4, -1, "host.model_prepass");
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, targets_.width, targets_.height);
+  glDepthMask(GL_TRUE);
+  // Draw buffers the target leaves GL_NONE ignore both the clear and the writes.
+  const float zero[4] = {0, 0, 0, 0};
+  for (int i = 0; i < attachmentCount(); ++i) glClearNamedFramebufferfv(target, GL_COLOR, i, zero);
+  glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  drawModels(camera, projection);
+  glPopDebugGroup();
 }
 
 void Renderer::drawModels(const Camera& camera, const glm::mat4& projection) {

@@ -48,6 +48,8 @@ class Renderer : public Engine {
  private:
   void createTargets(int width, int height);
   void lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection);
+  void drawBackground(const glm::mat4& view, const glm::mat4& projection, glm::vec2 viewportSize);
+  void drawPrepass(GLuint target, const Camera& camera, const glm::mat4& projection);
   void drawModels(const Camera& camera, const glm::mat4& projection);
 
   const Scene& scene_;

@@ -161,25 +161,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 hostJitter) {
                    displayFramebuffer_);
   stamp(3);
 
-  // Forward: emissive objects over the lit image, tested against the scene's depth.
-  glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
-  glViewport(0, 0, width, height);
-  glEnable(GL_FRAMEBUFFER_SRGB);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
-  glDepthMask(GL_FALSE);
-  glEnable(GL_CULL_FACE);
-  drawObjects(forwardProgram_, viewProjection, ObjectPass::Emissive, camera.time);
-  // Glow maps over their own lit surfaces: the same depth passes, the light adds.
-  glDepthFunc(GL_GEQUAL);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
-  drawObjects(forwardProgram_, viewProjection, ObjectPass::Glow, camera.time);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_FRAMEBUFFER_SRGB);
+  forwardPass(viewProjection, camera.time);
   seams_->frameDone();
   glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // the GL default, for whoever draws next
   stamp(4);
@@ -193,6 +175,28 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 hostJitter) {
     timings_.tonemapMs = (t[4] - t[3]) * 1e-6;  // the forward pass and the AA post pass
     timings_.frameMs = (t[4] - t[0]) * 1e-6;
   }
+}
+
+// Forward: emissive objects over the lit image, tested against the scene's depth.
+void SecondRenderer::forwardPass(const glm::mat4& viewProjection, float time) {
+  glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
+  glViewport(0, 0, targets_.width, targets_.height);
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_CULL_FACE);
+  drawObjects(forwardProgram_, viewProjection, ObjectPass::Emissive, time);
+  // Glow maps over their own lit surfaces: the same depth passes, the light adds.
+  glDepthFunc(GL_GEQUAL);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  drawObjects(forwardProgram_, viewProjection, ObjectPass::Glow, time);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
 void SecondRenderer::lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection) {

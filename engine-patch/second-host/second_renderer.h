@@ -80,6 +80,7 @@ class SecondRenderer : public Engine {
   enum class ObjectPass { Geometry, Emissive, Glow };
   void drawObjects(const Program& program, const glm::mat4& viewProjection, ObjectPass pass, float time) const;
   void lightingPass(GLuint target, const Camera& camera, const glm::mat4& projection);
+  void forwardPass(const glm::mat4& viewProjection, float time);
 
   const Scene& scene_;
   SecondSeams stockSeams_;

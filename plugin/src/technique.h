@@ -139,8 +139,9 @@ struct TechniqueRow {
   TechniqueRow& configuredBy(std::vector<Key> (*techniqueKeys)()) { return keys = techniqueKeys, *this; }
 };
 
-// The jitter of a method with a history for frame `frame` of its sequence (1: the first after the sequence began) of a
-// sequence of `length` (methods/temporal.cpp), and whether `config` runs it (as the method or stacked).
+// The jitter of the history method (defined with its technique) for frame `frame` of a sequence of
+// `length` (1: the first after the sequence began), and whether `config` runs it (as the method or
+// stacked).
 Jitter temporalJitter(uint64_t frame, int length);
 bool runsTemporal(const Config& config);
 
