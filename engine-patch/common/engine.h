@@ -23,6 +23,36 @@ struct HostTimings {
   double lightingMs = 0, tonemapMs = 0, frameMs = 0;
 };
 
+// The timestamps that split one frame into HostTimings' stages. Reading them waits for the GPU: only
+// while Engine::measureTime is on (tools).
+class StageTimestamps {
+ public:
+  enum Stage { FrameStart, ModelPassEnd, HooksEnd, LightingEnd, FrameEnd, kStages };
+  explicit StageTimestamps(bool on) : on_(on) {
+    if (on_) glGenQueries(kStages, queries_);
+  }
+  void stamp(Stage stage) {
+    if (on_) glQueryCounter(queries_[stage], GL_TIMESTAMP);
+  }
+  // After FrameEnd: fills `timings` and frees the queries (nothing while off).
+  void readInto(HostTimings& timings) {
+    if (!on_) return;
+    GLuint64 t[kStages];
+    for (int i = 0; i < kStages; ++i) glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &t[i]);
+    glDeleteQueries(kStages, queries_);
+    on_ = false;
+    timings.modelPassMs = (t[ModelPassEnd] - t[FrameStart]) * 1e-6;
+    timings.afterModelPassMs = (t[HooksEnd] - t[ModelPassEnd]) * 1e-6;
+    timings.lightingMs = (t[LightingEnd] - t[HooksEnd]) * 1e-6;
+    timings.tonemapMs = (t[FrameEnd] - t[LightingEnd]) * 1e-6;
+    timings.frameMs = (t[FrameEnd] - t[FrameStart]) * 1e-6;
+  }
+
+ private:
+  bool on_;
+  GLuint queries_[kStages] = {};
+};
+
 class Engine {
  public:
   virtual ~Engine() = default;

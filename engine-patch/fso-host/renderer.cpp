@@ -128,9 +128,8 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   motion_.previousTime = hasPrevious_ ? motion_.currentTime : camera.time;
   motion_.current = viewProjection, motion_.currentTime = camera.time, hasPrevious_ = true;
   applyTextureLodBias(hooks_->textureLodBias());
-  GLuint timestamps[5] = {};
-  if (measureTime) glGenQueries(5, timestamps);
-  if (measureTime) glQueryCounter(timestamps[0], GL_TIMESTAMP);
+  StageTimestamps stages(measureTime);
+  stages.stamp(StageTimestamps::FrameStart);
 
   // gr_opengl_scene_texture_begin() + gr_opengl_deferred_lighting_begin()
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 1, -1, "host.model_pass");
@@ -149,7 +148,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   drawBackground(view, projection, glm::vec2(width, height) * float(modelScale));
   drawModels(camera, projection);
   glPopDebugGroup();
-  if (measureTime) glQueryCounter(timestamps[4], GL_TIMESTAMP);
+  stages.stamp(StageTimestamps::ModelPassEnd);
 
   // gr_opengl_deferred_lighting_msaa() + gr_opengl_deferred_lighting_end()
   FrameView frameView;
@@ -162,26 +161,17 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   frameView.projection = camera.projection(width, height, jitterPixels);
   hooks_->modelPassEnd(frameView);
   hooks_->modelPrepass([&](GLuint target) { drawPrepass(target, camera, projection); });
-  if (measureTime) glQueryCounter(timestamps[1], GL_TIMESTAMP);
+  stages.stamp(StageTimestamps::HooksEnd);
 
   // gr_opengl_deferred_lighting_finish()
   hooks_->lighting([&](GLuint target) { lightingPass(target, camera, projection); }, lightFramebuffer_);
-  if (measureTime) glQueryCounter(timestamps[2], GL_TIMESTAMP);
+  stages.stamp(StageTimestamps::LightingEnd);
 
   // gr_opengl_post_process_end(): tonemap, then the AA post pass.
   tonemap(light_);
   hooks_->postProcess();
-  if (measureTime) {
-    glQueryCounter(timestamps[3], GL_TIMESTAMP);
-    GLuint64 t[5];
-    for (int i = 0; i < 5; ++i) glGetQueryObjectui64v(timestamps[i], GL_QUERY_RESULT, &t[i]);
-    glDeleteQueries(5, timestamps);
-    timings_.modelPassMs = (t[4] - t[0]) * 1e-6;
-    timings_.afterModelPassMs = (t[1] - t[4]) * 1e-6;
-    timings_.lightingMs = (t[2] - t[1]) * 1e-6;
-    timings_.tonemapMs = (t[3] - t[2]) * 1e-6;
-    timings_.frameMs = (t[3] - t[0]) * 1e-6;
-  }
+  stages.stamp(StageTimestamps::FrameEnd);
+  stages.readInto(timings_);
 }
 
 // The sky goes into emissive first (FSO copies what was drawn before the models there).

@@ -115,12 +115,8 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 hostJitter) {
   const glm::vec2 jitterPixels = hostJitter + seams_->projectionJitter();
   applyTextureLodBias(seams_->textureLodBias());
   const glm::mat4 viewProjection = projection(camera, jitterPixels) * camera.view();
-  GLuint timestamps[5] = {};  // frame start, geometry, its hooks, lighting, frame end
-  if (measureTime) glGenQueries(5, timestamps);
-  auto stamp = [&](int i) {
-    if (measureTime) glQueryCounter(timestamps[i], GL_TIMESTAMP);
-  };
-  stamp(0);
+  StageTimestamps stages(measureTime);  // geometry, its hooks, lighting, forward and post
+  stages.stamp(StageTimestamps::FrameStart);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDisable(GL_BLEND);
   glDisable(GL_STENCIL_TEST);
@@ -144,7 +140,7 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 hostJitter) {
     glDisable(GL_CULL_FACE);
   };
   geometryInto(seams_->geometryTarget(gbufferFramebuffer_), seams_->geometryScale());
-  stamp(1);
+  stages.stamp(StageTimestamps::ModelPassEnd);
   FrameView view;
   view.verticalFovRadians = glm::radians(camera.fovYDegrees);
   view.width = width;
@@ -155,26 +151,17 @@ void SecondRenderer::renderFrame(const Camera& camera, glm::vec2 hostJitter) {
   view.projection = projection(camera, hostJitter);
   seams_->geometryDone(view);
   seams_->geometryAgain([&](GLuint target) { geometryInto(target, 1); });
-  stamp(2);
+  stages.stamp(StageTimestamps::HooksEnd);
 
   seams_->lighting([&](GLuint target) { lightingPass(target, camera, projection(camera, jitterPixels)); },
                    displayFramebuffer_);
-  stamp(3);
+  stages.stamp(StageTimestamps::LightingEnd);
 
   forwardPass(viewProjection, camera.time);
   seams_->frameDone();
   glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // the GL default, for whoever draws next
-  stamp(4);
-  if (measureTime) {  // waits for the GPU: tools only
-    GLuint64 t[5];
-    for (int i = 0; i < 5; ++i) glGetQueryObjectui64v(timestamps[i], GL_QUERY_RESULT, &t[i]);
-    glDeleteQueries(5, timestamps);
-    timings_.modelPassMs = (t[1] - t[0]) * 1e-6;
-    timings_.afterModelPassMs = (t[2] - t[1]) * 1e-6;
-    timings_.lightingMs = (t[3] - t[2]) * 1e-6;
-    timings_.tonemapMs = (t[4] - t[3]) * 1e-6;  // the forward pass and the AA post pass
-    timings_.frameMs = (t[4] - t[0]) * 1e-6;
-  }
+  stages.stamp(StageTimestamps::FrameEnd);
+  stages.readInto(timings_);  // tonemapMs: the forward pass and the AA post pass
 }
 
 // Forward: emissive objects over the lit image, tested against the scene's depth.

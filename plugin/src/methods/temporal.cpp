@@ -125,8 +125,8 @@ class TemporalTechnique : public Technique {
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 2; ++i) {
       t.history_[i] = makeTexture(context, GL_RGBA16F, layout.width, layout.height, 0, "temporal.history", t.bytes_);
-      glTextureParameteri(t.history_[i].get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // the Catmull-Rom taps
-      glTextureParameteri(t.history_[i].get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      // Read texel by texel (texelFetch); a filter without mipmaps keeps the one-level texture complete.
+      glTextureParameteri(t.history_[i].get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
       glClearTexImage(t.history_[i].get(), 0, GL_RGBA, GL_FLOAT, zero);
       t.framebuffers_[i] = makeFramebuffer(context, "temporal.output");
       glNamedFramebufferTexture(t.framebuffers_[i].get(), GL_COLOR_ATTACHMENT0, output, 0);
