@@ -61,8 +61,8 @@ vec3 expand(vec3 c) { return c / max(1.0 - lumaOf(c), 1e-4); }
 
 // Lanczos-2 over the 4×4 texels around `uv`, its ringing clamped to the range of the 2×2 nearest (FSR 2's
 // history fetch). Sharper than the 5-tap Catmull-Rom it replaced, which a moving history went through
-// every frame: on the recorded paths +0.2-0.7 dB interior, the flicker lower on all five (retroaa
-// regress); a still history is fetched at its texel centres, where both return the texel.
+// every frame: on the recorded paths up to +0.7 dB interior (fence -0.05), the flicker lower on four of
+// five (retroaa regress); a still history is fetched at its texel centres, where both return the texel.
 float lanczos2(float x) {
   x = abs(x);
   if (x < 1e-5) return 1.0;
