@@ -59,7 +59,7 @@ stk-report: stk
 # The real-engine check (run by .ci/run, not by `make test`): the core methods at 320x240 on an indoor
 # track (silhouettes against geometry: every multi-sample method must beat off's edge PSNR) and on one
 # with sky and power lines (the sky must stay as off has it), each against STK's own 4x render.
-STK_TEST_METHODS = off fxaa resolve reconstruct edge per-sample
+STK_TEST_METHODS = off fxaa resolve reconstruct edge per-sample temporal@temporal_before_tonemap=off
 test-stk: stk
 	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) olivermath $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/olivermath --edges
 	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) cornfield_crossing $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/cornfield_crossing --sky

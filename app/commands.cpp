@@ -145,7 +145,7 @@ int runRender(const RenderOptions& options) {
     session.configure(options.method.empty() ? options.base : parseMethodSpec(options.method, options.base).config);
     // A history (temporal) builds over frames: a path frame is reached by playing the path up to it (its
     // first camera held before it starts), the scene's camera by holding it still.
-    const int historyFrames = historyWarmUpFrames(session.config);
+    const int historyFrames = retroaa::historyFrames(session.config);
     if (historyFrames > 0)
       std::fprintf(stderr, "render: %d frames accumulated first (%s)\n", historyFrames,
                    options.frame < 0 ? "a still camera" : "the path up to this frame");
@@ -315,7 +315,7 @@ int runBench(const BenchOptions& options) {
     session.configure(spec.config, spec.name);
     // A history (temporal): how it converges on this still frame, then measured converged.
     std::optional<Convergence> convergence;
-    if (const int frames = historyWarmUpFrames(spec.config); frames > 0)
+    if (const int frames = retroaa::historyFrames(spec.config); frames > 0)
       convergence = measureConvergence(session, camera, reference, 2 * frames, spec.config.temporalJitterLength);
     const Measurement m = measure(session, camera, reference, options.repeats, 1, options.wallFrames);
     json row = figures(m);

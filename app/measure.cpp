@@ -145,11 +145,6 @@ double measureShadingFloor(Session& session, const host::Camera& camera) {
   return mean;
 }
 
-int historyWarmUpFrames(const retroaa::Config& config) {
-  if (config.method != retroaa::Method::Temporal && !config.temporalFilter) return 0;
-  return std::max(2 * config.temporalJitterLength, int(std::ceil(4.0f / config.temporalBlend)));
-}
-
 Convergence measureConvergence(Session& session, const host::Camera& camera, const FrameReference& reference,
                                int frames, int round) {
   const retroaa::Config config = session.config;

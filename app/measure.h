@@ -47,10 +47,6 @@ struct Measurement {
   ErrorMetrics error;                                      // against the ground truth, edge figures on its edges
   std::optional<double> psnrVsPerSampleDb;
 };
-// Frames of one camera a method that carries a history renders before it is judged: two
-// rounds of its jitter sequence and 4 / temporal_blend frames (the history's weight of its first frame
-// then below e^-4 ≈ 2 %); 0 for every other method.
-int historyWarmUpFrames(const retroaa::Config& config);
 // How a history converges on a still camera: `frames` frames of it from a fresh history,
 // each scored against the ground truth.
 struct Convergence {

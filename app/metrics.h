@@ -16,9 +16,9 @@ struct DisplayImage {
 };
 
 struct ErrorMetrics {
-  double mse = 0;          // mean over pixels and RGB channels
-  double psnrDb = 0;       // 10 log10(1 / mse); capped at kPsnrCapDb for identical images
-  double edgeMse = 0;      // the same over the edge mask only
+  double mse = 0;      // mean over pixels and RGB channels
+  double psnrDb = 0;   // 10 log10(1 / mse); capped at kPsnrCapDb for identical images
+  double edgeMse = 0;  // the same over the edge mask only
   double edgePsnrDb = 0;
   double interiorMse = 0;  // the same off the edge mask (every pixel when the mask is empty): blur shows here
   double interiorPsnrDb = 0;
@@ -32,8 +32,7 @@ constexpr double kPsnrCapDb = 100.0;
 
 double psnrFromMse(double mse);
 // `edgeMask` (one byte per pixel, non-zero = edge) may be empty: edge figures are then 0.
-ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference,
-                     const std::vector<uint8_t>& edgeMask);
+ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference, const std::vector<uint8_t>& edgeMask);
 double ssim(const DisplayImage& a, const DisplayImage& b);
 
 // Edge pixels of the ground truth: where its supersamples' display luma spread exceeds `threshold`.

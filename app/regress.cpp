@@ -256,7 +256,7 @@ json regressScene(Session& session, const std::string& file, const std::vector<i
   for (const MethodSpec& spec : specs) {
     session.configure(spec.config, spec.name);
     MethodTotals totals;
-    const int historyFrames = historyWarmUpFrames(spec.config);
+    const int historyFrames = retroaa::historyFrames(spec.config);
     for (size_t fi = 0; fi < frames.size(); ++fi) {
       // A method with a history is judged as an engine would run it: the path played through
       // every frame, from historyFrames before the first measured one (its first camera held before the

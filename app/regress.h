@@ -22,8 +22,8 @@ struct RegressOptions {
   int wallFrames = 60;         // back-to-back frames of each scene's first frame for wall_ms (0: none)
   std::string out = "out/regress";
   std::string goldenDirectory;  // empty: the source tree's integration-tests/golden, from any working folder
-  bool check = false;         // compare with the goldens; exit 1 naming what got worse
-  bool updateGolden = false;  // rewrite the goldens from this run
+  bool check = false;           // compare with the goldens; exit 1 naming what got worse
+  bool updateGolden = false;    // rewrite the goldens from this run
 };
 
 // The scenes `regress` runs when none are named: relative to the source tree's integration-tests/.

@@ -21,7 +21,7 @@ struct Session {
   host::Scene scene;
   std::string hostName;  // one of kHostNames
   std::unique_ptr<host::Engine> renderer;
-  std::unique_ptr<patch::RetroaaHooks> fsoHooks;        // the patch of the host in use: one of these two
+  std::unique_ptr<patch::RetroaaHooks> fsoHooks;  // the patch of the host in use: one of these two
   std::unique_ptr<patch::SecondHostHooks> secondHooks;
   std::string contextSummary;  // the GL context (renderer, version, platform), for metadata
   std::string method;          // the spec of the last configure(), as reports name it

@@ -14,7 +14,7 @@ struct ViewOptions {
   std::string compare;             // method B: split screen when set
   retroaa::Config base;
   int width = 960, height = 540;
-  std::string script;              // timed actions, run with a fixed time step (see docs/viewer.md)
+  std::string script;                             // timed actions, run with a fixed time step (see docs/viewer.md)
   std::string recordPath = "recorded_path.json";  // where R writes the camera path
 };
 

@@ -74,7 +74,7 @@ TEST(Viewer, ScreenshotsOfEveryMethodAtThreeSizesMatchTheHeadlessRenders) {
       ASSERT_EQ(h, sizes[s][1]) << m;
       app::DisplayImage headless = host.render(m);
       // A history (temporal): the screenshot is the second frame after the switch.
-      if (app::historyWarmUpFrames(app::parseMethodSpec(m, {}).config) > 0) {
+      if (retroaa::historyFrames(app::parseMethodSpec(m, {}).config) > 0) {
         host.renderer->renderFrame(host.scene.camera);
         headless = app::DisplayImage::fromRgba8(w, h, host.renderer->readDisplay());
       }

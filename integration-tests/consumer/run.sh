@@ -73,7 +73,7 @@ echo "exported:" $exported
 for public in retroaa::Plugin::create retroaa::Plugin::shade retroaa::applySetting retroaa::validateConfig retroaa::version; do
   grep -qx " $public" <<<"$exported" || { echo "shared: $public is not exported"; exit 1; }
 done
-internal=$(grep -Ev '^ retroaa::(Plugin::|applyConfigFile|applyConfigText|applyFsoFlag|applyMethodSpec|applySetting|applySettingsList|configKeys|findMethod|methodTable|readSetting|settingValues|toConfigText|toString|usesMsaa|validateConfig|version)' <<<"$exported" || true)
+internal=$(grep -Ev '^ retroaa::(Plugin::|applyConfigFile|applyConfigText|applyFsoFlag|applyMethodSpec|applySetting|applySettingsList|configKeys|findMethod|historyFrames|methodTable|readSetting|settingValues|toConfigText|toString|usesMsaa|validateConfig|version)' <<<"$exported" || true)
 [ -z "$internal" ] || { echo "shared: internal symbols exported:" $internal; exit 1; }
 cmake -S "$consumer" -B "$work/shared-consumer" -DCONSUME=package -DCMAKE_PREFIX_PATH="$work/shared-prefix" >/dev/null
 cmake --build "$work/shared-consumer" >/dev/null

@@ -25,8 +25,25 @@ TEST(Config, EachKeyNamesTheMethodThatDeclaresIt) {
   EXPECT_EQ(owner.at("closeness"), "resolve");
   EXPECT_EQ(owner.at("adaptive_min_samples"), "adaptive");
   EXPECT_EQ(owner.at("edge_detector"), "edge");
-  for (const MethodInfo& row : methodTable())  // a stacking switch belongs to the method it stacks
-    if (*row.stackKey) EXPECT_EQ(owner.at(row.stackKey), row.name);
+  for (const MethodInfo& row : methodTable()) {  // a stacking switch belongs to the method it stacks
+    if (*row.stackKey) {
+      EXPECT_EQ(owner.at(row.stackKey), row.name);
+    }
+  }
+}
+
+// What a capture waits for: nothing without a history; with one, two rounds of the jitter sequence and
+// long enough for the blend to forget its first frame.
+TEST(Config, OnlyAMethodWithAHistoryTakesFramesToConverge) {
+  auto framesOf = [](const std::string& spec) {
+    Config config;
+    EXPECT_TRUE(applyMethodSpec(config, spec)) << spec;
+    return historyFrames(config);
+  };
+  EXPECT_EQ(framesOf("off"), 0);
+  EXPECT_EQ(framesOf("resolve"), 0);
+  EXPECT_EQ(framesOf("temporal"), 40) << "4 / temporal_blend (0.1), beyond 2 rounds of 8";
+  EXPECT_EQ(framesOf("resolve+temporal@temporal_jitter_length=32"), 64);
 }
 
 TEST(Config, UnknownKeyNamesKnownKeys) {

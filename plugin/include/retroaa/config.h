@@ -199,7 +199,7 @@ struct ConfigKey {
   const char* allowed;       // as text: "0 .. 100", "on, off", "median, front, back, …"
   const char* effect;        // one line: what it changes and what changing it costs
   Kind kind;
-  float minimum, maximum;  // Number and Integer
+  float minimum, maximum;   // Number and Integer
   const char* method = "";  // the method whose registry row declares it; "" for keys every method shares
 };
 RETROAA_API const std::vector<ConfigKey>& configKeys();
@@ -224,6 +224,9 @@ RETROAA_API const MethodInfo* findMethod(Method method);
 
 // Whether the method renders the model pass into a multisampled G-buffer.
 RETROAA_API bool usesMsaa(Method method);
+// Frames a still view takes, under `config`, to converge after a switch, a reset or a camera cut: 0 for
+// a method that keeps no history. What a capture or a screenshot waits before it is taken.
+RETROAA_API int historyFrames(const Config& config);
 
 RETROAA_API const char* toString(Method method);
 RETROAA_API const char* toString(ResolveWeighting weighting);

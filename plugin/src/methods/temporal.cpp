@@ -262,6 +262,13 @@ Jitter temporalJitter(uint64_t frame, int length) {
 
 bool runsTemporal(const Config& config) { return config.method == Method::Temporal || config.temporalFilter; }
 
+int historyFrames(const Config& config) {
+  if (!runsTemporal(config)) return 0;
+  // Two rounds of the jitter sequence, and 4 / temporal_blend frames (the history's weight of its first
+  // frame then below e^-4, 2 %).
+  return std::max(2 * config.temporalJitterLength, int(std::ceil(4.0f / config.temporalBlend)));
+}
+
 Result<std::unique_ptr<Technique>> createTemporalTechnique(PluginContext& context, SharedTargets& shared) {
   return TemporalTechnique::create(context, shared);
 }
