@@ -36,10 +36,10 @@ class RETROAA_API Plugin {
   // UnsupportedContext (below GL 4.5), IncompleteFramebuffer (the driver refused a target built from
   // the layout's formats) or ShaderError (a built-in shader does not build, or lacks a uniform).
   // Features the context lacks make the plugin fall back, with a warning that says which and why:
-  // no multisampling (GL_MAX_SAMPLES < 2) → every multi-sample method falls back (MethodInfo::multisampled); no stencil export →
-  // slice counts in ⌈log2(N+1)⌉ bit passes; no timer queries → no pass times; no pipeline statistics →
-  // no invocation counts. Compute shaders run only where asked for (resolve_compute, reconstruct_compute;
-  // without image stores for a target, the full-screen pass, with a warning).
+  // no multisampling (GL_MAX_SAMPLES < 2) → every multi-sample method falls back (MethodInfo::multisampled); no stencil
+  // export → slice counts in ⌈log2(N+1)⌉ bit passes; no timer queries → no pass times; no pipeline statistics → no
+  // invocation counts. Compute shaders run only where asked for (resolve_compute, reconstruct_compute; without image
+  // stores for a target, the full-screen pass, with a warning).
   static Result<std::unique_ptr<Plugin>> create(const Description& description);
   ~Plugin();
   Plugin(const Plugin&) = delete;
@@ -57,11 +57,11 @@ class RETROAA_API Plugin {
   // or the layout no such role. Valid until the next reconfigure() or resize(): a new method or sample
   // count may replace it.
   GLuintHandle multisampledAttachment(AttachmentRole role) const;
-  // For a method with a prepass (docs/methods/ says which): a multisampled framebuffer the host draws its models into once
-  // more, after the model pass, with its own model shaders and colour writes on. Clear its depth to the far
-  // value and its draw buffers 0 … K−1 (K: the layout's attachments) to 0 first. Its depth is always kept;
-  // A prepass that filters with normals also keeps the output at the NormalGloss attachment's location (every other draw buffer is GL_NONE).
-  // 0 when the method needs no such pass. Valid until the next reconfigure() or resize().
+  // For a method with a prepass (docs/methods/ says which): a multisampled framebuffer the host draws its models into
+  // once more, after the model pass, with its own model shaders and colour writes on. Clear its depth to the far value
+  // and its draw buffers 0 … K−1 (K: the layout's attachments) to 0 first. Its depth is always kept; a prepass that
+  // filters with normals also keeps the output at the NormalGloss attachment's location (every other draw buffer is
+  // GL_NONE). 0 when the method needs no such pass. Valid until the next reconfigure() or resize().
   GLuintHandle prepassFramebuffer() const;
   // Where a method with a history runs (as the method or stacked): this frame's sub-pixel offset of the projection,
   // Halton (2, 3) over temporal_jitter_length frames; (0, 0) otherwise. Call it once before the model
@@ -70,7 +70,7 @@ class RETROAA_API Plugin {
   // (column-major; width and height of the layout). FrameInfo::projectionMatrix stays unshifted.
   Jitter jitter() const;
   // The mip bias to add to the host's material texture samplers while this method runs: where
-  // a method with a history runs, its lod bias key (the history averages the sharper mips' detail over the jitter, as
+  // a method with a history runs, temporal_lod_bias (the history averages the sharper mips' detail over the jitter, as
   // FSR 2 advises for native-resolution AA); 0 otherwise.
   float textureLodBias() const;
   // After the model pass, every frame and for every method (it also begins the frame). Returns the
