@@ -178,7 +178,7 @@ void main() {
       // A history fetched between its texels has been resampled (blurred a little); the more so, the more
       // this frame weighs, up to 0.3 (fence and engine paths: +0.3-0.6 dB interior, +0.2 dB edge). A
       // moving one is resampled every frame, its blur compounding: up to 0.5 at 2 px a frame (recorded
-      // paths: +0.3-2.0 dB interior, flicker lower on all five, edge -0.0 to -0.1 dB).
+      // paths: +0.3-2.1 dB interior, flicker lower on all five, edge -0.0 to -0.1 dB).
       vec2 offCentre = abs(fract(previousUv * vec2(last + 1)) - 0.5);  // 0 on a texel's centre
       float resampled = 2.0 * max(offCentre.x, offCentre.y);
       float blend = max(mix(uBlend, max(uBlend, 0.3), resampled), mix(uBlend, 0.5, clamp(0.5 * motion, 0.0, 1.0)));
