@@ -89,6 +89,34 @@ TEST(Regress, AMovingObjectGivesALagFigureThatAVelocityAttachmentCloses) {
   EXPECT_TRUE(lag["default/off"].is_null()) << lag["default/off"];
 }
 
+// The same camera path played at four times its frame rate, measured at the same moments: `temporal`
+// has four times the frames to average and moves a quarter as far between them, so it must not come out
+// blurrier. A history whose blend and clip followed the distance moved rather than the motion itself was:
+// slower frames kept it longer, and each frame resampled it again (0.3 dB under here, up to 3.0 dB on
+// the recorded paths at 160x120; docs/methods/temporal.md).
+TEST(Regress, TemporalAtFourTimesTheFrameRateIsNoBlurrier) {
+  const fs::path out = tempDir("frame_rate");
+  const fs::path scenes = fs::path(RETROAA_SOURCE_DIR) / "integration-tests" / "scenes";
+  std::ifstream sceneFile(scenes / "engine.json"), pathFile(scenes / "paths" / "engine.json");
+  nlohmann::json fast = nlohmann::json::parse(sceneFile), path = nlohmann::json::parse(pathFile);
+  path["fps"] = 4 * path["fps"].get<double>();
+  fast["camera_path"] = path;
+  std::ofstream(out / "engine_fast.json") << fast.dump();
+  const auto interior = [&](const std::string& scene, int stride) {
+    const fs::path report = out / ("report" + std::to_string(stride));
+    const CliRun run =
+        runCli("regress " + scene + " --frames 4 --stride " + std::to_string(stride) +
+               " --width 128 --height 96 --gt-samples 3 --wall-frames 0 --methods temporal --out " + report.string());
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream in(report / "report.json");
+    return nlohmann::json::parse(in)["scenes"][0]["rows"][0]["interior_psnr_db"].get<double>();
+  };
+  const double recorded = interior((scenes / "engine.json").string(), 7);
+  const double fourTimes = interior((out / "engine_fast.json").string(), 28);
+  std::printf("temporal interior PSNR: %.2f dB at the path's frame rate, %.2f dB at 4x\n", recorded, fourTimes);
+  EXPECT_GT(fourTimes, recorded - 0.25);
+}
+
 TEST(Regress, ReportHtmlIsWellFormedAndEveryReferenceExists) {
   const fs::path out = tempDir("report");
   ASSERT_EQ(

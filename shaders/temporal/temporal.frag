@@ -29,10 +29,15 @@ layout(location = 1) out vec4 outHistory;
 const float kSkyDepth = -1.0;
 const float kDepthSlack = 0.01;  // relative: history depth within the footprint's range ± 1 % matches
 // The clip box: mean ± γσ of the neighbourhood (Salvi), within its min-max box. γ = 1 where the
-// history moved a pixel or more; wider for a still one, whose reprojection is exact and whose jittered
-// neighbourhood misses sub-pixel detail the history holds (a tight box would cut it every frame).
+// history moved a quarter pixel or more; wider for a still one, whose reprojection is exact and whose
+// jittered neighbourhood misses sub-pixel detail the history holds (a tight box would cut it every frame).
 // (γ = 2 still: on the demo frame every wider box measured the same, and 1 lost 0.2-0.3 dB.)
 const float kStillClipGamma = 2.0, kMovingClipGamma = 1.0;
+// Motion (px a frame) from which a moving history gets its tight box and its highest blend. Low, because
+// what blurs a moving history is how often it is resampled, not how far it moves: the recorded paths
+// played at 2x and 4x their frame rate and measured at the same moments lost up to 3.0 dB interior with
+// ramps over 1 and 2 px; with these, at most 0.8 (retroaa regress; docs/methods/temporal.md).
+const float kMotionForTightClip = 0.25, kMotionForFullBlend = 0.5;
 
 vec3 encode(vec3 c) {
 #if LINEAR_INPUT
@@ -156,7 +161,7 @@ void main() {
   mean /= 9.0;
   vec3 sigma = sqrt(max(squares / 9.0 - mean * mean, vec3(0.0)));
   float motion = length((previousUv - (vec2(pixel) + 0.5) / vec2(last + 1)) * vec2(last + 1));
-  float gamma = mix(kStillClipGamma, kMovingClipGamma, clamp(motion, 0.0, 1.0));
+  float gamma = mix(kStillClipGamma, kMovingClipGamma, clamp(motion / kMotionForTightClip, 0.0, 1.0));
   vec3 boxLow = max(lowest, mean - gamma * sigma), boxHigh = min(highest, mean + gamma * sigma);
 
   vec3 result = current;
@@ -177,11 +182,10 @@ void main() {
       if (outside > 1.0) h = centre + toHistory / outside;
       // A history fetched between its texels has been resampled (blurred a little); the more so, the more
       // this frame weighs, up to 0.3 (fence and engine paths: +0.3-0.6 dB interior, +0.2 dB edge). A
-      // moving one is resampled every frame, its blur compounding: up to 0.5 at 2 px a frame (recorded
-      // paths: +0.3-2.1 dB interior, flicker lower on all five, edge -0.0 to -0.1 dB).
+      // moving one is resampled every frame, its blur compounding: 0.5 from half a pixel a frame.
       vec2 offCentre = abs(fract(previousUv * vec2(last + 1)) - 0.5);  // 0 on a texel's centre
       float resampled = 2.0 * max(offCentre.x, offCentre.y);
-      float blend = max(mix(uBlend, max(uBlend, 0.3), resampled), mix(uBlend, 0.5, clamp(0.5 * motion, 0.0, 1.0)));
+      float blend = max(mix(uBlend, max(uBlend, 0.3), resampled), mix(uBlend, 0.5, clamp(motion / kMotionForFullBlend, 0.0, 1.0)));
       // Moving, each side also weighs 1 / (1 + luma) (Karis): a bright history the clip let through (the
       // halo a resampled star leaves around itself) fades faster. Still, the plain blend, which converges
       // to the pixel's mean (this weighting biases it dark: -0.4 dB edge on the demo frame). Recorded
