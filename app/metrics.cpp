@@ -23,7 +23,8 @@ float DisplayImage::luma(int x, int y) const {
 
 double psnrFromMse(double mse) { return mse <= 0 ? kPsnrCapDb : std::min(kPsnrCapDb, 10.0 * std::log10(1.0 / mse)); }
 
-ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference, const std::vector<uint8_t>& edgeMask) {
+ErrorMetrics pixelErrors(const DisplayImage& image, const DisplayImage& reference,
+                         const std::vector<uint8_t>& edgeMask) {
   if (image.width != reference.width || image.height != reference.height)
     throw std::invalid_argument("compare: image sizes differ");
   ErrorMetrics m;
@@ -55,6 +56,11 @@ ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference, c
     m.interiorMse = interiorSum / (3.0 * m.interiorPixels);
     m.interiorPsnrDb = psnrFromMse(m.interiorMse);
   }
+  return m;
+}
+
+ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference, const std::vector<uint8_t>& edgeMask) {
+  ErrorMetrics m = pixelErrors(image, reference, edgeMask);
   m.ssim = ssim(image, reference);
   return m;
 }

@@ -33,6 +33,9 @@ constexpr double kPsnrCapDb = 100.0;
 double psnrFromMse(double mse);
 // `edgeMask` (one byte per pixel, non-zero = edge) may be empty: edge figures are then 0.
 ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference, const std::vector<uint8_t>& edgeMask);
+// The same without the SSIM (left 0): the per-pixel figures alone, for a mask that is not the edges.
+ErrorMetrics pixelErrors(const DisplayImage& image, const DisplayImage& reference,
+                         const std::vector<uint8_t>& edgeMask);
 double ssim(const DisplayImage& a, const DisplayImage& b);
 
 // Edge pixels of the ground truth: where its supersamples' display luma spread exceeds `threshold`.

@@ -57,7 +57,7 @@ struct MethodTotals {
       edgePsnr += m.error.edgePsnrDb, minEdgePsnr = std::min(minEdgePsnr, m.error.edgePsnrDb), ++edgeFrames;
     if (m.error.interiorPixels > 0) interiorPsnr += m.error.interiorPsnrDb, ++interiorFrames;
     if (std::count(reference.changed.begin(), reference.changed.end(), 1) > 0)
-      lagPsnr += compare(m.image, reference.truth, reference.changed).edgePsnrDb, ++lagFrames;
+      lagPsnr += pixelErrors(m.image, reference.truth, reference.changed).edgePsnrDb, ++lagFrames;
     psnrVsPerSample += m.psnrVsPerSampleDb.value_or(0);
     ssim += m.error.ssim, maxError = std::max(maxError, m.error.maxAbsError);
     evaluations += m.stats.evaluationsPerPixel(), gpuMs += m.gpuMs;

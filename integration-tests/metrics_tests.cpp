@@ -73,6 +73,13 @@ TEST(Metrics, EdgePsnrCountsOnlyMaskedPixelsAndInteriorPsnrTheRest) {
   const app::ErrorMetrics blurred = app::compare(a, b, mask);
   EXPECT_NEAR(blurred.interiorPsnrDb, 10.0 * std::log10(1.0 / (0.01 / 240.0)), 1e-3);
   EXPECT_EQ(blurred.edgePsnrDb, m.edgePsnrDb);
+  // pixelErrors (regress's lag figure) gives the same per-pixel figures and leaves the SSIM out.
+  const app::ErrorMetrics pixels = app::pixelErrors(a, b, mask);
+  EXPECT_EQ(pixels.edgePsnrDb, blurred.edgePsnrDb);
+  EXPECT_EQ(pixels.interiorPsnrDb, blurred.interiorPsnrDb);
+  EXPECT_EQ(pixels.maxAbsError, blurred.maxAbsError);
+  EXPECT_LT(blurred.ssim, 1.0);
+  EXPECT_EQ(pixels.ssim, 0.0);
 }
 
 TEST(Metrics, SsimIsSymmetricAndFallsWithNoise) {
