@@ -43,6 +43,7 @@ struct HandWrittenFrames {
   SyntheticFrame frame{8, 8};
   std::unique_ptr<patch::RetroaaHooks> hooks;
   retroaa::FrameInfo info;
+  std::string irradiance = "1.0";  // albedoAsLight's: the light is albedo × this (GLSL)
 
   explicit HandWrittenFrames(retroaa::Config config = {}) {
     config.method = retroaa::Method::Temporal;
@@ -58,7 +59,8 @@ struct HandWrittenFrames {
     fillGeometry(plugin, frame.width, frame.height, pixels);
     EXPECT_TRUE(plugin.resolve(info));
     const GLuint color = frame.renderer->targets().color;
-    EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, frame.width, frame.height); }));
+    EXPECT_TRUE(
+        plugin.shade([&](GLuint target) { albedoAsLight(color, target, frame.width, frame.height, irradiance); }));
     EXPECT_TRUE(plugin.post());
     info.cameraCut = false;
     return frame.read(frame.renderer->targets().lightTexture);
@@ -173,6 +175,34 @@ TEST(Temporal, WithoutMatricesOrWithBrokenOnesEachFrameIsShownAsRenderedWithOneW
   for (int i = 0; i < 2; ++i) light = frames.run(wall(10, kRed));
   for (const glm::vec4& pixel : light) EXPECT_EQ(glm::vec3(pixel), kRed);
   EXPECT_TRUE(warned(frames.hooks->plugin(), "singular, not finite or not a perspective projection"));
+}
+
+// NaN or infinite light (a host's division by zero, say) reaches neither the display nor the history:
+// such a pixel shows 0 for the frame and starts a new history on the next; the host hears of it once,
+// read back frames later (no wait in the frame path).
+TEST(Temporal, ANonFiniteLightIsNeitherShownNorKeptAndWarnsOnce) {
+  HandWrittenFrames frames;
+  for (int i = 0; i < 8; ++i) frames.run(wall(10, kRed));
+  const auto count = [&] {
+    const std::vector<std::string> warnings = frames.hooks->plugin().warnings();
+    return std::count_if(warnings.begin(), warnings.end(),
+                         [](const std::string& w) { return w.find("were not finite") != std::string::npos; });
+  };
+  for (int round = 0; round < 2; ++round) {
+    // The left two columns NaN, the top row infinite.
+    frames.irradiance =
+        "(gl_FragCoord.x < 2.0 ? uintBitsToFloat(0x7fc00000u) : gl_FragCoord.y > 7.0 ? uintBitsToFloat(0x7f800000u) "
+        ": 1.0)";
+    std::vector<glm::vec4> light = frames.run(wall(10, kBlue));
+    for (const glm::vec4& pixel : light) EXPECT_TRUE(std::isfinite(pixel.r + pixel.g + pixel.b)) << pixel.r;
+    EXPECT_EQ(glm::vec3(light[size_t(3 * 8 + 0)]), glm::vec3(0.0f));
+    frames.irradiance = "1.0";
+    light = frames.run(wall(10, kBlue));
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 2; ++x) EXPECT_EQ(glm::vec3(light[size_t(y * 8 + x)]), kBlue) << x << "," << y;
+    for (int i = 0; i < 4; ++i) frames.run(wall(10, kBlue));
+    EXPECT_EQ(count(), 1);
+  }
 }
 
 TEST(Temporal, TheFsoHostJittersItsProjectionAndAStillFrameConvergesNearSupersampling) {

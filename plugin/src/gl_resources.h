@@ -13,7 +13,7 @@ struct ObjectCounter {
   int live = 0;
 };
 
-enum class GlKind { Texture, Framebuffer, VertexArray, Program, Query, Sampler };
+enum class GlKind { Texture, Framebuffer, VertexArray, Program, Query, Sampler, Buffer };
 
 template <GlKind Kind>
 class GlObject {
@@ -45,6 +45,7 @@ class GlObject {
       case GlKind::Program: glDeleteProgram(name_); break;
       case GlKind::Query: glDeleteQueries(1, &name_); break;
       case GlKind::Sampler: glDeleteSamplers(1, &name_); break;
+      case GlKind::Buffer: glDeleteBuffers(1, &name_); break;
     }
     --counter_->live;
     name_ = 0;
@@ -63,6 +64,35 @@ using GlVertexArray = GlObject<GlKind::VertexArray>;
 using GlProgram = GlObject<GlKind::Program>;
 using GlQuery = GlObject<GlKind::Query>;
 using GlSampler = GlObject<GlKind::Sampler>;
+using GlBuffer = GlObject<GlKind::Buffer>;
+
+// A fence (glFenceSync), deleted with its owner. Polled, never waited on, in the frame path.
+class GlFence {
+ public:
+  GlFence() = default;
+  ~GlFence() { reset(); }
+  GlFence(const GlFence&) = delete;
+  GlFence& operator=(const GlFence&) = delete;
+  void insert() {
+    reset();
+    sync_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  }
+  bool pending() const { return sync_ != nullptr; }
+  // Whether the GPU has passed it (false when none is pending); asks without waiting.
+  bool signaled() const {
+    if (!sync_) return false;
+    GLint status = GL_UNSIGNALED;
+    glGetSynciv(sync_, GL_SYNC_STATUS, 1, nullptr, &status);
+    return status == GL_SIGNALED;
+  }
+  void reset() {
+    if (sync_) glDeleteSync(sync_);
+    sync_ = nullptr;
+  }
+
+ private:
+  GLsync sync_ = nullptr;
+};
 
 // Bytes per texel of the formats the plugin allocates (for Stats::bytesHeld).
 uint64_t bytesPerTexel(GLenum internalFormat);

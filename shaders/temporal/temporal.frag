@@ -23,10 +23,15 @@ uniform float uClipWPerViewZ;      // P[2][3]: -1 for GL's right-handed view spa
 uniform float uBlend;              // the current frame's weight
 uniform float uHistoryValid;       // 0 on the first frame after a reset (cut, new config, no matrices)
 
+// Pixels whose light, history or blend was not finite (NaN, infinite): the plugin reads the count
+// frames later and tells the host once.
+layout(binding = 0, offset = 0) uniform atomic_uint uNonFinite;
+
 layout(location = 0) out vec4 outColour;
 layout(location = 1) out vec4 outHistory;
 
 const float kSkyDepth = -1.0;
+const float kNoHistory = -2.0;  // history w: the texel holds no history (its pixel was not finite)
 const float kDepthSlack = 0.01;  // relative: history depth within the footprint's range ± 1 % matches
 // The clip box: mean ± γσ of the neighbourhood (Salvi), within its min-max box. γ = 1 where the
 // history moved a quarter pixel or more; wider for a still one, whose reprojection is exact and whose
@@ -103,11 +108,14 @@ vec3 historyLanczos(vec2 uv) {
 bool disoccluded(vec2 uv, float expected) {
   ivec2 size = textureSize(uHistory, 0);
   ivec2 nearest = ivec2(floor(uv * vec2(size)));
+  float restarted = 0.5 * (kSkyDepth + kNoHistory);  // below: a texel that holds no history
+  if (texelFetch(uHistory, clamp(nearest, ivec2(0), size - 1), 0).w < restarted) return true;
   float low = 1e30, high = -1e30;
   bool sky = false, geometry = false;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x) {
       float depth = texelFetch(uHistory, clamp(nearest + ivec2(x, y), ivec2(0), size - 1), 0).w;
+      if (depth < restarted) continue;  // neither a surface nor the sky
       if (depth < 0.0) {
         sky = true;
       } else {
@@ -165,6 +173,7 @@ void main() {
   vec3 boxLow = max(lowest, mean - gamma * sigma), boxHigh = min(highest, mean + gamma * sigma);
 
   vec3 result = current;
+  bool finite = finite3(current);  // false: this pixel shows what it can and its history restarts
   bool usable = uHistoryValid > 0.5 && previousClip.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0))) &&
                 all(lessThanEqual(previousUv, vec2(1.0))) && !disoccluded(previousUv, expectedDepth);
   if (usable) {
@@ -195,9 +204,15 @@ void main() {
       float currentWeight = blend / (1.0 + weighting * lumaOf(current));
       float historyWeight = (1.0 - blend) / (1.0 + weighting * lumaOf(clipped));
       result = (current * currentWeight + clipped * historyWeight) / (currentWeight + historyWeight);
+    } else {
+      finite = false;
     }
   }
-  if (!finite3(result)) result = finite3(current) ? current : vec3(0.0);
+  if (!finite3(result)) {
+    result = finite3(current) ? current : vec3(0.0);
+    finite = false;
+  }
+  if (!finite) atomicCounterIncrement(uNonFinite);
   outColour = vec4(encode(result), texelFetch(uInput, pixel, 0).a);
-  outHistory = vec4(result, depth);
+  outHistory = vec4(result, finite ? depth : kNoHistory);
 }

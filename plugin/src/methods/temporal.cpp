@@ -135,6 +135,20 @@ class TemporalTechnique : public Technique {
       glNamedFramebufferDrawBuffers(t.framebuffers_[i].get(), 2, drawBuffers);
       if (Status status = checkFramebuffer(t.framebuffers_[i].get(), "temporal.output"); !status) return status.error();
     }
+    // The pass counts its non-finite pixels here; the count is copied into a buffer mapped once, here
+    // (persistent and coherent), and read through the mapping frames later, once a fence says it landed.
+    GLuint buffers[2] = {};
+    glCreateBuffers(2, buffers);
+    const GLuint zeroCount = 0;
+    const GLbitfield mapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    glNamedBufferStorage(buffers[0], sizeof zeroCount, &zeroCount, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(buffers[1], sizeof zeroCount, &zeroCount, mapping);
+    t.nonFiniteCounter_ = GlBuffer(context.objects, buffers[0]);
+    t.nonFiniteReadback_ = GlBuffer(context.objects, buffers[1]);
+    t.nonFiniteMapped_ = static_cast<const GLuint*>(glMapNamedBufferRange(buffers[1], 0, sizeof zeroCount, mapping));
+    if (!t.nonFiniteMapped_)
+      return Error{ErrorCode::UnsupportedContext, "temporal: the context could not map its 4-byte readback buffer"};
+    t.bytes_ += 2 * sizeof zeroCount;
     auto program =
         context.shaders->program("common/fullscreen.vert", "temporal/temporal.frag",
                                  depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_) +
@@ -198,6 +212,29 @@ class TemporalTechnique : public Technique {
     return continues;
   }
 
+  // The count of non-finite pixels the passes since the last copy made (NaN or infinite light, history
+  // or blend: the shader showed this frame's light there, or 0, and restarted their history), read once
+  // the GPU has copied it aside; until then the counter keeps counting. No wait in the frame path.
+  void reportNonFinite(PluginContext& context) {
+    if (nonFiniteCopied_.pending()) {
+      if (!nonFiniteCopied_.signaled()) return;
+      nonFiniteCopied_.reset();
+      const GLuint count = *nonFiniteMapped_;
+      if (count > 0)
+        warnOnce(context, warnedNonFinite_,
+                 "temporal: " + std::to_string(count) +
+                     " pixels were not finite (NaN or infinite light, history or blend); they showed the frame's "
+                     "light (0 where it was not finite) and their history restarted");
+    }
+    glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glCopyNamedBufferSubData(nonFiniteCounter_.get(), nonFiniteReadback_.get(), 0, 0, sizeof(GLuint));
+    glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(nonFiniteCounter_.get(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                              &zero);
+    nonFiniteCopied_.insert();
+  }
+
   static void warnOnce(PluginContext& context, bool& warned, const std::string& message) {
     if (warned) return;
     warned = true;
@@ -230,7 +267,10 @@ class TemporalTechnique : public Technique {
     program_.set("uBlend", valid ? std::max(context.config.temporalBlend, 1.0f / float(framesAccumulated_ + 1)) : 1.0f);
     program_.set("uHistoryValid", valid ? 1.0f : 0.0f);
     program_.setDepthPlanes(context);
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, nonFiniteCounter_.get());
     context.drawFullscreen();
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, 0);
+    reportNonFinite(context);
     historyIndex_ = next;
     framesAccumulated_ = valid ? framesAccumulated_ + 1 : 1;
   }
@@ -247,7 +287,10 @@ class TemporalTechnique : public Technique {
   bool historyValid_ = false;  // false: the next frame starts a new history (reset, or unusable matrices)
   int framesAccumulated_ = 0;  // frames in the history since it started
   Matrix4 previousView_{}, previousProjection_{};
-  bool warnedNoProjection_ = false, warnedBadMatrices_ = false;
+  GlBuffer nonFiniteCounter_, nonFiniteReadback_;  // the pass's count of non-finite pixels, and its copy
+  const GLuint* nonFiniteMapped_ = nullptr;        // the readback buffer, mapped for the technique's life
+  GlFence nonFiniteCopied_;                        // pending: the copy is not yet read
+  bool warnedNoProjection_ = false, warnedBadMatrices_ = false, warnedNonFinite_ = false;
   uint64_t bytes_ = 0;
 };
 
