@@ -109,13 +109,15 @@ bool disoccluded(vec2 uv, float expected) {
   ivec2 size = textureSize(uHistory, 0);
   ivec2 nearest = ivec2(floor(uv * vec2(size)));
   float restarted = 0.5 * (kSkyDepth + kNoHistory);  // below: a texel that holds no history
-  if (texelFetch(uHistory, clamp(nearest, ivec2(0), size - 1), 0).w < restarted) return true;
   float low = 1e30, high = -1e30;
   bool sky = false, geometry = false;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x) {
       float depth = texelFetch(uHistory, clamp(nearest + ivec2(x, y), ivec2(0), size - 1), 0).w;
-      if (depth < restarted) continue;  // neither a surface nor the sky
+      if (depth < restarted) {  // neither a surface nor the sky; at the nearest, a history restarting
+        if (x == 0 && y == 0) return true;
+        continue;
+      }
       if (depth < 0.0) {
         sky = true;
       } else {
@@ -173,7 +175,8 @@ void main() {
   vec3 boxLow = max(lowest, mean - gamma * sigma), boxHigh = min(highest, mean + gamma * sigma);
 
   vec3 result = current;
-  bool finite = finite3(current);  // false: this pixel shows what it can and its history restarts
+  bool currentFinite = finite3(current);
+  bool finite = currentFinite;  // false: this pixel shows what it can and its history restarts
   bool usable = uHistoryValid > 0.5 && previousClip.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0))) &&
                 all(lessThanEqual(previousUv, vec2(1.0))) && !disoccluded(previousUv, expectedDepth);
   if (usable) {
@@ -209,7 +212,7 @@ void main() {
     }
   }
   if (!finite3(result)) {
-    result = finite3(current) ? current : vec3(0.0);
+    result = currentFinite ? current : vec3(0.0);
     finite = false;
   }
   if (!finite) atomicCounterIncrement(uNonFinite);
