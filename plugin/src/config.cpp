@@ -269,6 +269,10 @@ std::vector<Key> buildKeys() {
              "G-buffer methods' source: 0 multisampled (samples); m an m x m supersampled G-buffer (the host's model "
              "pass renders at m x its viewport, Plugin::geometryScale), its m^2 sub-positions lit like samples; "
              "reallocates"));
+  keys.push_back(
+      number("sample_shading", &Config::sampleShading, 0, 1,
+             "fraction of samples the host's model pass shades where it draws multisampled (glMinSampleShading): 1 "
+             "runs its discard per sample, anti-aliasing cut-out edges, at up to samples x the model pass's cost"));
   for (const TechniqueRow& row : techniqueRegistry())
     if (row.keys)
       for (Key& key : row.keys()) {

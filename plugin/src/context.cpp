@@ -74,13 +74,13 @@ Status checkFramebuffer(GLuint framebuffer, const char* label) {
 GlTexture makeLightTargetCopy(PluginContext& context, const char* label, uint64_t& bytes) {
   const GBufferLayout& layout = context.layout;
   GLint format = GL_RGBA16F;
-  glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  glGetTextureLevelParameteriv(sceneColourTexture(layout), 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
   return makeTexture(context, GLenum(format), layout.width, layout.height, 0, label, bytes);
 }
 
 void copyLightTarget(const GBufferLayout& layout, GLuint copy) {
-  glCopyImageSubData(layout.lightTexture, GL_TEXTURE_2D, 0, 0, 0, 0, copy, GL_TEXTURE_2D, 0, 0, 0, 0, layout.width,
-                     layout.height, 1);
+  glCopyImageSubData(sceneColourTexture(layout), GL_TEXTURE_2D, 0, 0, 0, 0, copy, GL_TEXTURE_2D, 0, 0, 0, 0,
+                     layout.width, layout.height, 1);
 }
 
 uint64_t bytesPerTexel(GLenum internalFormat) {

@@ -76,6 +76,15 @@ Status checkFramebuffer(GLuint framebuffer, const char* label);
 
 // For a pass that rewrites the host's light target before tonemapping and reads its neighbours: a
 // texture of the light target's format and size, and the copy of the frame's light into it.
+// The HDR scene colour between shade() and the host's tonemap, which a pass before tonemapping filters: the
+// composed target where the layout names one (the callback composes), else the light target.
+inline GLuint sceneColourTexture(const GBufferLayout& layout) {
+  return layout.composedTexture ? layout.composedTexture : layout.lightTexture;
+}
+inline GLuint sceneColourFramebuffer(const GBufferLayout& layout) {
+  return layout.composedTexture ? layout.composedFramebuffer : layout.lightFramebuffer;
+}
+// A texture in the scene colour's format and size, and a copy of the scene colour into it.
 GlTexture makeLightTargetCopy(PluginContext& context, const char* label, uint64_t& bytes);
 void copyLightTarget(const GBufferLayout& layout, GLuint copy);
 

@@ -62,6 +62,25 @@ Status validateLayout(const GBufferLayout& layout) {
     return invalid(
         "layout names only one of displayFramebuffer and displayTexture (both, or neither without post "
         "methods)");
+  if (!layout.composedFramebuffer != !layout.composedTexture)
+    return invalid(
+        "layout names only one of composedFramebuffer and composedTexture (both, or neither when the "
+        "shade() callback produces light)");
+  if (layout.composedTexture) {
+    GLint redType = 0, redBits = 0;
+    if (glIsTexture(layout.composedTexture)) {
+      glGetTextureLevelParameteriv(layout.composedTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
+      glGetTextureLevelParameteriv(layout.composedTexture, 0, GL_TEXTURE_RED_SIZE, &redBits);
+    }
+    if (redType != GL_FLOAT && !(redType == GL_UNSIGNED_NORMALIZED && redBits == 8))
+      return invalid("composedTexture " + std::to_string(layout.composedTexture) +
+                     " is not a texture of floats or 8-bit colour (e.g. GL_RGBA16F, GL_RGBA8)");
+    // The slices light into the host's own light textures, which the callback's combine then reads.
+    if (!layout.lightTexture || !layout.lightFramebuffer)
+      return invalid(
+          "a layout with a composedFramebuffer needs the lightFramebuffer and lightTexture its callback's "
+          "lighting writes (the slices light into them, then compose)");
+  }
   if (!layout.extraLightTextures.empty()) {
     // The slices composite into each light output directly, with blending: every one must hold floats.
     auto holdsFloats = [](GLuint texture) {
@@ -447,6 +466,12 @@ Jitter Plugin::jitter() const {
                         context.config.temporalJitterLength);
 }
 
+float Plugin::sampleShading() const {
+  const bool drawsMultisampled =
+      (impl_->msaa && impl_->msaa->multisampled() && impl_->msaa->supersample() == 1) || prepassFramebuffer() != 0;
+  return drawsMultisampled ? impl_->context.config.sampleShading : 0.0f;
+}
+
 float Plugin::textureLodBias() const {
   const Config& config = impl_->context.config;
   return runsTemporal(config) ? config.temporalLodBias : 0.0f;
@@ -479,6 +504,14 @@ Status Plugin::resolve(const FrameInfo& frame) {
 }
 
 Status Plugin::shade(const LightingFunction& lighting) {
+  if (impl_->context.layout.composedFramebuffer)
+    return Error{ErrorCode::InvalidLayout,
+                 "the layout names a composedFramebuffer, so shade() takes a ComposingFunction (its callback composes "
+                 "scene colour into ShadeTargets::composed); a LightingFunction would leave composedTexture unwritten"};
+  return shade([&lighting](const ShadeTargets& targets) { lighting(targets.light); });
+}
+
+Status Plugin::shade(const ComposingFunction& compose) {
   PluginContext& context = impl_->context;
   if (!impl_->resolvedThisFrame) {
     if (impl_->msaa)  // the host's G-buffer holds nothing of this frame's model pass
@@ -493,7 +526,7 @@ Status Plugin::shade(const LightingFunction& lighting) {
     SharedTargets shared = impl_->shared();
     Technique* technique = impl_->methodTechnique();
     const SliceRenderer::Plan plan = technique ? technique->slicePlan(context, shared) : SliceRenderer::Plan{};
-    Status status = impl_->slices->shade(context, *impl_->msaa, lighting, plan);
+    Status status = impl_->slices->shade(context, *impl_->msaa, compose, plan);
     if (status && context.config.restoreGBufferAfterShade)
       status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->context.frame, *impl_->slices);
     return status;
@@ -503,7 +536,7 @@ Status Plugin::shade(const LightingFunction& lighting) {
   {
     GlStateGuard guard;
     ScopedPass timed(context, "lighting");
-    lighting(context.layout.lightFramebuffer);
+    compose({context.layout.lightFramebuffer, context.layout.composedFramebuffer});
   }
   context.statistics->addEvaluations(context.pixelCount());
   GlStateGuard guard;

@@ -86,6 +86,12 @@ struct Config {
   // G-buffer, each pixel's m×m window of sub-positions lit like samples (Holländer et al. 2013). The
   // host's model pass then renders at Plugin::geometryScale() × its viewport. Changing it reallocates.
   int supersample = 0;
+  // The fraction of each pixel's samples the host's model pass shades where it draws multisampled
+  // (Plugin::sampleShading: glMinSampleShading around the model pass). 0: once per pixel, the MSAA
+  // default; 1: once per sample, so the host's `discard` (alpha-tested foliage, fences, grates) decides
+  // each sample and cut-out edges are anti-aliased like silhouettes, at up to `samples` times the model
+  // pass's fragment work. Free to change every frame.
+  float sampleShading = 0.0f;
   // How `resolve` weights a pixel's samples. Free to change every frame.
   ResolveWeighting resolveWeighting = ResolveWeighting::Median;
   // Run the resolve (every MSAA method's) as a compute pass: the host's attachments through image stores,

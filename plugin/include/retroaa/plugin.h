@@ -6,6 +6,8 @@
 //   bind geometryFramebuffer() ──► host model pass (unchanged shaders)
 //   resolve(frame)          ──► MSAA → host's single-sample G-buffer (or slices)
 //   shade(lighting)         ──► host lighting pass (unchanged shaders), once per slice
+//     or shade(compose)     ──► host lighting + combine + sky + fog, once per slice (composedFramebuffer)
+//   host forward passes     ──► into the host's light (or composed) target, as before
 //   host tonemap
 //   post()                  ──► the post filters on the host's display target (the method's own, then
 //                               the stacked +filters; which methods have one: methodTable())
@@ -73,13 +75,25 @@ class RETROAA_API Plugin {
   // a method with a history runs, temporal_lod_bias (the history averages the sharper mips' detail over the jitter, as
   // FSR 2 advises for native-resolution AA); 0 otherwise.
   float textureLodBias() const;
+  // The fraction of each pixel's samples the model pass should shade (Config::sampleShading) where the method
+  // draws it multisampled (into geometryFramebuffer() or prepassFramebuffer()); 0 otherwise. Where it is above
+  // 0, enable GL_SAMPLE_SHADING with glMinSampleShading(it) around those draws (and disable it after): the
+  // host's `discard` then runs per sample, so cut-out (alpha-tested) edges are anti-aliased, at up to
+  // `samples` times the model pass's fragment work.
+  float sampleShading() const;
   // After the model pass, every frame and for every method (it also begins the frame). Returns the
   // first error of a pass (none are expected once create succeeded).
   Status resolve(const FrameInfo& frame);
   // Runs `lighting` once per slice and composites; for single-slice methods, once into the host's
   // light framebuffer. Errors: WrongCallOrder when a method with an MSAA G-buffer is shaded without
-  // resolve() since the previous shade() (the host's G-buffer would hold nothing of this frame).
+  // resolve() since the previous shade() (the host's G-buffer would hold nothing of this frame);
+  // InvalidLayout where the layout names a composedFramebuffer (its callback composes: the overload below).
   Status shade(const LightingFunction& lighting);
+  // The same for a host whose callback turns the G-buffer into scene colour (GBufferLayout::composedFramebuffer:
+  // lighting, then a combine, a sky, fog): `compose` runs once per slice with that slice's targets and the
+  // plugin composites what it composed. With no composedFramebuffer in the layout it composes nothing
+  // (ShadeTargets::composed is 0) and acts as shade(lighting).
+  Status shade(const ComposingFunction& compose);
   // After the host's tonemap, on the display target: each running technique's post pass in the
   // registry's order (src/registry.cpp), FXAA last.
   // Nothing when the method has no post pass.

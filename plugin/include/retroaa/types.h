@@ -86,6 +86,12 @@ enum class NormalEncoding : uint8_t {
   Spheremap,
 };
 
+// The encoding of the values the host's display target holds after its tonemap.
+enum class DisplayEncoding : uint8_t {
+  DisplayEncoded,  // gamma-encoded for the screen (sRGB-like): what most tonemaps write into RGBA8
+  Linear,          // linear light in an RGBA8 or float target (the window shows them as they are)
+};
+
 struct Attachment {
   AttachmentRole role = AttachmentRole::Other;
   GLenumValue internalFormat = 0;  // e.g. GL_RGBA16F; the MSAA copy uses the same
@@ -130,10 +136,24 @@ struct GBufferLayout {
   // lighting writes several outputs (SuperTuxKart: diffuse at 0, specular at 1). Each is lit and
   // composited as lightTexture is; each must hold floats (e.g. R11F_G11F_B10F), and lightTexture too.
   std::vector<GLuintHandle> extraLightTextures;
+  // Where the host composes scene colour after lighting, for a host whose shade() callback covers more than
+  // lighting (a material combine multiplying light by albedo, a sky or background drawn where depth is far,
+  // fog): its colour target and texture, e.g. SuperTuxKart's FBO_COLORS / RTT_COLOR. 0 (the default): the
+  // callback produces light, and the plugin composites light. Named: the callback produces composed colour
+  // (shade(ComposingFunction)); a slice method composites that per slice into composedTexture, and the light
+  // textures above become the callback's scratch, lit per slice (after shade() they hold no defined frame).
+  // Each slice then presents to every pass of the callback its own samples: their attributes in the G-buffer,
+  // their depth in the targets' depth buffer (a far-plane sky test sees the slice's surface) and, where the
+  // lighting reads depth, in the host's depth texture. composedTexture must hold floats or RGBA8.
+  GLuintHandle composedFramebuffer = 0, composedTexture = 0;
   // The tonemapped display that post() filters (RGBA8 or GL_SRGB8_ALPHA8); needed only by the methods
   // whose MethodInfo::filtersDisplay says so and by every stacked +filter (0 elsewhere: a config that
   // needs it without one is refused with InvalidLayout naming the method).
   GLuintHandle displayFramebuffer = 0, displayTexture = 0;
+  // What the display's stored values are (an sRGB-format display is always DisplayEncoded: the format
+  // says so). The post passes that average colours (reconstruct, temporal after tonemapping) decode
+  // DisplayEncoded values to linear light first; Linear values they average as stored.
+  DisplayEncoding displayEncoding = DisplayEncoding::DisplayEncoded;
 };
 
 enum class LogLevel : uint8_t { Info, Warning, Error };
@@ -212,5 +232,17 @@ struct Stats {
 
 // The host's lighting pass, rendering into `target` from the host's single-sample G-buffer.
 using LightingFunction = std::function<void(GLuintHandle target)>;
+
+// What a composing callback draws into, once per slice (GBufferLayout::composedFramebuffer): its lighting into
+// `light` (the layout's light textures as draw buffers 0, 1, …), then its combine, sky and fog into
+// `composed` (one colour attachment). Both carry this slice's depth (far where a sample has no geometry) with
+// the plugin's slice mask in stencil, the stencil test set: a pass that keeps the stencil test on (and may
+// enable the depth test, e.g. GL_LEQUAL for a sky at the far plane) runs on this slice's pixels only. For a
+// single-slice method they are the layout's own lightFramebuffer and composedFramebuffer.
+struct ShadeTargets {
+  GLuintHandle light = 0;
+  GLuintHandle composed = 0;
+};
+using ComposingFunction = std::function<void(const ShadeTargets& targets)>;
 
 }  // namespace retroaa

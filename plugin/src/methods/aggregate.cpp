@@ -30,7 +30,7 @@ class AggregateTechnique : public Technique {
     if (!cluster) return cluster.error();
     t.clusterProgram_ = std::move(cluster.value());
     for (const bool depth : {false, true}) {  // the G-buffer write, and its depth write where the slices make one
-      if (depth && !shared.slices->writesHostDepth()) continue;
+      if (depth && !shared.slices->writesDepth()) continue;
       auto write = context.shaders->program(
           "common/fullscreen.vert", "aggregate/write_aggregate.frag",
           depth ? SliceRenderer::depthWriteDefines(source, layout) : source.shaderDefines(layout),

@@ -28,13 +28,13 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     t.beforeTonemap_ = context.config.reconstructBeforeTonemap;
     t.searchRadius_ = context.config.reconstructSearchRadius;
     t.linearInput_ = !t.beforeTonemap_ && shared.post->linearCopyOfInput() != 0;
-    if (t.beforeTonemap_ && !layout.lightTexture)
+    if (t.beforeTonemap_ && !sceneColourTexture(layout))
       return Error{ErrorCode::InvalidLayout,
                    "reconstruct_before_tonemap=on filters the light target: the layout names no lightTexture"};
     if (t.beforeTonemap_) {  // a copy of the light target to read neighbours from while writing it
       t.radiance_ = makeLightTargetCopy(context, "reconstruct.radiance", t.geometry_.bytes);
     }
-    t.output_ = t.beforeTonemap_ ? layout.lightTexture : shared.post->input(layout);
+    t.output_ = t.beforeTonemap_ ? sceneColourTexture(layout) : shared.post->input(layout);
     GLint outputFormat = GL_RGBA8;
     glGetTextureLevelParameteriv(t.output_, 0, GL_TEXTURE_INTERNAL_FORMAT, &outputFormat);
     t.outputFormat_ = GLenum(outputFormat);
@@ -61,7 +61,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     ScopedPass timed(context, "reconstruct");
     const GBufferLayout& layout = context.layout;
     copyLightTarget(layout, radiance_.get());
-    if (!compute_) context.beginFullscreenPass(layout.lightFramebuffer);
+    if (!compute_) context.beginFullscreenPass(sceneColourFramebuffer(layout));
     program_.bindTexture("uInput", radiance_.get());
     run(context, frame);
     return Status::ok();

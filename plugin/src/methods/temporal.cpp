@@ -89,13 +89,15 @@ float halton(uint32_t index, uint32_t base) {
 // Why the layout's light target cannot hold the history's input (empty: it can): the accumulation
 // needs one float target that is not the display.
 std::string whyNotBeforeTonemap(const GBufferLayout& layout) {
-  if (!layout.lightTexture) return "the layout names no lightTexture";
-  if (!layout.extraLightTextures.empty())
+  if (!sceneColourTexture(layout)) return "the layout names no lightTexture";
+  if (!layout.composedTexture && !layout.extraLightTextures.empty())
     return "the layout's lighting writes " + std::to_string(1 + layout.extraLightTextures.size()) +
            " outputs (extraLightTextures), which tonemapping combines";
   GLint redType = 0;
-  glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
-  if (redType != GL_FLOAT) return "the layout's lightTexture holds no floats (lit straight into the display?)";
+  glGetTextureLevelParameteriv(sceneColourTexture(layout), 0, GL_TEXTURE_RED_TYPE, &redType);
+  if (redType != GL_FLOAT)
+    return layout.composedTexture ? "the layout's composedTexture holds no floats"
+                                  : "the layout's lightTexture holds no floats (lit straight into the display?)";
   return "";
 }
 
@@ -112,7 +114,7 @@ class TemporalTechnique : public Technique {
     if (t.beforeTonemapRequested_) {
       if (const std::string why = whyNotBeforeTonemap(layout); why.empty()) {
         t.current_ = makeLightTargetCopy(context, "temporal.current", t.bytes_);
-        output = layout.lightTexture;
+        output = sceneColourTexture(layout);
         t.beforeTonemap_ = true;
       } else {
         context.warn("temporal_before_tonemap=on: " + why + "; accumulating the display after tonemapping instead");

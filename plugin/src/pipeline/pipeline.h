@@ -114,6 +114,11 @@ class SliceRenderer {
   // Whether each slice writes the host's depth texture too (DepthSource::DepthBuffer: the host's
   // lighting rebuilds positions from it), and the #defines of a slice writer's depth variant.
   bool writesHostDepth() const { return depthWriter_.get() != 0; }
+  // Whether each slice's depth stays in the targets the host's callback draws into (the layout composes:
+  // a far-plane sky or a depth-tested fog must see the slice's surface), and whether a slice writer needs
+  // its depth variant for either.
+  bool keepsSliceDepth() const { return maskDepthWriter_.get() != 0; }
+  bool writesDepth() const { return writesHostDepth() || keepsSliceDepth(); }
   static std::string depthWriteDefines(const MsaaGBuffer& source, const GBufferLayout& layout) {
     return "#define WRITE_DEPTH 1\n" + source.shaderDefines(layout, false);
   }
@@ -146,7 +151,9 @@ class SliceRenderer {
   // Lights every slice through `lighting` and composites (weight 1 / count). Counts evaluations with an
   // occlusion query on each slice's write (a sample whose write discards, being non-finite, counts as
   // not lit).
-  Status shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting, const Plan& plan);
+  // With a composing layout, `compose` lights into the host's light textures and composes into the plugin's
+  // per-slice colour, which is composited into the layout's composedTexture instead.
+  Status shade(PluginContext& context, const MsaaGBuffer& source, const ComposingFunction& compose, const Plan& plan);
   std::vector<uint8_t> readCounts() const;
   GLuint firstSliceLight() const { return light_.get(); }  // slice 0's light, inside maskAfterFirstSlice
   // What the last shade() overwrote in the host's G-buffer: every pixel, or those with count > 1; and the
@@ -162,17 +169,22 @@ class SliceRenderer {
   Status createTargets(PluginContext& context);  // create()'s framebuffers (and the half-float sum's pass)
   Status createPrograms(PluginContext& context, const MsaaGBuffer& source);
   GLuint writeSlice(PluginContext& context, const MsaaGBuffer& source, const Plan& plan, int slice);
-  void lightSlice(PluginContext& context, const LightingFunction& lighting, int slice);
+  void lightSlice(PluginContext& context, const ComposingFunction& compose, int slice);
+  void copyResolvedDepthIntoMask(PluginContext& context);  // a composing layout's depth for slice 0
   Status compositeSlice(PluginContext& context, const Plan& plan, int slice);
   void presentAccumulation(PluginContext& context);
 
   GlTexture light_, mask_, counts_;
-  GlFramebuffer maskTarget_, lightTarget_, sliceWriter_, compositeTarget_;
+  // lightTarget_: where the callback lights (the plugin's light_ and extraLight_; with a composing layout the
+  // host's own light textures); composeTarget_: where a composing callback composes (light_), else none.
+  GlFramebuffer maskTarget_, lightTarget_, composeTarget_, sliceWriter_, compositeTarget_;
   // The layout's extraLightTextures: each slice's light for them (lightTarget_'s attachments 1, 2, …)
   // and a composite target onto each host texture.
   std::vector<GlTexture> extraLight_;
   std::vector<GlFramebuffer> extraCompositeTarget_;
-  GlFramebuffer depthWriter_;  // the host's depth texture alone (DepthSource::DepthBuffer), else none
+  GlFramebuffer depthWriter_;      // the host's depth texture alone (DepthSource::DepthBuffer), else none
+  GlFramebuffer maskDepthWriter_;  // the mask's depth alone (a composing layout), else none
+  ShaderProgram copyDepth_;        // the host's resolved depth into the mask's (a composing layout)
   // Where the host's light texture has 8 bits per channel, or there is none: the slices' half-float sum
   // and its copy into the host's light target.
   GlTexture accumulation_;
@@ -216,7 +228,7 @@ class PostTarget {
   void copyInputAside(const GBufferLayout& layout) const;  // the same for a compute pass: the copy alone
   GLuint copyOfInput() const { return output_.get(); }
   // The copy read as linear light: its sRGB view, which the texture unit decodes (cheaper than pow in a
-  // shader); 0 where the display's format has no sRGB twin.
+  // shader); 0 where the display's format has no sRGB twin or the layout says it holds linear values.
   GLuint linearCopyOfInput() const { return linearView_.get(); }
   uint64_t bytes() const { return bytes_; }
 

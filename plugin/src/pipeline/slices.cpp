@@ -35,13 +35,35 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
 Status SliceRenderer::createTargets(PluginContext& context) {
   const GBufferLayout& layout = context.layout;
   const int w = layout.width, h = layout.height;
+  const bool composes = layout.composedFramebuffer != 0;
   maskTarget_ = makeFramebuffer(context, "slices.mask");
   glNamedFramebufferTexture(maskTarget_.get(), GL_COLOR_ATTACHMENT0, counts_.get(), 0);
   glNamedFramebufferTexture(maskTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
   lightTarget_ = makeFramebuffer(context, "slices.light");
-  glNamedFramebufferTexture(lightTarget_.get(), GL_COLOR_ATTACHMENT0, light_.get(), 0);
   glNamedFramebufferTexture(lightTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
-  if (!layout.extraLightTextures.empty()) {
+  if (composes) {
+    // The host's light textures are the callback's scratch, lit per slice and read by its combine, which
+    // composes into light_: light_ is what the slices composite.
+    std::vector<GLenum> lightBuffers;
+    std::vector<GLuint> hostLights{layout.lightTexture};
+    hostLights.insert(hostLights.end(), layout.extraLightTextures.begin(), layout.extraLightTextures.end());
+    for (size_t k = 0; k < hostLights.size(); ++k) {
+      lightBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + k));
+      glNamedFramebufferTexture(lightTarget_.get(), lightBuffers.back(), hostLights[k], 0);
+    }
+    glNamedFramebufferDrawBuffers(lightTarget_.get(), GLsizei(lightBuffers.size()), lightBuffers.data());
+    composeTarget_ = makeFramebuffer(context, "slices.compose");
+    glNamedFramebufferTexture(composeTarget_.get(), GL_COLOR_ATTACHMENT0, light_.get(), 0);
+    glNamedFramebufferTexture(composeTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
+    if (Status status = checkFramebuffer(composeTarget_.get(), "slices.compose"); !status) return status;
+    maskDepthWriter_ = makeFramebuffer(context, "slices.mask_depth_writer");
+    glNamedFramebufferTexture(maskDepthWriter_.get(), GL_DEPTH_ATTACHMENT, mask_.get(), 0);
+    glNamedFramebufferDrawBuffer(maskDepthWriter_.get(), GL_NONE);
+    if (Status status = checkFramebuffer(maskDepthWriter_.get(), "slices.mask_depth_writer"); !status) return status;
+  } else {
+    glNamedFramebufferTexture(lightTarget_.get(), GL_COLOR_ATTACHMENT0, light_.get(), 0);
+  }
+  if (!composes && !layout.extraLightTextures.empty()) {
     std::vector<GLenum> lightBuffers{GL_COLOR_ATTACHMENT0};
     for (size_t k = 0; k < layout.extraLightTextures.size(); ++k) {
       const std::string label = "slices.extra_light" + std::to_string(k + 1);
@@ -58,14 +80,17 @@ Status SliceRenderer::createTargets(PluginContext& context) {
   }
   // Slices composite into the host's light texture where it holds floats; into a half-float sum of the
   // plugin's otherwise, or where the host names no light texture (it lights into a framebuffer, the
-  // window's included), written into the host's light target once all slices are in (presentLight).
+  // window's included), written into the host's target once all slices are in (presentLight). A composing
+  // callback may read its composed target's previous frame (SuperTuxKart's screen-space reflections): its
+  // slices always sum apart.
+  const GLuint outputTexture = composes ? layout.composedTexture : layout.lightTexture;
   GLint redType = GL_FLOAT;
-  if (layout.lightTexture) glGetTextureLevelParameteriv(layout.lightTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
-  if (redType != GL_FLOAT || !layout.lightTexture) {
+  if (outputTexture) glGetTextureLevelParameteriv(outputTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
+  if (redType != GL_FLOAT || !outputTexture || composes) {
     accumulation_ = makeTexture(context, GL_RGBA16F, w, h, 0, "slices.accumulation", bytes_);
-    if (layout.lightTexture) {
+    if (outputTexture) {
       presentTarget_ = makeFramebuffer(context, "slices.present");
-      glNamedFramebufferTexture(presentTarget_.get(), GL_COLOR_ATTACHMENT0, layout.lightTexture, 0);
+      glNamedFramebufferTexture(presentTarget_.get(), GL_COLOR_ATTACHMENT0, outputTexture, 0);
       if (Status status = checkFramebuffer(presentTarget_.get(), "slices.present"); !status) return status;
     }
     auto present =
@@ -75,7 +100,7 @@ Status SliceRenderer::createTargets(PluginContext& context) {
   }
   compositeTarget_ = makeFramebuffer(context, "slices.composite");
   glNamedFramebufferTexture(compositeTarget_.get(), GL_COLOR_ATTACHMENT0,
-                            accumulation_ ? accumulation_.get() : layout.lightTexture, 0);
+                            accumulation_ ? accumulation_.get() : outputTexture, 0);
   glNamedFramebufferTexture(compositeTarget_.get(), GL_DEPTH_STENCIL_ATTACHMENT, mask_.get(), 0);
   sliceWriter_ = makeFramebuffer(context, "slices.writer");
   std::vector<GLenum> drawBuffers;
@@ -106,7 +131,7 @@ Status SliceRenderer::createTargets(PluginContext& context) {
 Status SliceRenderer::createPrograms(PluginContext& context, const MsaaGBuffer& source) {
   const GBufferLayout& layout = context.layout;
   for (const bool depth : {false, true}) {
-    if (depth && !writesHostDepth()) continue;
+    if (depth && !writesDepth()) continue;
     auto writeSlice =
         context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag",
                                  depth ? depthWriteDefines(source, layout) : source.shaderDefines(layout),
@@ -122,6 +147,11 @@ Status SliceRenderer::createPrograms(PluginContext& context, const MsaaGBuffer& 
       context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit", "uSliceCounts"});
   if (!mark) return mark.error();
   markPixels_ = std::move(mark.value());
+  if (keepsSliceDepth()) {
+    auto copyDepth = context.shaders->program("common/fullscreen.vert", "slices/copy_depth.frag", "", {"uDepth"});
+    if (!copyDepth) return copyDepth.error();
+    copyDepth_ = std::move(copyDepth.value());
+  }
   return Status::ok();
 }
 
@@ -165,11 +195,12 @@ void sliceStencil(int slice) {
 
 }  // namespace
 
-Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const LightingFunction& lighting,
+Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const ComposingFunction& compose,
                             const Plan& plan) {
   const int sliceCount = plan.sliceCount > 0 ? plan.sliceCount : maxCount_;
   context.frameStats.slices = sliceCount;
   lastWriteEverywhere_ = plan.firstSliceEverywhere;
+  if (keepsSliceDepth()) copyResolvedDepthIntoMask(context);
   for (int slice = 0; slice < sliceCount; ++slice) {
     const GLuint slicePixels = writeSlice(context, source, plan, slice);
     // A slice without pixels (every count of the frame at most `slice`) draws nothing: the GPU skips its
@@ -177,7 +208,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     // light is filtered (Plan::filterSliceLight) always has pixels: its first slice writes everywhere.
     const bool skippable = slicePixels != 0 && !plan.filterSliceLight;
     if (skippable) glBeginConditionalRender(slicePixels, GL_QUERY_WAIT);
-    lightSlice(context, lighting, slice);
+    lightSlice(context, compose, slice);
     if (slice == 0 && plan.maskAfterFirstSlice) {
       if (Status status = plan.maskAfterFirstSlice(); !status) return status;
     }
@@ -220,8 +251,11 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
     context.statistics->endEvaluationCount();
   else
     context.statistics->addEvaluations(context.pixelCount());
-  if (writesHostDepth()) {  // the same pixels' depth, selected by the counts instead of the stencil
-    context.beginDepthWritingPass(depthWriter_.get());
+  // The same pixels' depth, selected by the counts instead of the stencil, into the host's depth texture
+  // (its lighting reads it) and the mask's depth (its composing passes test against it).
+  for (const GLuint depthTarget : {depthWriter_.get(), maskDepthWriter_.get()}) {
+    if (!depthTarget) continue;
+    context.beginDepthWritingPass(depthTarget);
     const ShaderProgram* program = useWriter(plan.writeDepthProgram, writeSliceDepth_);
     const int minCount = slice > 0 ? slice + 1 : plan.firstSliceEverywhere ? 0 : 2;
     program->set("uMinCount", minCount);
@@ -231,17 +265,27 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
   return slicePixels;
 }
 
-void SliceRenderer::lightSlice(PluginContext& context, const LightingFunction& lighting, int slice) {
+void SliceRenderer::copyResolvedDepthIntoMask(PluginContext& context) {
+  ScopedPass timed(context, "slices.depth");
+  context.beginDepthWritingPass(maskDepthWriter_.get());
+  copyDepth_.use();
+  copyDepth_.bindTexture("uDepth", context.layout.depthStencilTexture);
+  context.drawFullscreen();
+}
+
+void SliceRenderer::lightSlice(PluginContext& context, const ComposingFunction& compose, int slice) {
   ScopedPass timed(context, "slices.lighting");
   GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
-  context.beginFullscreenPass(lightTarget_.get());
   // A host whose lighting only adds (blending ONE, ONE) and clears its target outside the call
-  // (SuperTuxKart) finds it black, as its own target would be.
+  // (SuperTuxKart) finds it black, as its own target would be; so does its combine's target.
   const float black[4] = {0, 0, 0, 0};
-  for (GLint buffer = 0; buffer <= GLint(extraLight_.size()); ++buffer)
+  const GLint lightOutputs = 1 + GLint(composeTarget_ ? context.layout.extraLightTextures.size() : extraLight_.size());
+  for (GLint buffer = 0; buffer < lightOutputs; ++buffer)
     glClearNamedFramebufferfv(lightTarget_.get(), GL_COLOR, buffer, black);
+  if (composeTarget_) glClearNamedFramebufferfv(composeTarget_.get(), GL_COLOR, 0, black);
+  context.beginFullscreenPass(lightTarget_.get());
   sliceStencil(slice);
-  lighting(lightTarget_.get());
+  compose({lightTarget_.get(), composeTarget_.get()});
 }
 
 Status SliceRenderer::compositeSlice(PluginContext& context, const Plan& plan, int slice) {
@@ -282,7 +326,9 @@ Status SliceRenderer::compositeSlice(PluginContext& context, const Plan& plan, i
 void SliceRenderer::presentAccumulation(PluginContext& context) {
   const GBufferLayout& layout = context.layout;
   ScopedPass timed(context, "slices.present");
-  glBindFramebuffer(GL_FRAMEBUFFER, presentTarget_.get() ? presentTarget_.get() : layout.lightFramebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, presentTarget_.get()         ? presentTarget_.get()
+                                    : layout.composedFramebuffer ? layout.composedFramebuffer
+                                                                 : layout.lightFramebuffer);
   context.beginFullscreenPass(0);  // 0: the binding above (the host's may be the default framebuffer)
   glEnable(GL_FRAMEBUFFER_SRGB);   // an sRGB target encodes the linear sum
   presentLight_.use();

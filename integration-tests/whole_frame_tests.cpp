@@ -1,0 +1,281 @@
+// The whole frame: a host whose shade() callback composes scene colour after lighting (a material combine,
+// a sky at the far plane), cut-out geometry shaded per sample, and the display's encoding. Hand-written
+// samples on the FSO-shaped host's targets; the composed target is the test's own, as a host keeps one.
+#include "test_support.h"
+
+#include <epoxy/gl.h>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+
+namespace {
+
+using namespace testing_support;
+
+constexpr int kWidth = 8, kHeight = 4;
+const glm::vec3 kSky(0.1f, 0.2f, 0.9f);
+
+// A composed target as SuperTuxKart's FBO_COLORS: its own RGBA16F colour over the host's depth-stencil.
+struct ComposedTarget {
+  GLuint texture = 0, framebuffer = 0;
+  explicit ComposedTarget(GLuint hostDepthStencil) {
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, 1, GL_RGBA16F, kWidth, kHeight);
+    glCreateFramebuffers(1, &framebuffer);
+    glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, texture, 0);
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_STENCIL_ATTACHMENT, hostDepthStencil, 0);
+  }
+  ~ComposedTarget() {
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &texture);
+  }
+};
+
+// The host's stage after the G-buffer, as a combining engine has it: lighting writes irradiance alone (the
+// specular attachment's red channel stands for it), a combine multiplies it by the albedo, and a sky is
+// added where the depth test at the far plane passes (GL_LEQUAL against depth 1).
+void composeFrame(const retroaa::ShadeTargets& targets, const host::HostTargets& host) {
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.light);
+  glViewport(0, 0, kWidth, kHeight);
+  glBindTextureUnit(0, host.specular);
+  drawWithFragment(R"(#version 450 core
+layout(binding = 0) uniform sampler2D uSpecular;
+out vec4 outLight;
+void main() { outLight = vec4(vec3(texelFetch(uSpecular, ivec2(gl_FragCoord.xy), 0).r), 1.0); })",
+                   [](GLuint) {});
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.composed);
+  glBindTextureUnit(0, host.lightTexture);
+  glBindTextureUnit(1, host.color);
+  drawWithFragment(R"(#version 450 core
+layout(binding = 0) uniform sampler2D uLight;
+layout(binding = 1) uniform sampler2D uAlbedo;
+out vec4 outColor;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  outColor = vec4(texelFetch(uLight, p, 0).rgb * texelFetch(uAlbedo, p, 0).rgb, 1.0);
+})",
+                   [](GLuint) {});
+  // The sky: a full-screen triangle at the far plane, drawn where nothing nearer is.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glDepthRange(1.0, 1.0);
+  drawWithFragment(
+      R"(#version 450 core
+uniform vec3 uSky;
+out vec4 outColor;
+void main() { outColor = vec4(uSky, 0.0); })",
+      [](GLuint program) { glProgramUniform3f(program, glGetUniformLocation(program, "uSky"), 0.1f, 0.2f, 0.9f); });
+  glDepthRange(0.0, 1.0);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+}
+
+SyntheticSample litSurface(glm::vec3 albedo, float irradiance) {
+  SyntheticSample sample = surfaceSample(2.0f, {0, 0, 1}, albedo);
+  sample.attachments[3] = glm::vec4(irradiance, 0, 0, 1);
+  return sample;
+}
+
+// Pixel 1: half red surface lit at 1, half sky. Pixel 2: red lit at 1 beside green lit at 0.2 (no sky).
+// Pixel 0 and the rest: a grey surface lit at 0.5, one sample for all.
+std::vector<std::vector<SyntheticSample>> composedScene() {
+  std::vector<std::vector<SyntheticSample>> pixels(size_t(kWidth) * kHeight, {litSurface(glm::vec3(0.5f), 0.5f)});
+  const SyntheticSample red = litSurface({1, 0, 0}, 1.0f), green = litSurface({0, 1, 0}, 0.2f);
+  pixels[1] = {red, red, backgroundSample(), backgroundSample()};
+  pixels[2] = {red, red, green, green};
+  return pixels;
+}
+
+struct ComposedRun {
+  std::vector<glm::vec4> composed;
+  retroaa::Stats stats;
+};
+
+ComposedRun runComposed(const std::string& spec) {
+  SyntheticFrame frame(kWidth, kHeight);
+  const host::HostTargets& host = frame.renderer->targets();
+  ComposedTarget target(host.depthStencil);
+  retroaa::Description description;
+  EXPECT_TRUE(retroaa::applyMethodSpec(description.config, spec));
+  description.config.samples = 4;
+  description.layout = patch::describeHostGBuffer(host);
+  description.layout.composedFramebuffer = target.framebuffer;
+  description.layout.composedTexture = target.texture;
+  auto created = retroaa::Plugin::create(description);
+  EXPECT_TRUE(created) << (created ? "" : created.error().message);
+  if (!created) return {};
+  retroaa::Plugin& plugin = *created.value();
+  fillGeometry(plugin, kWidth, kHeight, composedScene());
+  EXPECT_TRUE(plugin.resolve({1.0f}));
+  const float black[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(target.framebuffer, GL_COLOR, 0, black);
+  EXPECT_TRUE(plugin.shade([&](const retroaa::ShadeTargets& targets) { composeFrame(targets, host); }));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_TRUE(plugin.warnings().empty());
+  return {frame.read(target.texture), plugin.waitForStats()};
+}
+
+void expectNear(glm::vec3 actual, glm::vec3 expected, float tolerance, const std::string& what) {
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(actual[c], expected[c], tolerance) << what << " channel " << c;
+}
+
+TEST(WholeFrame, PerSampleComposesEachSampleWithItsOwnMaterialAndSky) {
+  const ComposedRun run = runComposed("per-sample");
+  ASSERT_EQ(run.composed.size(), size_t(kWidth) * kHeight);
+  // avg(light × albedo) + the sky's share, not avg(light) × avg(albedo) or a sky of all or nothing.
+  expectNear(run.composed[1], 0.5f * glm::vec3(1, 0, 0) + 0.5f * kSky, 0.01f, "red beside sky");
+  expectNear(run.composed[2], 0.5f * glm::vec3(1, 0, 0) + 0.5f * glm::vec3(0, 0.2f, 0), 0.01f, "red beside green");
+  expectNear(run.composed[0], glm::vec3(0.25f), 0.01f, "grey surface");
+  EXPECT_NEAR(run.stats.evaluationsPerPixel(), 4.0, 1e-9);
+}
+
+TEST(WholeFrame, EdgeComposesOnlyItsEdgePixelsPerSample) {
+  const ComposedRun run = runComposed("edge");
+  ASSERT_EQ(run.composed.size(), size_t(kWidth) * kHeight);
+  expectNear(run.composed[1], 0.5f * glm::vec3(1, 0, 0) + 0.5f * kSky, 0.01f, "red beside sky");
+  expectNear(run.composed[2], glm::vec3(0.5f, 0.1f, 0), 0.01f, "red beside green");
+  expectNear(run.composed[5], glm::vec3(0.25f), 0.01f, "grey surface");
+  EXPECT_LT(run.stats.evaluationsPerPixel(), 2.0);  // two edge pixels of 32 lit 4 times
+}
+
+TEST(WholeFrame, ASingleSliceMethodComposesIntoTheHostsTargetOnce) {
+  const ComposedRun run = runComposed("resolve");
+  ASSERT_EQ(run.composed.size(), size_t(kWidth) * kHeight);
+  expectNear(run.composed[0], glm::vec3(0.25f), 0.01f, "grey surface");
+  // One surface per pixel: the sky is all there or not at all.
+  const glm::vec3 skyEdge = run.composed[1];
+  EXPECT_TRUE(glm::all(glm::lessThan(glm::abs(skyEdge - glm::vec3(1, 0, 0)), glm::vec3(0.01f))) ||
+              glm::all(glm::lessThan(glm::abs(skyEdge - kSky), glm::vec3(0.01f))))
+      << skyEdge.x << " " << skyEdge.y << " " << skyEdge.z;
+}
+
+TEST(WholeFrame, AComposingLayoutRefusesALightingCallbackAndAHalfNamedTarget) {
+  SyntheticFrame frame(kWidth, kHeight);
+  const host::HostTargets& host = frame.renderer->targets();
+  ComposedTarget target(host.depthStencil);
+  retroaa::Description description;
+  description.config.method = retroaa::Method::PerSample;
+  description.layout = patch::describeHostGBuffer(host);
+  description.layout.composedFramebuffer = target.framebuffer;
+  auto halfNamed = retroaa::Plugin::create(description);
+  ASSERT_FALSE(halfNamed);
+  EXPECT_EQ(halfNamed.error().code, retroaa::ErrorCode::InvalidLayout);
+  EXPECT_NE(halfNamed.error().message.find("composedTexture"), std::string::npos) << halfNamed.error().message;
+
+  description.layout.composedTexture = target.texture;
+  auto created = retroaa::Plugin::create(description);
+  ASSERT_TRUE(created) << created.error().message;
+  fillGeometry(*created.value(), kWidth, kHeight, composedScene());
+  ASSERT_TRUE(created.value()->resolve({1.0f}));
+  const retroaa::Status lightOnly = created.value()->shade([](retroaa::GLuintHandle) {});
+  ASSERT_FALSE(lightOnly);
+  EXPECT_EQ(lightOnly.error().code, retroaa::ErrorCode::InvalidLayout);
+  EXPECT_NE(lightOnly.error().message.find("ComposingFunction"), std::string::npos) << lightOnly.error().message;
+}
+
+// A cut-out drawn by a model shader that discards: the edge x = 3.5 + 0.25 y crosses pixels at a quarter of
+// their width. Per-pixel shading decides each pixel at its centre; per-sample shading each sample.
+std::vector<glm::vec4> cutOutLight(float sampleShading) {
+  SyntheticFrame frame(kWidth, kHeight);
+  retroaa::Config config;
+  config.method = retroaa::Method::PerSample;
+  config.samples = 4;
+  config.sampleShading = sampleShading;
+  auto hooks = frame.attach(config);
+  if (!hooks) return {};
+  retroaa::Plugin& plugin = hooks->plugin();
+  EXPECT_FLOAT_EQ(plugin.sampleShading(), sampleShading);
+  fillGeometry(plugin, kWidth, kHeight, {});  // every sample background
+  glBindFramebuffer(GL_FRAMEBUFFER, plugin.geometryFramebuffer());
+  glViewport(0, 0, kWidth, kHeight);
+  glEnable(GL_MULTISAMPLE);
+  glDisable(GL_DEPTH_TEST);
+  if (plugin.sampleShading() > 0) {
+    glEnable(GL_SAMPLE_SHADING);
+    glMinSampleShading(plugin.sampleShading());
+  }
+  // The model shader: a white surface at depth 2 m whose "alpha texture" cuts it off past the edge. The
+  // varying is what a texture coordinate would be: interpolated where the fragment shader runs.
+  const std::string body = R"(
+layout(location = 0) out vec4 outAlbedo;
+layout(location = 1) out vec4 outPosition;
+layout(location = 2) out vec4 outNormal;
+layout(location = 3) out vec4 outSpecular;
+layout(location = 4) out vec4 outEmissive;
+in vec2 vScreen;
+void main() {
+  if (vScreen.x > 3.5 + 0.25 * vScreen.y) discard;
+  outAlbedo = vec4(1.0); outPosition = vec4(0.0, 0.0, 2.0, 1.0); outNormal = vec4(0.0, 0.0, 1.0, 0.5);
+  outSpecular = vec4(0.0); outEmissive = vec4(0.0, 0.0, 0.0, 1.0);
+  gl_FragDepth = 0.5;
+})";
+  const std::string vertex = R"(#version 450 core
+out gl_PerVertex { vec4 gl_Position; };
+out vec2 vScreen;
+uniform vec2 uSize;
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0;
+  vScreen = (p * 0.5 + 0.5) * uSize;
+  gl_Position = vec4(p, 0.0, 1.0);
+})";
+  const std::string fragment = "#version 450 core\n" + body;
+  const char* vertexSource = vertex.c_str();
+  const char* fragmentSource = fragment.c_str();
+  const GLuint vertexProgram = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexSource);
+  const GLuint fragmentProgram = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentSource);
+  glProgramUniform2f(vertexProgram, glGetUniformLocation(vertexProgram, "uSize"), float(kWidth), float(kHeight));
+  GLuint pipeline = 0, vao = 0;
+  glCreateProgramPipelines(1, &pipeline);
+  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertexProgram);
+  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fragmentProgram);
+  glCreateVertexArrays(1, &vao);
+  glUseProgram(0);
+  glBindProgramPipeline(pipeline);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindProgramPipeline(0);
+  glDeleteVertexArrays(1, &vao);
+  glDeleteProgramPipelines(1, &pipeline);
+  glDeleteProgram(vertexProgram);
+  glDeleteProgram(fragmentProgram);
+  glDisable(GL_SAMPLE_SHADING);
+  EXPECT_TRUE(plugin.resolve({1.0f}));
+  const GLuint color = frame.renderer->targets().color;
+  EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, kWidth, kHeight); }));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  return frame.read(frame.renderer->targets().lightTexture);
+}
+
+// How many pixels of the edge's column hold a value strictly between the cut-out and the background.
+int partialPixels(const std::vector<glm::vec4>& light) {
+  int partial = 0;
+  for (const glm::vec4& pixel : light) partial += pixel.g > 0.05f && pixel.g < 0.95f;
+  return partial;
+}
+
+TEST(WholeFrame, SampleShadingAntiAliasesCutOutEdges) {
+  const std::vector<glm::vec4> perPixel = cutOutLight(0.0f), perSample = cutOutLight(1.0f);
+  ASSERT_EQ(perPixel.size(), size_t(kWidth) * kHeight);
+  ASSERT_EQ(perSample.size(), perPixel.size());
+  EXPECT_EQ(partialPixels(perPixel), 0);         // the discard decided each pixel whole
+  EXPECT_GE(partialPixels(perSample), kHeight);  // each row's edge pixel is partly covered
+  // Away from the edge both agree: covered on the left, background on the right.
+  EXPECT_NEAR(perSample[0].g, 1.0f, 1e-3f);
+  EXPECT_NEAR(perSample[kWidth - 1].g, perPixel[kWidth - 1].g, 1e-3f);
+}
+
+TEST(WholeFrame, SampleShadingIsZeroWhereNothingDrawsMultisampled) {
+  SyntheticFrame frame(kWidth, kHeight);
+  retroaa::Config config;
+  config.method = retroaa::Method::Fxaa;
+  config.sampleShading = 1.0f;
+  auto hooks = frame.attach(config);
+  ASSERT_TRUE(hooks);
+  EXPECT_EQ(hooks->plugin().sampleShading(), 0.0f);
+}
+
+}  // namespace
