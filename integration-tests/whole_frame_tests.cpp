@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <functional>
 
 namespace {
 
@@ -95,7 +96,10 @@ struct ComposedRun {
   retroaa::Stats stats;
 };
 
-ComposedRun runComposed(const std::string& spec) {
+// A host's forward pass: draws between beginForward() and endForward() into the framebuffer it returned.
+using ForwardPass = std::function<void()>;
+
+ComposedRun runComposed(const std::string& spec, const ForwardPass& forward = nullptr) {
   SyntheticFrame frame(kWidth, kHeight);
   const host::HostTargets& host = frame.renderer->targets();
   ComposedTarget target(host.depthStencil);
@@ -105,6 +109,7 @@ ComposedRun runComposed(const std::string& spec) {
   description.layout = patch::describeHostGBuffer(host);
   description.layout.composedFramebuffer = target.framebuffer;
   description.layout.composedTexture = target.texture;
+  description.layout.drawsForwardPasses = forward != nullptr;
   auto created = retroaa::Plugin::create(description);
   EXPECT_TRUE(created) << (created ? "" : created.error().message);
   if (!created) return {};
@@ -114,6 +119,17 @@ ComposedRun runComposed(const std::string& spec) {
   const float black[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(target.framebuffer, GL_COLOR, 0, black);
   EXPECT_TRUE(plugin.shade([&](const retroaa::ShadeTargets& targets) { composeFrame(targets, host); }));
+  if (forward) {
+    const retroaa::Result<retroaa::GLuintHandle> framebuffer = plugin.beginForward();
+    EXPECT_TRUE(framebuffer) << (framebuffer ? "" : framebuffer.error().message);
+    if (framebuffer) {
+      glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.value());
+      glViewport(0, 0, kWidth, kHeight);
+      glEnable(GL_MULTISAMPLE);
+      forward();
+    }
+    EXPECT_TRUE(plugin.endForward());
+  }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   EXPECT_TRUE(plugin.warnings().empty());
   return {frame.read(target.texture), plugin.waitForStats()};
@@ -175,6 +191,100 @@ TEST(WholeFrame, AComposingLayoutRefusesALightingCallbackAndAHalfNamedTarget) {
   ASSERT_FALSE(lightOnly);
   EXPECT_EQ(lightOnly.error().code, retroaa::ErrorCode::InvalidLayout);
   EXPECT_NE(lightOnly.error().message.find("ComposingFunction"), std::string::npos) << lightOnly.error().message;
+}
+
+// A forward pass's triangle in pixel coordinates, one colour, depth-tested (GL_LESS) at window depth `depth`.
+void drawForwardTriangle(const glm::vec2 (&corners)[3], float depth, glm::vec3 colour) {
+  const char* vertexSource = R"(#version 450 core
+out gl_PerVertex { vec4 gl_Position; };
+uniform vec2 uCorners[3];
+uniform vec2 uSize;
+uniform float uDepth;
+void main() { gl_Position = vec4(uCorners[gl_VertexID] / uSize * 2.0 - 1.0, uDepth * 2.0 - 1.0, 1.0); })";
+  const char* fragmentSource = R"(#version 450 core
+uniform vec3 uColour;
+out vec4 outColour;
+void main() { outColour = vec4(uColour, 1.0); })";
+  const GLuint vertex = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexSource);
+  const GLuint fragment = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentSource);
+  glProgramUniform2fv(vertex, glGetUniformLocation(vertex, "uCorners"), 3, &corners[0].x);
+  glProgramUniform2f(vertex, glGetUniformLocation(vertex, "uSize"), float(kWidth), float(kHeight));
+  glProgramUniform1f(vertex, glGetUniformLocation(vertex, "uDepth"), depth);
+  glProgramUniform3f(fragment, glGetUniformLocation(fragment, "uColour"), colour.r, colour.g, colour.b);
+  GLuint pipeline = 0, vao = 0;
+  glCreateProgramPipelines(1, &pipeline);
+  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex);
+  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fragment);
+  glCreateVertexArrays(1, &vao);
+  glUseProgram(0);
+  glBindProgramPipeline(pipeline);
+  glBindVertexArray(vao);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_FALSE);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_DEPTH_TEST);
+  glBindProgramPipeline(0);
+  glDeleteVertexArrays(1, &vao);
+  glDeleteProgramPipelines(1, &pipeline);
+  glDeleteProgram(vertex);
+  glDeleteProgram(fragment);
+}
+
+const glm::vec3 kForward(0, 0, 1);
+
+// How many pixels hold the forward colour in part, strictly between none and all of it: over the grey surface
+// a share t of blue makes blue exceed red by t.
+int partlyForward(const std::vector<glm::vec4>& composed) {
+  int partial = 0;
+  for (const glm::vec4& pixel : composed) partial += pixel.b - pixel.r > 0.05f && pixel.b - pixel.r < 0.95f;
+  return partial;
+}
+
+TEST(WholeFrame, ForwardGeometryIsAntiAliasedByTheGBuffersSamples) {
+  // In front of everything, its edge x = 3.5 + 0.25 y (pixels) crossing one grey pixel of each row.
+  const ForwardPass edge = [] { drawForwardTriangle({{1, -10}, {11, 30}, {-50, 10}}, 0.0f, kForward); };
+  for (const char* spec : {"per-sample", "edge", "resolve"}) {
+    const ComposedRun run = runComposed(spec, edge);
+    ASSERT_EQ(run.composed.size(), size_t(kWidth) * kHeight) << spec;
+    EXPECT_GE(partlyForward(run.composed), kHeight) << spec;
+    expectNear(run.composed[0], kForward, 0.01f, std::string(spec) + ": covered");
+    expectNear(run.composed[kWidth - 1], glm::vec3(0.25f), 0.01f, std::string(spec) + ": untouched");
+  }
+  const ComposedRun off = runComposed("off", edge);
+  ASSERT_EQ(off.composed.size(), size_t(kWidth) * kHeight);
+  EXPECT_EQ(partlyForward(off.composed), 0);  // one sample a pixel: all or nothing
+}
+
+TEST(WholeFrame, ForwardGeometryBehindASilhouetteIsDepthTestedPerSample) {
+  // Behind the surfaces (window depth 0.6; a surface at 2 m is 0.18 in the host's logarithmic depth), in
+  // front of the sky: it replaces the sky's samples of pixel 1 and nothing of pixel 2.
+  const ForwardPass behind = [] { drawForwardTriangle({{-10, -10}, {30, -10}, {-10, 30}}, 0.6f, kForward); };
+  const ComposedRun run = runComposed("per-sample", behind);
+  ASSERT_EQ(run.composed.size(), size_t(kWidth) * kHeight);
+  expectNear(run.composed[1], 0.5f * glm::vec3(1, 0, 0) + 0.5f * kForward, 0.01f, "red beside a forward sky");
+  expectNear(run.composed[2], glm::vec3(0.5f, 0.1f, 0), 0.01f, "red beside green");
+}
+
+TEST(WholeFrame, ForwardCallsOutOfOrderAreRefused) {
+  SyntheticFrame frame(kWidth, kHeight);
+  auto hooks = frame.attach(retroaa::Method::PerSample);
+  ASSERT_TRUE(hooks);
+  retroaa::Plugin& plugin = hooks->plugin();
+  fillGeometry(plugin, kWidth, kHeight, {});
+  ASSERT_TRUE(plugin.resolve({1.0f}));
+  const auto early = plugin.beginForward();
+  ASSERT_FALSE(early);
+  EXPECT_EQ(early.error().code, retroaa::ErrorCode::WrongCallOrder);
+  const retroaa::Status unopened = plugin.endForward();
+  ASSERT_FALSE(unopened);
+  EXPECT_EQ(unopened.error().code, retroaa::ErrorCode::WrongCallOrder);
+  const GLuint color = frame.renderer->targets().color;
+  ASSERT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, kWidth, kHeight); }));
+  ASSERT_TRUE(plugin.beginForward());
+  EXPECT_FALSE(plugin.beginForward());
+  EXPECT_TRUE(plugin.endForward());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 // A cut-out drawn by a model shader that discards: the edge x = 3.5 + 0.25 y crosses pixels at a quarter of

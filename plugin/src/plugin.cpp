@@ -196,6 +196,10 @@ struct Plugin::Impl {
   std::unique_ptr<ResolvePass> resolvePass;  // with the MSAA G-buffer: slice 0's base, and `resolve` itself
   std::unique_ptr<SliceRenderer> slices;
   std::unique_ptr<PostTarget> postTarget;
+  std::unique_ptr<ForwardTarget> forward;  // GBufferLayout::drawsForwardPasses with a multisampled G-buffer
+  // Where the frame stands for beginForward()/endForward(): forward passes drawing into the host's own
+  // target, or into the multisampled forward target.
+  enum class FramePhase : uint8_t { Open, Shaded, ForwardIntoHost, ForwardMultisampled } phase = FramePhase::Open;
   std::unique_ptr<DepthMirror> depthMirror;  // when the host's depth is a renderbuffer
   // The method's technique first, then the stacked ones; each pass runs them in this order.
   std::vector<ActiveTechnique> techniques;
@@ -326,6 +330,7 @@ struct Plugin::Impl {
         (msaa &&
          (msaa->requestedSamples() != config.samples || msaa->supersample() != std::max(config.supersample, 1)))) {
       if (rebuildAll || msaa) techniques.clear();  // techniques may hold the G-buffer's or the slices' objects
+      forward.reset();
       slices.reset();
       resolvePass.reset();
       msaa.reset();
@@ -348,6 +353,14 @@ struct Plugin::Impl {
       auto created = ResolvePass::create(context, *msaa);
       if (!created) return created.error();
       resolvePass = std::move(created.value());
+    }
+    const bool needForward = needMsaa && context.layout.drawsForwardPasses && msaa->multisampled() &&
+                             msaa->supersample() == 1 && sceneColourTexture(context.layout);
+    if (!needForward) forward.reset();
+    if (needForward && !forward) {
+      auto created = ForwardTarget::create(context, *msaa);
+      if (!created) return created.error();
+      forward = std::move(created.value());
     }
     if ((storage & kStorageSlices) && !slices) {
       auto created = SliceRenderer::create(context, *msaa);
@@ -404,7 +417,7 @@ struct Plugin::Impl {
   uint64_t bytesHeld() const {
     uint64_t bytes = (msaa ? msaa->bytes() : 0) + (resolvePass ? resolvePass->bytes() : 0) +
                      (slices ? slices->bytes() : 0) + (postTarget ? postTarget->bytes() : 0) +
-                     (depthMirror ? depthMirror->bytes : 0);
+                     (depthMirror ? depthMirror->bytes : 0) + (forward ? forward->bytes() : 0);
     for (const ActiveTechnique& active : techniques) bytes += active.technique->bytes();
     return bytes;
   }
@@ -481,6 +494,7 @@ Status Plugin::resolve(const FrameInfo& frame) {
   PluginContext& context = impl_->context;
   impl_->beginFrame();
   impl_->resolvedThisFrame = true;
+  impl_->phase = Impl::FramePhase::Open;
   impl_->context.frame = frame;
   if (!impl_->resolvePass) return Status::ok();
   // With GL_MULTISAMPLE off (Irrlicht turns it off on a window without MSAA) the model pass rasterised
@@ -521,18 +535,21 @@ Status Plugin::shade(const ComposingFunction& compose) {
     impl_->beginFrame();
   }
   impl_->resolvedThisFrame = false;
+  impl_->phase = Impl::FramePhase::Shaded;
   if (impl_->slices) {
     GlStateGuard guard;
     SharedTargets shared = impl_->shared();
     Technique* technique = impl_->methodTechnique();
     const SliceRenderer::Plan plan = technique ? technique->slicePlan(context, shared) : SliceRenderer::Plan{};
-    Status status = impl_->slices->shade(context, *impl_->msaa, compose, plan);
+    if (impl_->forward) impl_->forward->beginFrame();
+    Status status = impl_->slices->shade(context, *impl_->msaa, compose, plan, impl_->forward.get());
     if (status && context.config.restoreGBufferAfterShade)
       status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->context.frame, *impl_->slices);
     return status;
   }
   // Single-slice methods light once, every pixel, in the host's own target.
   context.frameStats.slices = 1;
+  if (impl_->forward) impl_->forward->beginFrame();
   {
     GlStateGuard guard;
     ScopedPass timed(context, "lighting");
@@ -543,6 +560,31 @@ Status Plugin::shade(const ComposingFunction& compose) {
   SharedTargets shared = impl_->shared();
   for (ActiveTechnique& active : impl_->techniques)
     if (Status status = active.technique->afterLighting(context, shared, impl_->context.frame); !status) return status;
+  return Status::ok();
+}
+
+Result<GLuintHandle> Plugin::beginForward() {
+  PluginContext& context = impl_->context;
+  if (impl_->phase != Impl::FramePhase::Shaded)
+    return Error{ErrorCode::WrongCallOrder, impl_->phase == Impl::FramePhase::Open
+                                                ? "beginForward() without shade() since the frame began"
+                                                : "beginForward() twice without endForward()"};
+  impl_->phase = Impl::FramePhase::ForwardIntoHost;
+  if (!impl_->forward) return sceneColourFramebuffer(context.layout);
+  impl_->phase = Impl::FramePhase::ForwardMultisampled;
+  GlStateGuard guard;
+  impl_->forward->fill(context);
+  return impl_->forward->framebuffer();
+}
+
+Status Plugin::endForward() {
+  const Impl::FramePhase phase = impl_->phase;
+  if (phase != Impl::FramePhase::ForwardIntoHost && phase != Impl::FramePhase::ForwardMultisampled)
+    return Error{ErrorCode::WrongCallOrder, "endForward() without beginForward()"};
+  impl_->phase = Impl::FramePhase::Open;
+  if (phase == Impl::FramePhase::ForwardIntoHost) return Status::ok();
+  GlStateGuard guard;
+  impl_->forward->resolve(impl_->context);
   return Status::ok();
 }
 

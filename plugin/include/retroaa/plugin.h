@@ -7,7 +7,8 @@
 //   resolve(frame)          ──► MSAA → host's single-sample G-buffer (or slices)
 //   shade(lighting)         ──► host lighting pass (unchanged shaders), once per slice
 //     or shade(compose)     ──► host lighting + combine + sky + fog, once per slice (composedFramebuffer)
-//   host forward passes     ──► into the host's light (or composed) target, as before
+//   beginForward()          ──► host forward passes (transparents, particles, gizmos) into the framebuffer
+//   endForward()                it returns: multisampled over the MSAA G-buffer's depth where there is one
 //   host tonemap
 //   post()                  ──► the post filters on the host's display target (the method's own, then
 //                               the stacked +filters; which methods have one: methodTable())
@@ -94,6 +95,18 @@ class RETROAA_API Plugin {
   // plugin composites what it composed. With no composedFramebuffer in the layout it composes nothing
   // (ShadeTargets::composed is 0) and acts as shade(lighting).
   Status shade(const ComposingFunction& compose);
+  // After shade(), before the host's forward passes (transparents, particles, gizmos, a sky drawn late): the
+  // framebuffer to draw them into. Where the layout says it draws forward passes (drawsForwardPasses) and the
+  // method has a multisampled G-buffer, a multisampled copy of the scene
+  // colour (RGBA16F; each sample its own slice's colour, or its pixel's) over the G-buffer's own multisampled
+  // depth-stencil: forward geometry is rasterised and depth-tested per sample (enable GL_MULTISAMPLE), so its edges,
+  // and the opaque silhouettes it passes behind, come out anti-aliased. Elsewhere the layout's own scene colour
+  // framebuffer (composedFramebuffer, else lightFramebuffer): forward passes draw as they always did. Then
+  // endForward(). Errors: WrongCallOrder without shade() since resolve() in this frame.
+  Result<GLuintHandle> beginForward();
+  // After the forward passes: the multisampled copy's per-pixel mean into the scene colour (nothing when
+  // beginForward() returned the host's own framebuffer). WrongCallOrder without beginForward().
+  Status endForward();
   // After the host's tonemap, on the display target: each running technique's post pass in the
   // registry's order (src/registry.cpp), FXAA last.
   // Nothing when the method has no post pass.

@@ -146,6 +146,11 @@ struct GBufferLayout {
   // their depth in the targets' depth buffer (a far-plane sky test sees the slice's surface) and, where the
   // lighting reads depth, in the host's depth texture. composedTexture must hold floats or RGBA8.
   GLuintHandle composedFramebuffer = 0, composedTexture = 0;
+  // The host draws forward passes after shade() (transparents, particles, gizmos) between Plugin::beginForward()
+  // and endForward() each frame. With a multisampled G-buffer the plugin then holds a multisampled copy of the
+  // scene colour (RGBA16F, `samples` per pixel) for them to draw into, and shade() keeps each lit sample's own
+  // colour there. false: beginForward() hands back the host's own scene colour framebuffer.
+  bool drawsForwardPasses = false;
   // The tonemapped display that post() filters (RGBA8 or GL_SRGB8_ALPHA8); needed only by the methods
   // whose MethodInfo::filtersDisplay says so and by every stacked +filter (0 elsewhere: a config that
   // needs it without one is refused with InvalidLayout naming the method).

@@ -103,6 +103,7 @@ class ResolvePass {
 // stencil mask, then per slice s: sample s written into the host's G-buffer where count > s, the
 // host's unchanged lighting run under the stencil test into a plugin target, and weight × light
 // composited into the host's light target (weight = 1 / count). Never touches the host's stencil.
+class ForwardTarget;
 class SliceRenderer {
  public:
   static Result<std::unique_ptr<SliceRenderer>> create(PluginContext& context, const MsaaGBuffer& source);
@@ -153,7 +154,10 @@ class SliceRenderer {
   // not lit).
   // With a composing layout, `compose` lights into the host's light textures and composes into the plugin's
   // per-slice colour, which is composited into the layout's composedTexture instead.
-  Status shade(PluginContext& context, const MsaaGBuffer& source, const ComposingFunction& compose, const Plan& plan);
+  // With a forward target, each slice's colour is kept in the sample it lit (plans that light one sample a slice
+  // with the stock writer; the pixel's colour fills the rest at Plugin::beginForward()).
+  Status shade(PluginContext& context, const MsaaGBuffer& source, const ComposingFunction& compose, const Plan& plan,
+               const ForwardTarget* forward);
   std::vector<uint8_t> readCounts() const;
   GLuint firstSliceLight() const { return light_.get(); }  // slice 0's light, inside maskAfterFirstSlice
   // What the last shade() overwrote in the host's G-buffer: every pixel, or those with count > 1; and the
@@ -206,6 +210,29 @@ std::vector<int> bayerSampleOrder(int m);
 // The order a G-buffer's samples are lit in: Bayer's for a supersampled one, the spreading order of the
 // driver's sample positions for a multisampled one.
 std::vector<int> sampleOrder(const MsaaGBuffer& source);
+
+// Where the host's forward passes (transparents, particles, gizmos) draw after shade() when the method has a
+// multisampled G-buffer: a multisampled colour target in the scene colour's place, each sample filled with its
+// pixel's scene colour, over the G-buffer's own multisampled depth, so forward geometry is anti-aliased and
+// depth-tested per sample against the opaque surfaces; its samples' mean goes back into the scene colour.
+// Allocated with the G-buffer where the layout says the host draws forward passes.
+class ForwardTarget {
+ public:
+  static Result<std::unique_ptr<ForwardTarget>> create(PluginContext& context, const MsaaGBuffer& source);
+  GLuint framebuffer() const { return framebuffer_.get(); }
+  void beginFrame() const;  // at shade(): no sample kept yet
+  // During the slices: the colour of the slice that lit `sample` where the pixel's count is at least minCount.
+  void keepSample(PluginContext& context, GLuint sliceColour, GLuint counts, int minCount, int sample) const;
+  void fill(PluginContext& context) const;     // the pixel's scene colour into every sample not kept
+  void resolve(PluginContext& context) const;  // each pixel's mean into the scene colour
+  uint64_t bytes() const { return bytes_; }
+
+ private:
+  GlTexture colour_;
+  GlFramebuffer framebuffer_, sceneColour_;
+  ShaderProgram fill_, keep_, resolve_;
+  uint64_t bytes_ = 0;
+};
 
 // Where the post passes (MethodInfo::filtersDisplay) render: a plugin-owned copy of the host's display
 // target in its format, copied back after each pass, and the bilinear sampler they read the display

@@ -185,6 +185,12 @@ Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool
 
 namespace {
 
+// The least slice count of the pixels whose samples slice s writes (0: every pixel; slice 0 leaves single-count
+// pixels the resolved G-buffer unless the plan writes it everywhere).
+int leastCountLitBy(const SliceRenderer::Plan& plan, int slice) {
+  return slice > 0 ? slice + 1 : plan.firstSliceEverywhere ? 0 : 2;
+}
+
 // Stencil for slice s: count > s; slice 0 covers every pixel.
 void sliceStencil(int slice) {
   if (slice == 0)
@@ -196,7 +202,9 @@ void sliceStencil(int slice) {
 }  // namespace
 
 Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const ComposingFunction& compose,
-                            const Plan& plan) {
+                            const Plan& plan, const ForwardTarget* forward) {
+  // Slices that light one sample each with the stock writer keep it for the forward passes.
+  const bool keepsSamples = forward && !plan.writeProgram && !plan.filterSliceLight;
   const int sliceCount = plan.sliceCount > 0 ? plan.sliceCount : maxCount_;
   context.frameStats.slices = sliceCount;
   lastWriteEverywhere_ = plan.firstSliceEverywhere;
@@ -213,6 +221,10 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       if (Status status = plan.maskAfterFirstSlice(); !status) return status;
     }
     const Status composited = compositeSlice(context, plan, slice);
+    if (keepsSamples) {
+      forward->keepSample(context, light_.get(), counts_.get(), leastCountLitBy(plan, slice),
+                          plan.sampleOrder.empty() ? slice : plan.sampleOrder[size_t(slice)]);
+    }
     if (skippable) glEndConditionalRender();
     if (!composited) return composited;
   }
@@ -257,8 +269,7 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
     if (!depthTarget) continue;
     context.beginDepthWritingPass(depthTarget);
     const ShaderProgram* program = useWriter(plan.writeDepthProgram, writeSliceDepth_);
-    const int minCount = slice > 0 ? slice + 1 : plan.firstSliceEverywhere ? 0 : 2;
-    program->set("uMinCount", minCount);
+    program->set("uMinCount", leastCountLitBy(plan, slice));
     glBindTextureUnit(kUnitSliceCounts, counts_.get());
     context.drawFullscreen();
   }

@@ -1,0 +1,77 @@
+// The host's forward passes after shade(), multisampled over the MSAA G-buffer's depth.
+#include "../shared_constants.h"
+#include "pipeline.h"
+
+namespace retroaa {
+
+Result<std::unique_ptr<ForwardTarget>> ForwardTarget::create(PluginContext& context, const MsaaGBuffer& source) {
+  const GBufferLayout& layout = context.layout;
+  auto target = std::make_unique<ForwardTarget>();
+  target->colour_ =
+      makeTexture(context, GL_RGBA16F, layout.width, layout.height, source.samples(), "forward.colour", target->bytes_);
+  GLint samples = 1;
+  glGetTextureLevelParameteriv(target->colour_.get(), 0, GL_TEXTURE_SAMPLES, &samples);
+  target->framebuffer_ = makeFramebuffer(context, "forward");
+  glNamedFramebufferTexture(target->framebuffer_.get(), GL_COLOR_ATTACHMENT0, target->colour_.get(), 0);
+  const GLenum depthFormat = sizedDepthFormat(source.depthStencil());
+  glNamedFramebufferTexture(target->framebuffer_.get(),
+                            hasStencil(depthFormat) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                            source.depthStencil(), 0);
+  if (Status status = checkFramebuffer(target->framebuffer_.get(), "forward"); !status) return status.error();
+  target->sceneColour_ = makeFramebuffer(context, "forward.scene_colour");
+  glNamedFramebufferTexture(target->sceneColour_.get(), GL_COLOR_ATTACHMENT0, sceneColourTexture(layout), 0);
+  if (Status status = checkFramebuffer(target->sceneColour_.get(), "forward.scene_colour"); !status)
+    return status.error();
+  auto fill = context.shaders->program("common/fullscreen.vert", "forward/fill.frag", "", {"uSceneColour"});
+  if (!fill) return fill.error();
+  target->fill_ = std::move(fill.value());
+  auto keep = context.shaders->program("common/fullscreen.vert", "forward/keep_sample.frag", "",
+                                       {"uSliceColour", "uSliceCounts", "uMinCount", "uSample"});
+  if (!keep) return keep.error();
+  target->keep_ = std::move(keep.value());
+  auto resolve = context.shaders->program("common/fullscreen.vert", "forward/resolve.frag",
+                                          defineLine("SAMPLES", samples), {"uForward"});
+  if (!resolve) return resolve.error();
+  target->resolve_ = std::move(resolve.value());
+  return target;
+}
+
+void ForwardTarget::beginFrame() const {
+  const float nothingKept[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(framebuffer_.get(), GL_COLOR, 0, nothingKept);
+}
+
+void ForwardTarget::keepSample(PluginContext& context, GLuint sliceColour, GLuint counts, int minCount,
+                               int sample) const {
+  ScopedPass timed(context, "forward.keep");
+  context.beginFullscreenPass(framebuffer_.get());
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  keep_.use();
+  keep_.bindTexture("uSliceColour", sliceColour);
+  keep_.bindTexture("uSliceCounts", counts);
+  keep_.set("uMinCount", minCount);
+  keep_.set("uSample", sample);
+  context.drawFullscreen();
+}
+
+void ForwardTarget::fill(PluginContext& context) const {
+  ScopedPass timed(context, "forward.fill");
+  context.beginFullscreenPass(framebuffer_.get());
+  glDisable(GL_FRAMEBUFFER_SRGB);  // the values as the scene colour's texture unit returns them (linear)
+  glEnable(GL_BLEND);              // colour where nothing was kept (alpha 0); alpha the scene colour's
+  glBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA, GL_ONE, GL_ZERO);
+  fill_.use();
+  fill_.bindTexture("uSceneColour", sceneColourTexture(context.layout));
+  context.drawFullscreen();
+}
+
+void ForwardTarget::resolve(PluginContext& context) const {
+  ScopedPass timed(context, "forward.resolve");
+  context.beginFullscreenPass(sceneColour_.get());
+  glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB scene colour stores the linear mean encoded
+  resolve_.use();
+  resolve_.bindTexture("uForward", colour_.get());
+  context.drawFullscreen();
+}
+
+}  // namespace retroaa
