@@ -61,8 +61,8 @@ stk-report: stk
 # with sky and power lines (the sky must stay as off has it), each against STK's own 4x render.
 STK_TEST_METHODS = off fxaa resolve reconstruct edge per-sample temporal@temporal_before_tonemap=off
 test-stk: stk
-	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) olivermath $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/olivermath --edges
-	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) cornfield_crossing $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/cornfield_crossing --sky
+	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) olivermath $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/olivermath --edges --whole-frame
+	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) cornfield_crossing $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/cornfield_crossing --sky --whole-frame
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo

@@ -34,7 +34,8 @@ struct ReconstructFixture {
 
   ReconstructFixture(const std::vector<uint8_t>& pixels, const std::vector<float>& pixelDepth, float tolerance = 2.0f,
                      int searchRadius = retroaa::Config{}.reconstructSearchRadius, GLenum displayFormat = GL_RGBA8,
-                     bool compute = false, bool normalsInViewSpace = true) {
+                     bool compute = false, bool normalsInViewSpace = true,
+                     retroaa::DisplayEncoding displayEncoding = retroaa::DisplayEncoding::DisplayEncoded) {
     const host::HostTargets& t = frame.renderer->targets();
     retroaa::Description description;
     description.config.method = retroaa::Method::Reconstruct;
@@ -44,6 +45,7 @@ struct ReconstructFixture {
     description.config.reconstructCompute = compute;
     description.layout = patch::describeHostGBuffer(t);
     description.layout.normalsInViewSpace = normalsInViewSpace;
+    description.layout.displayEncoding = displayEncoding;
     display = t.displayTexture;
     if (displayFormat != GL_RGBA8) {
       glCreateTextures(GL_TEXTURE_2D, 1, &display);
@@ -173,6 +175,29 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
           << std::hex << format;
       EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     }
+}
+
+TEST(Reconstruct, ALinearDisplayIsMixedAsStored) {
+  // The half-covered column of the test above, on a display the layout says holds linear light (a window
+  // shown as stored): the mix is the plain mean of the stored values, not of their sRGB decodings.
+  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
+  std::vector<float> depth(kWidth * kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x < 8 ? 200 : 30;
+      depth[y * kWidth + x] = x < 8 ? 0.5f : 1.0f;
+    }
+  for (GLenum format : {GL_RGBA8, GL_RGBA16F}) {
+    ReconstructFixture fixture(display, depth, 2.0f, retroaa::Config{}.reconstructSearchRadius, format, false, true,
+                               retroaa::DisplayEncoding::Linear);
+    const std::vector<uint8_t> out =
+        fixture.run("gl_FragDepth = float(x) + position.x >= 7.6 ? 1.0 : 0.5; outNormal = vec4(0.0, 0.0, 1.0, 0.5);");
+    for (int y = 0; y < kHeight; ++y) {
+      EXPECT_NEAR(out[(y * kWidth + 7) * 4], 115.0, 1.0) << std::hex << format << std::dec << " row " << y;
+      EXPECT_EQ(out[(y * kWidth + 6) * 4], 200);
+      EXPECT_EQ(out[(y * kWidth + 8) * 4], 30);
+    }
+  }
 }
 
 TEST(Reconstruct, TheComputePassWritesTheSameImageAsTheFullScreenPass) {

@@ -12,7 +12,8 @@
 // values darkens every blended edge, 0.8 dB of edge PSNR on the demo.
 // The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING, HAS_NORMALS, PACKED_SAMPLE_NORMALS,
 // SEARCH_RADIUS (rings of pixels, 1: the 3×3 neighbourhood), RADIANCE (run on the HDR light target
-// before tonemapping instead of on the display) and LINEAR_INPUT (the display arrives decoded to linear).
+// before tonemapping instead of on the display), LINEAR_INPUT (the display arrives decoded to linear) and
+// LINEAR_DISPLAY (the display holds linear light: read and written as stored).
 // reconstruct.frag runs it as a full-screen pass in place, reconstruct.comp (`reconstruct_compute=on`)
 // as a compute pass that packs each tile's searching pixels onto adjacent invocations.
 #include "common/depth_buffer.glsl"
@@ -37,12 +38,12 @@ const float kClearMatch = 0.01;    // similarity below this (normals ~56° apart
 // −0.2 dB, heavy lighting −0.3 dB against this).
 const float kFarRingTolerance = 16.0;
 
-#if RADIANCE || LINEAR_INPUT  // the HDR light target, or the display read through its sRGB view
+#if RADIANCE || LINEAR_INPUT || LINEAR_DISPLAY  // the light target, the display's sRGB view, or a linear display
 vec3 toLinear(vec3 c) { return c; }
 #else
 vec3 toLinear(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c)); }
 #endif
-#if RADIANCE
+#if RADIANCE || LINEAR_DISPLAY
 vec3 toDisplay(vec3 c) { return c; }
 #else
 vec3 toDisplay(vec3 c) { return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c)); }

@@ -47,6 +47,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
                                 defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
                                 defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) +
                                 defineLine("RADIANCE", t.beforeTonemap_) + defineLine("LINEAR_INPUT", t.linearInput_) +
+                                defineLine("LINEAR_DISPLAY", !t.beforeTonemap_ && shared.post->holdsLinearValues()) +
                                 defineLine("SEARCH_RADIUS", t.searchRadius_);
     auto program = t.compute_ ? context.shaders->computeProgram("reconstruct/reconstruct.comp", defines, kUniforms)
                               : context.shaders->program("common/fullscreen.vert", "reconstruct/reconstruct.frag",

@@ -257,6 +257,9 @@ class PostTarget {
   // The copy read as linear light: its sRGB view, which the texture unit decodes (cheaper than pow in a
   // shader); 0 where the display's format has no sRGB twin or the layout says it holds linear values.
   GLuint linearCopyOfInput() const { return linearView_.get(); }
+  // The display holds linear light (GBufferLayout::displayEncoding Linear, not an sRGB format): a pass averages
+  // its values as stored and writes them back so.
+  bool holdsLinearValues() const { return linearValues_; }
   uint64_t bytes() const { return bytes_; }
 
  private:
@@ -265,6 +268,7 @@ class PostTarget {
   GlFramebuffer framebuffer_;
   GlFramebuffer inPlaceFramebuffer_;  // input() as the colour attachment
   GlTexture linearView_;              // output_ as GL_SRGB8_ALPHA8; empty unless output_ is GL_RGBA8
+  bool linearValues_ = false;
   GlSampler linear_;
   uint64_t bytes_ = 0;
 };

@@ -28,8 +28,9 @@ Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
   glNamedFramebufferTexture(target->inPlaceFramebuffer_.get(), GL_COLOR_ATTACHMENT0, target->input(layout), 0);
   if (Status status = checkFramebuffer(target->inPlaceFramebuffer_.get(), "post.in_place"); !status)
     return status.error();
-  // A linear display is averaged as stored: no decoding view.
-  if (workFormat == GL_RGBA8 && (srgb || layout.displayEncoding == DisplayEncoding::DisplayEncoded)) {
+  // A linear display is averaged as stored: no decoding view (an sRGB format is encoded whatever the layout says).
+  target->linearValues_ = !srgb && layout.displayEncoding == DisplayEncoding::Linear;
+  if (workFormat == GL_RGBA8 && !target->linearValues_) {
     GLuint view = 0;
     glGenTextures(1, &view);  // a view needs a name that was never bound
     glTextureView(view, GL_TEXTURE_2D, target->output_.get(), GL_SRGB8_ALPHA8, 0, 1, 0, 1);
