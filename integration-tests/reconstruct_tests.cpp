@@ -103,6 +103,17 @@ WireFrame wireFrame(float shadedDepth) {
   return frame;
 }
 
+// Left of column 8 a surface (display 200, depth 0.5), right of it background (display 30, depth 1).
+WireFrame halfSurfaceFrame() {
+  WireFrame frame;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      for (int c = 0; c < 3; ++c) frame.display[size_t(y * kWidth + x) * 4 + c] = x < 8 ? 200 : 30;
+      frame.depth[size_t(y * kWidth + x)] = x < 8 ? 0.5f : 1.0f;
+    }
+  return frame;
+}
+
 // The wire's row rebuilt from its shaded pixel: that pixel as shaded, every pixel within `radius`
 // columns of it a quarter of its colour (one sub-sample in four, in linear light), the rest background.
 void expectWireRebuiltWithin(const std::vector<uint8_t>& out, int radius) {
@@ -146,13 +157,9 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
   // the standard pattern, x = 0.375, 0.875, 0.125, 0.625). The mix is the same whether the texture unit
   // decodes the display (RGBA8, read through its sRGB view; an sRGB display's RGBA8 stand-in) or the
   // shader does (a half-float display has no sRGB twin).
-  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
-  std::vector<float> depth(kWidth * kHeight);
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x < 8 ? 200 : 30;
-      depth[y * kWidth + x] = x < 8 ? 0.5f : 1.0f;
-    }
+  const WireFrame half = halfSurfaceFrame();
+  const std::vector<uint8_t>& display = half.display;
+  const std::vector<float>& depth = half.depth;
   const float mixed = linearMix(200.0f, 30.0f, 0.5f);
   // The compute pass too (reconstruct_compute=on): it writes through image stores, which a three-channel
   // display does not take; there it runs the full-screen pass and says so.
@@ -180,13 +187,9 @@ TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
 TEST(Reconstruct, ALinearDisplayIsMixedAsStored) {
   // The half-covered column of the test above, on a display the layout says holds linear light (a window
   // shown as stored): the mix is the plain mean of the stored values, not of their sRGB decodings.
-  std::vector<uint8_t> display(kWidth * kHeight * 4, 255);
-  std::vector<float> depth(kWidth * kHeight);
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      for (int c = 0; c < 3; ++c) display[(y * kWidth + x) * 4 + c] = x < 8 ? 200 : 30;
-      depth[y * kWidth + x] = x < 8 ? 0.5f : 1.0f;
-    }
+  const WireFrame half = halfSurfaceFrame();
+  const std::vector<uint8_t>& display = half.display;
+  const std::vector<float>& depth = half.depth;
   for (GLenum format : {GL_RGBA8, GL_RGBA16F}) {
     ReconstructFixture fixture(display, depth, 2.0f, retroaa::Config{}.reconstructSearchRadius, format, false, true,
                                retroaa::DisplayEncoding::Linear);

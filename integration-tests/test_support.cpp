@@ -94,23 +94,26 @@ GLuint fullscreenVertexProgram() {
 
 }  // namespace
 
-// Draws one full-screen triangle with a separable fragment program; deletes what it made.
-void drawWithFragment(const char* fragmentSource, const std::function<void(GLuint)>& setUniforms) {
-  const GLuint vertex = fullscreenVertexProgram();
+void drawTriangleWith(const char* vertexSource, const char* fragmentSource,
+                      const std::function<void(GLuint vertex, GLuint fragment)>& setUniforms) {
+  const GLuint vertex =
+      vertexSource ? glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexSource) : fullscreenVertexProgram();
   const GLuint fragment = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentSource);
-  GLint linked = 0;
-  glGetProgramiv(fragment, GL_LINK_STATUS, &linked);
-  if (!linked) {
-    char log[2048] = {};
-    glGetProgramInfoLog(fragment, sizeof log, nullptr, log);
-    ADD_FAILURE() << "test shader does not link: " << log;
+  for (const GLuint program : {vertex, fragment}) {
+    GLint linked = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (!linked) {
+      char log[2048] = {};
+      glGetProgramInfoLog(program, sizeof log, nullptr, log);
+      ADD_FAILURE() << "test shader does not link: " << log;
+    }
   }
   GLuint pipeline = 0, vao = 0;
   glCreateProgramPipelines(1, &pipeline);
   glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex);
   glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fragment);
   glCreateVertexArrays(1, &vao);
-  setUniforms(fragment);
+  setUniforms(vertex, fragment);
   glUseProgram(0);
   glBindProgramPipeline(pipeline);
   glBindVertexArray(vao);
@@ -120,6 +123,11 @@ void drawWithFragment(const char* fragmentSource, const std::function<void(GLuin
   glDeleteProgram(vertex);
   glDeleteProgram(fragment);
   glDeleteVertexArrays(1, &vao);
+}
+
+// Draws one full-screen triangle with a separable fragment program; deletes what it made.
+void drawWithFragment(const char* fragmentSource, const std::function<void(GLuint)>& setUniforms) {
+  drawTriangleWith(nullptr, fragmentSource, [&setUniforms](GLuint, GLuint fragment) { setUniforms(fragment); });
 }
 
 void writePerSample(GLuint target, int width, int height, const std::string& body) {

@@ -69,6 +69,10 @@ SyntheticSample surfaceSample(float depthMetres, glm::vec3 normal = {0, 0, 1}, g
 int fillGeometry(retroaa::Plugin& plugin, int width, int height,
                  const std::vector<std::vector<SyntheticSample>>& pixels);
 
+// Draws one triangle (vertices 0, 1, 2) with separable programs into the bound framebuffer: `vertexSource`
+// (null: one covering the viewport) and `fragmentSource`; `setUniforms` gets both programs first.
+void drawTriangleWith(const char* vertexSource, const char* fragmentSource,
+                      const std::function<void(GLuint vertex, GLuint fragment)>& setUniforms);
 // Draws one full-screen triangle with a separable fragment program into the bound framebuffer.
 void drawWithFragment(const char* fragmentSource, const std::function<void(GLuint program)>& setUniforms);
 

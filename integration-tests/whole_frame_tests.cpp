@@ -205,30 +205,16 @@ void main() { gl_Position = vec4(uCorners[gl_VertexID] / uSize * 2.0 - 1.0, uDep
 uniform vec3 uColour;
 out vec4 outColour;
 void main() { outColour = vec4(uColour, 1.0); })";
-  const GLuint vertex = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexSource);
-  const GLuint fragment = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentSource);
-  glProgramUniform2fv(vertex, glGetUniformLocation(vertex, "uCorners"), 3, &corners[0].x);
-  glProgramUniform2f(vertex, glGetUniformLocation(vertex, "uSize"), float(kWidth), float(kHeight));
-  glProgramUniform1f(vertex, glGetUniformLocation(vertex, "uDepth"), depth);
-  glProgramUniform3f(fragment, glGetUniformLocation(fragment, "uColour"), colour.r, colour.g, colour.b);
-  GLuint pipeline = 0, vao = 0;
-  glCreateProgramPipelines(1, &pipeline);
-  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertex);
-  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fragment);
-  glCreateVertexArrays(1, &vao);
-  glUseProgram(0);
-  glBindProgramPipeline(pipeline);
-  glBindVertexArray(vao);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_FALSE);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  drawTriangleWith(vertexSource, fragmentSource, [&](GLuint vertex, GLuint fragment) {
+    glProgramUniform2fv(vertex, glGetUniformLocation(vertex, "uCorners"), 3, &corners[0].x);
+    glProgramUniform2f(vertex, glGetUniformLocation(vertex, "uSize"), float(kWidth), float(kHeight));
+    glProgramUniform1f(vertex, glGetUniformLocation(vertex, "uDepth"), depth);
+    glProgramUniform3f(fragment, glGetUniformLocation(fragment, "uColour"), colour.r, colour.g, colour.b);
+  });
   glDisable(GL_DEPTH_TEST);
-  glBindProgramPipeline(0);
-  glDeleteVertexArrays(1, &vao);
-  glDeleteProgramPipelines(1, &pipeline);
-  glDeleteProgram(vertex);
-  glDeleteProgram(fragment);
 }
 
 const glm::vec3 kForward(0, 0, 1);
@@ -333,25 +319,9 @@ void main() {
   gl_Position = vec4(p, 0.0, 1.0);
 })";
   const std::string fragment = "#version 450 core\n" + body;
-  const char* vertexSource = vertex.c_str();
-  const char* fragmentSource = fragment.c_str();
-  const GLuint vertexProgram = glCreateShaderProgramv(GL_VERTEX_SHADER, 1, &vertexSource);
-  const GLuint fragmentProgram = glCreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &fragmentSource);
-  glProgramUniform2f(vertexProgram, glGetUniformLocation(vertexProgram, "uSize"), float(kWidth), float(kHeight));
-  GLuint pipeline = 0, vao = 0;
-  glCreateProgramPipelines(1, &pipeline);
-  glUseProgramStages(pipeline, GL_VERTEX_SHADER_BIT, vertexProgram);
-  glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, fragmentProgram);
-  glCreateVertexArrays(1, &vao);
-  glUseProgram(0);
-  glBindProgramPipeline(pipeline);
-  glBindVertexArray(vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindProgramPipeline(0);
-  glDeleteVertexArrays(1, &vao);
-  glDeleteProgramPipelines(1, &pipeline);
-  glDeleteProgram(vertexProgram);
-  glDeleteProgram(fragmentProgram);
+  drawTriangleWith(vertex.c_str(), fragment.c_str(), [](GLuint vertexProgram, GLuint) {
+    glProgramUniform2f(vertexProgram, glGetUniformLocation(vertexProgram, "uSize"), float(kWidth), float(kHeight));
+  });
   glDisable(GL_SAMPLE_SHADING);
   EXPECT_TRUE(plugin.resolve({1.0f}));
   const GLuint color = frame.renderer->targets().color;
