@@ -45,6 +45,8 @@ void ForwardTarget::keepSample(PluginContext& context, GLuint sliceColour, GLuin
                                int sample) const {
   ScopedPass timed(context, "forward.keep");
   context.beginFullscreenPass(framebuffer_.get());
+  glEnable(GL_MULTISAMPLE);  // gl_SampleMask counts only with it (Irrlicht, for one, turns it off)
+  glDisable(GL_SAMPLE_SHADING);
   glDisable(GL_FRAMEBUFFER_SRGB);
   keep_.use();
   keep_.bindTexture("uSliceColour", sliceColour);
@@ -57,6 +59,7 @@ void ForwardTarget::keepSample(PluginContext& context, GLuint sliceColour, GLuin
 void ForwardTarget::fill(PluginContext& context) const {
   ScopedPass timed(context, "forward.fill");
   context.beginFullscreenPass(framebuffer_.get());
+  glEnable(GL_MULTISAMPLE);        // blended against each sample's own alpha
   glDisable(GL_FRAMEBUFFER_SRGB);  // the values as the scene colour's texture unit returns them (linear)
   glEnable(GL_BLEND);              // colour where nothing was kept (alpha 0); alpha the scene colour's
   glBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA, GL_ONE, GL_ZERO);
