@@ -197,14 +197,14 @@ struct Plugin::Impl {
   std::unique_ptr<SliceRenderer> slices;
   std::unique_ptr<PostTarget> postTarget;
   std::unique_ptr<ForwardTarget> forward;  // GBufferLayout::drawsForwardPasses with a multisampled G-buffer
-  // Where the frame stands for beginForward()/endForward(): forward passes drawing into the host's own
-  // target, or into the multisampled forward target.
-  enum class FramePhase : uint8_t { Open, Shaded, ForwardIntoHost, ForwardMultisampled } phase = FramePhase::Open;
+  // Where the frame stands: resolved (shade() may follow), shaded (beginForward() may follow), forward passes
+  // drawing into the host's own target or into the multisampled forward target (endForward() may follow).
+  enum class FramePhase : uint8_t { Open, Resolved, Shaded, ForwardIntoHost, ForwardMultisampled };
+  FramePhase phase = FramePhase::Open;
   std::unique_ptr<DepthMirror> depthMirror;  // when the host's depth is a renderbuffer
   // The method's technique first, then the stacked ones; each pass runs them in this order.
   std::vector<ActiveTechnique> techniques;
   std::unique_ptr<BudgetController> budget;
-  bool resolvedThisFrame = false;
   bool warnedMultisampleOff = false;  // once per plugin: GL_MULTISAMPLE was off at resolve()
   uint64_t budgetFrame = 0;           // the measured frame the budget last saw
 
@@ -354,8 +354,8 @@ struct Plugin::Impl {
       if (!created) return created.error();
       resolvePass = std::move(created.value());
     }
-    const bool needForward = needMsaa && context.layout.drawsForwardPasses && msaa->multisampled() &&
-                             msaa->supersample() == 1 && sceneColourTexture(context.layout);
+    const bool needForward = needMsaa && context.layout.drawsForwardPasses && msaa->rasterisesPerSample() &&
+                             sceneColourTexture(context.layout);
     if (!needForward) forward.reset();
     if (needForward && !forward) {
       auto created = ForwardTarget::create(context, *msaa);
@@ -480,8 +480,7 @@ Jitter Plugin::jitter() const {
 }
 
 float Plugin::sampleShading() const {
-  const bool drawsMultisampled =
-      (impl_->msaa && impl_->msaa->multisampled() && impl_->msaa->supersample() == 1) || prepassFramebuffer() != 0;
+  const bool drawsMultisampled = (impl_->msaa && impl_->msaa->rasterisesPerSample()) || prepassFramebuffer() != 0;
   return drawsMultisampled ? impl_->context.config.sampleShading : 0.0f;
 }
 
@@ -493,15 +492,13 @@ float Plugin::textureLodBias() const {
 Status Plugin::resolve(const FrameInfo& frame) {
   PluginContext& context = impl_->context;
   impl_->beginFrame();
-  impl_->resolvedThisFrame = true;
-  impl_->phase = Impl::FramePhase::Open;
+  impl_->phase = Impl::FramePhase::Resolved;
   impl_->context.frame = frame;
   if (!impl_->resolvePass) return Status::ok();
   // With GL_MULTISAMPLE off (Irrlicht turns it off on a window without MSAA) the model pass rasterised
   // single-sample: every sample holds the pixel centre's surface, or only sample 0 was written. A state
   // query, no wait; the host's state is as its model pass left it.
-  if (impl_->msaa->multisampled() && impl_->msaa->supersample() == 1 && !impl_->warnedMultisampleOff &&
-      !glIsEnabled(GL_MULTISAMPLE)) {
+  if (impl_->msaa->rasterisesPerSample() && !impl_->warnedMultisampleOff && !glIsEnabled(GL_MULTISAMPLE)) {
     impl_->warnedMultisampleOff = true;
     context.warn(
         "GL_MULTISAMPLE is disabled at resolve(): the model pass rasterised into the MSAA G-buffer single-sample "
@@ -527,21 +524,23 @@ Status Plugin::shade(const LightingFunction& lighting) {
 
 Status Plugin::shade(const ComposingFunction& compose) {
   PluginContext& context = impl_->context;
-  if (!impl_->resolvedThisFrame) {
+  if (impl_->phase != Impl::FramePhase::Resolved) {
     if (impl_->msaa)  // the host's G-buffer holds nothing of this frame's model pass
       return Error{ErrorCode::WrongCallOrder, std::string("shade() without resolve() since the last shade(): ") +
                                                   toString(context.config.method) +
                                                   " needs the model pass resolved first (see docs/integration.md)"};
     impl_->beginFrame();
   }
-  impl_->resolvedThisFrame = false;
   impl_->phase = Impl::FramePhase::Shaded;
+  if (impl_->forward) {
+    GlStateGuard guard;
+    impl_->forward->beginFrame(context);
+  }
   if (impl_->slices) {
     GlStateGuard guard;
     SharedTargets shared = impl_->shared();
     Technique* technique = impl_->methodTechnique();
     const SliceRenderer::Plan plan = technique ? technique->slicePlan(context, shared) : SliceRenderer::Plan{};
-    if (impl_->forward) impl_->forward->beginFrame();
     Status status = impl_->slices->shade(context, *impl_->msaa, compose, plan, impl_->forward.get());
     if (status && context.config.restoreGBufferAfterShade)
       status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->context.frame, *impl_->slices);
@@ -549,7 +548,6 @@ Status Plugin::shade(const ComposingFunction& compose) {
   }
   // Single-slice methods light once, every pixel, in the host's own target.
   context.frameStats.slices = 1;
-  if (impl_->forward) impl_->forward->beginFrame();
   {
     GlStateGuard guard;
     ScopedPass timed(context, "lighting");
@@ -566,9 +564,10 @@ Status Plugin::shade(const ComposingFunction& compose) {
 Result<GLuintHandle> Plugin::beginForward() {
   PluginContext& context = impl_->context;
   if (impl_->phase != Impl::FramePhase::Shaded)
-    return Error{ErrorCode::WrongCallOrder, impl_->phase == Impl::FramePhase::Open
-                                                ? "beginForward() without shade() since the frame began"
-                                                : "beginForward() twice without endForward()"};
+    return Error{ErrorCode::WrongCallOrder,
+                 impl_->phase == Impl::FramePhase::Open || impl_->phase == Impl::FramePhase::Resolved
+                     ? "beginForward() without shade() since the frame began"
+                     : "beginForward() twice without endForward()"};
   impl_->phase = Impl::FramePhase::ForwardIntoHost;
   if (!impl_->forward) return sceneColourFramebuffer(context.layout);
   impl_->phase = Impl::FramePhase::ForwardMultisampled;

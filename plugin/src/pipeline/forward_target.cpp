@@ -36,7 +36,8 @@ Result<std::unique_ptr<ForwardTarget>> ForwardTarget::create(PluginContext& cont
   return target;
 }
 
-void ForwardTarget::beginFrame() const {
+void ForwardTarget::beginFrame(const PluginContext& context) const {
+  context.beginFullscreenPass(framebuffer_.get());  // a clear obeys the colour mask and scissor
   const float nothingKept[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(framebuffer_.get(), GL_COLOR, 0, nothingKept);
 }

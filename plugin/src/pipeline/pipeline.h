@@ -39,6 +39,8 @@ class MsaaGBuffer {
   int requestedSamples() const { return requested_; }
   int supersample() const { return supersample_; }  // m, or 1 for a multisampled G-buffer
   bool multisampled() const { return samples_ > 1 || multisampledStorage_; }
+  // Multisampled, not supersampled: the model pass rasterises several samples per pixel into it.
+  bool rasterisesPerSample() const { return multisampled() && supersample_ == 1; }
   // The driver's sample positions, x and y per allocated sample in [0, 1)²; the centre for single-sample
   // storage. Binds the G-buffer's framebuffer.
   std::vector<float> samplePositions() const;
@@ -220,7 +222,7 @@ class ForwardTarget {
  public:
   static Result<std::unique_ptr<ForwardTarget>> create(PluginContext& context, const MsaaGBuffer& source);
   GLuint framebuffer() const { return framebuffer_.get(); }
-  void beginFrame() const;  // at shade(): no sample kept yet
+  void beginFrame(const PluginContext& context) const;  // at shade(): no sample kept yet
   // During the slices: the colour of the slice that lit `sample` where the pixel's count is at least minCount.
   void keepSample(PluginContext& context, GLuint sliceColour, GLuint counts, int minCount, int sample) const;
   void fill(PluginContext& context) const;     // the pixel's scene colour into every sample not kept

@@ -83,7 +83,7 @@ Status SliceRenderer::createTargets(PluginContext& context) {
   // window's included), written into the host's target once all slices are in (presentLight). A composing
   // callback may read its composed target's previous frame (SuperTuxKart's screen-space reflections): its
   // slices always sum apart.
-  const GLuint outputTexture = composes ? layout.composedTexture : layout.lightTexture;
+  const GLuint outputTexture = sceneColourTexture(layout);
   GLint redType = GL_FLOAT;
   if (outputTexture) glGetTextureLevelParameteriv(outputTexture, 0, GL_TEXTURE_RED_TYPE, &redType);
   if (redType != GL_FLOAT || !outputTexture || composes) {
@@ -289,12 +289,12 @@ void SliceRenderer::lightSlice(PluginContext& context, const ComposingFunction& 
   GlStateGuard hostState;  // the host's lighting may change anything; the stencil test must hold
   // A host whose lighting only adds (blending ONE, ONE) and clears its target outside the call
   // (SuperTuxKart) finds it black, as its own target would be; so does its combine's target.
+  context.beginFullscreenPass(lightTarget_.get());  // before the clears: they obey the colour mask and scissor
   const float black[4] = {0, 0, 0, 0};
   const GLint lightOutputs = 1 + GLint(composeTarget_ ? context.layout.extraLightTextures.size() : extraLight_.size());
   for (GLint buffer = 0; buffer < lightOutputs; ++buffer)
     glClearNamedFramebufferfv(lightTarget_.get(), GL_COLOR, buffer, black);
   if (composeTarget_) glClearNamedFramebufferfv(composeTarget_.get(), GL_COLOR, 0, black);
-  context.beginFullscreenPass(lightTarget_.get());
   sliceStencil(slice);
   compose({lightTarget_.get(), composeTarget_.get()});
 }
@@ -337,9 +337,7 @@ Status SliceRenderer::compositeSlice(PluginContext& context, const Plan& plan, i
 void SliceRenderer::presentAccumulation(PluginContext& context) {
   const GBufferLayout& layout = context.layout;
   ScopedPass timed(context, "slices.present");
-  glBindFramebuffer(GL_FRAMEBUFFER, presentTarget_.get()         ? presentTarget_.get()
-                                    : layout.composedFramebuffer ? layout.composedFramebuffer
-                                                                 : layout.lightFramebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, presentTarget_.get() ? presentTarget_.get() : sceneColourFramebuffer(layout));
   context.beginFullscreenPass(0);  // 0: the binding above (the host's may be the default framebuffer)
   glEnable(GL_FRAMEBUFFER_SRGB);   // an sRGB target encodes the linear sum
   presentLight_.use();
