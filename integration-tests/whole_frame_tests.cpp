@@ -196,7 +196,8 @@ TEST(WholeFrame, AComposingLayoutRefusesALightingCallbackAndAHalfNamedTarget) {
 }
 
 // A forward pass's triangle in pixel coordinates, one colour, depth-tested (GL_LESS) at window depth `depth`.
-void drawForwardTriangle(const glm::vec2 (&corners)[3], float depth, glm::vec3 colour) {
+void drawForwardTriangle(const glm::vec2 (&corners)[3], float depth, glm::vec3 colour,
+                         glm::vec2 size = {kWidth, kHeight}) {
   const char* vertexSource = R"(#version 450 core
 out gl_PerVertex { vec4 gl_Position; };
 uniform vec2 uCorners[3];
@@ -212,7 +213,7 @@ void main() { outColour = vec4(uColour, 1.0); })";
   glDepthMask(GL_FALSE);
   drawTriangleWith(vertexSource, fragmentSource, [&](GLuint vertex, GLuint fragment) {
     glProgramUniform2fv(vertex, glGetUniformLocation(vertex, "uCorners"), 3, &corners[0].x);
-    glProgramUniform2f(vertex, glGetUniformLocation(vertex, "uSize"), float(kWidth), float(kHeight));
+    glProgramUniform2f(vertex, glGetUniformLocation(vertex, "uSize"), size.x, size.y);
     glProgramUniform1f(vertex, glGetUniformLocation(vertex, "uDepth"), depth);
     glProgramUniform3f(fragment, glGetUniformLocation(fragment, "uColour"), colour.r, colour.g, colour.b);
   });
@@ -361,3 +362,109 @@ TEST(WholeFrame, SampleShadingIsZeroWhereNothingDrawsMultisampled) {
 }
 
 }  // namespace
+
+// The post filters that rebuild a pixel from its neighbours' colours know the opaque surfaces' depth alone.
+// Left of x = 7.6 a surface (display 200, depth 0.5), right of it the background (display 30); a forward
+// pass (a particle) draws blue over the background at column 8, rows 2 to 5, beside the silhouette.
+constexpr int kFilterWidth = 16, kFilterHeight = 8;
+bool drawnByTheForwardPass(int x, int y) { return x == 8 && y >= 2 && y <= 5; }
+
+// The display after post(); `drawsForwardPasses`: what the layout says (the pass is drawn either way).
+std::vector<uint8_t> filteredBesideAForwardPass(const char* spec, bool drawsForwardPasses) {
+  SyntheticFrame frame(kFilterWidth, kFilterHeight);
+  const host::HostTargets& t = frame.renderer->targets();
+  retroaa::Description description;
+  EXPECT_TRUE(retroaa::applyMethodSpec(description.config, spec));
+  description.config.samples = 4;
+  description.layout = patch::describeHostGBuffer(t);
+  description.layout.drawsForwardPasses = drawsForwardPasses;
+  auto created = retroaa::Plugin::create(description);
+  EXPECT_TRUE(created) << (created ? "" : created.error().message);
+  if (!created) return {};
+  retroaa::Plugin& plugin = *created.value();
+  std::vector<uint8_t> display(size_t(kFilterWidth) * kFilterHeight * 4, 255);
+  std::vector<uint32_t> depth(size_t(kFilterWidth) * kFilterHeight);
+  for (int y = 0; y < kFilterHeight; ++y)
+    for (int x = 0; x < kFilterWidth; ++x) {
+      const size_t i = size_t(y * kFilterWidth + x);
+      const uint8_t grey = x < 8 ? 200 : 30;
+      const bool blue = drawnByTheForwardPass(x, y);
+      display[i * 4 + 0] = display[i * 4 + 1] = blue ? 0 : grey;
+      display[i * 4 + 2] = blue ? 250 : grey;
+      depth[i] = uint32_t(double(x < 8 ? 0.5 : 1.0) * 0xFFFFFF) << 8;
+    }
+  glTextureSubImage2D(t.depthStencil, 0, 0, 0, kFilterWidth, kFilterHeight, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+                      depth.data());
+  const std::vector<glm::vec4> normals(size_t(kFilterWidth) * kFilterHeight, glm::vec4(0, 0, 1, 0.5f));
+  glTextureSubImage2D(t.normal, 0, 0, 0, kFilterWidth, kFilterHeight, GL_RGBA, GL_FLOAT, normals.data());
+  if (plugin.prepassFramebuffer()) {
+    writePerSample(plugin.prepassFramebuffer(), kFilterWidth, kFilterHeight,
+                   "gl_FragDepth = float(x) + position.x >= 7.6 ? 1.0 : 0.5; outNormal = vec4(0.0, 0.0, 1.0, 0.5);");
+  } else {  // stacked on a G-buffer method: its samples (4× standard pattern: samples 1 and 3 lie right of 0.6)
+    const SyntheticSample surface = surfaceSample(2.0f), sky = backgroundSample();
+    std::vector<std::vector<SyntheticSample>> pixels(size_t(kFilterWidth) * kFilterHeight);
+    for (int y = 0; y < kFilterHeight; ++y)
+      for (int x = 0; x < kFilterWidth; ++x)
+        pixels[size_t(y * kFilterWidth + x)] = x < 7    ? std::vector<SyntheticSample>{surface}
+                                               : x == 7 ? std::vector<SyntheticSample>{surface, sky, surface, sky}
+                                                        : std::vector<SyntheticSample>{sky};
+    fillGeometry(plugin, kFilterWidth, kFilterHeight, pixels);
+  }
+  EXPECT_TRUE(plugin.resolve({verticalFovFor(0.8f, kFilterWidth, kFilterHeight), 0.1f, 100.0f}));
+  EXPECT_TRUE(plugin.shade([](GLuint light) {  // the host's light: one grey
+    const float grey[4] = {0.3f, 0.3f, 0.3f, 1.0f};
+    glClearNamedFramebufferfv(light, GL_COLOR, 0, grey);
+  }));
+  {
+    const retroaa::Result<retroaa::GLuintHandle> framebuffer = plugin.beginForward();
+    EXPECT_TRUE(framebuffer) << (framebuffer ? "" : framebuffer.error().message);
+    if (framebuffer) {
+      glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.value());
+      glViewport(0, 0, kFilterWidth, kFilterHeight);
+      const glm::vec2 size(kFilterWidth, kFilterHeight);  // the particle: pixel column 8, rows 2 to 5
+      drawForwardTriangle({{8, 2}, {9, 2}, {8, 6}}, 0.0f, {0, 0, 8}, size);
+      drawForwardTriangle({{9, 2}, {9, 6}, {8, 6}}, 0.0f, {0, 0, 8}, size);
+    }
+    EXPECT_TRUE(plugin.endForward());
+  }
+  // The host's tonemap: the display as above (the forward pass's pixels blue).
+  glTextureSubImage2D(t.displayTexture, 0, 0, 0, kFilterWidth, kFilterHeight, GL_RGBA, GL_UNSIGNED_BYTE,
+                      display.data());
+  EXPECT_TRUE(plugin.post());
+  std::vector<uint8_t> out(display.size());
+  glGetTextureImage(t.displayTexture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  return out;
+}
+
+TEST(WholeFrame, PostFiltersSpreadNoColourAForwardPassDrew) {
+  for (const char* spec : {"reconstruct", "coverage", "resolve+reconstruct", "resolve+coverage"}) {
+    const std::vector<uint8_t> out = filteredBesideAForwardPass(spec, true);
+    ASSERT_EQ(out.size(), size_t(kFilterWidth) * kFilterHeight * 4) << spec;
+    int blended = 0;  // silhouette pixels mixed with the background: the filter ran
+    for (int y = 0; y < kFilterHeight; ++y)
+      for (int x = 0; x < kFilterWidth; ++x) {
+        const uint8_t* p = &out[size_t(y * kFilterWidth + x) * 4];
+        if (drawnByTheForwardPass(x, y)) {
+          EXPECT_EQ(p[2], 250) << spec << ": the particle at " << x << ", " << y << " as drawn";
+          EXPECT_EQ(p[0], 0) << spec << ": the particle at " << x << ", " << y << " as drawn";
+        } else {
+          EXPECT_EQ(p[2], p[0]) << spec << ": no blue in the grey pixel " << x << ", " << y;
+        }
+        blended += x == 7 && p[0] > 40 && p[0] < 190;
+      }
+    // coverage keeps a silhouette pixel whose tap would read the particle (rows 1 to 5); reconstruct finds
+    // the background's colour farther out.
+    EXPECT_GE(blended, 3) << spec << ": the silhouette column is still filtered away from the particle";
+  }
+  // The control: the same frame from a layout that does not say it draws forward passes, where the filters
+  // cannot know, pulls the particle's blue into the silhouette pixels beside it.
+  for (const char* spec : {"reconstruct", "coverage", "resolve+reconstruct", "resolve+coverage"}) {
+    const std::vector<uint8_t> out = filteredBesideAForwardPass(spec, false);
+    ASSERT_EQ(out.size(), size_t(kFilterWidth) * kFilterHeight * 4) << spec;
+    int tinted = 0;
+    for (int y = 2; y <= 5; ++y)
+      tinted += out[size_t(y * kFilterWidth + 7) * 4 + 2] > out[size_t(y * kFilterWidth + 7) * 4] + 20;
+    EXPECT_GE(tinted, 2) << spec;
+  }
+}

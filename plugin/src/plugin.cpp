@@ -196,7 +196,8 @@ struct Plugin::Impl {
   std::unique_ptr<ResolvePass> resolvePass;  // with the MSAA G-buffer: slice 0's base, and `resolve` itself
   std::unique_ptr<SliceRenderer> slices;
   std::unique_ptr<PostTarget> postTarget;
-  std::unique_ptr<ForwardTarget> forward;  // GBufferLayout::drawsForwardPasses with a multisampled G-buffer
+  std::unique_ptr<ForwardTarget> forward;    // GBufferLayout::drawsForwardPasses with a multisampled G-buffer
+  std::unique_ptr<ForwardMask> forwardMask;  // the same, while a technique readsForwardMask()
   // Where the frame stands: resolved (shade() may follow), shaded (beginForward() may follow), forward passes
   // drawing into the host's own target or into the multisampled forward target (endForward() may follow).
   enum class FramePhase : uint8_t { Open, Resolved, Shaded, ForwardIntoHost, ForwardMultisampled };
@@ -208,7 +209,7 @@ struct Plugin::Impl {
   bool warnedMultisampleOff = false;  // once per plugin: GL_MULTISAMPLE was off at resolve()
   uint64_t budgetFrame = 0;           // the measured frame the budget last saw
 
-  SharedTargets shared() { return {msaa.get(), slices.get(), postTarget.get()}; }
+  SharedTargets shared() { return {msaa.get(), slices.get(), postTarget.get(), forwardMask.get()}; }
   Technique* methodTechnique() {
     return !techniques.empty() && techniques.front().row->info.method == context.config.method
                ? techniques.front().technique.get()
@@ -338,6 +339,7 @@ struct Plugin::Impl {
     if (!(storage & kStorageSlices)) slices.reset();
     if (resolvePass && resolvePass->computeRequested() != config.resolveCompute) resolvePass.reset();
     if (rebuildAll || !(storage & kStoragePostTarget)) postTarget.reset();
+    if (rebuildAll) forwardMask.reset();
     std::vector<ActiveTechnique> kept;
     for (ActiveTechnique& active : techniques)
       if (std::find(rows.begin(), rows.end(), active.row) != rows.end() && active.technique->keepsObjectsFor(config))
@@ -384,6 +386,14 @@ struct Plugin::Impl {
       if (!created) return created.error();
       techniques.push_back({row, std::move(created.value())});
     }
+    const bool needMask = std::any_of(techniques.begin(), techniques.end(),
+                                      [](const ActiveTechnique& a) { return a.technique->readsForwardMask(); });
+    if (!needMask) forwardMask.reset();
+    if (needMask && !forwardMask) {
+      auto created = ForwardMask::create(context);
+      if (!created) return created.error();
+      forwardMask = std::move(created.value());
+    }
     return Status::ok();
   }
 
@@ -417,7 +427,8 @@ struct Plugin::Impl {
   uint64_t bytesHeld() const {
     uint64_t bytes = (msaa ? msaa->bytes() : 0) + (resolvePass ? resolvePass->bytes() : 0) +
                      (slices ? slices->bytes() : 0) + (postTarget ? postTarget->bytes() : 0) +
-                     (depthMirror ? depthMirror->bytes : 0) + (forward ? forward->bytes() : 0);
+                     (depthMirror ? depthMirror->bytes : 0) + (forward ? forward->bytes() : 0) +
+                     (forwardMask ? forwardMask->bytes() : 0);
     for (const ActiveTechnique& active : techniques) bytes += active.technique->bytes();
     return bytes;
   }
@@ -536,6 +547,7 @@ Status Plugin::shade(const ComposingFunction& compose) {
     GlStateGuard guard;
     impl_->forward->beginFrame(context);
   }
+  if (impl_->forwardMask) impl_->forwardMask->clear();  // a frame without forward passes drew none
   if (impl_->slices) {
     GlStateGuard guard;
     SharedTargets shared = impl_->shared();
@@ -569,6 +581,7 @@ Result<GLuintHandle> Plugin::beginForward() {
                      ? "beginForward() without shade() since the frame began"
                      : "beginForward() twice without endForward()"};
   impl_->phase = Impl::FramePhase::ForwardIntoHost;
+  if (impl_->forwardMask) impl_->forwardMask->keepSceneColour(context.layout);
   if (!impl_->forward) return sceneColourFramebuffer(context.layout);
   impl_->phase = Impl::FramePhase::ForwardMultisampled;
   GlStateGuard guard;
@@ -581,9 +594,9 @@ Status Plugin::endForward() {
   if (phase != Impl::FramePhase::ForwardIntoHost && phase != Impl::FramePhase::ForwardMultisampled)
     return Error{ErrorCode::WrongCallOrder, "endForward() without beginForward()"};
   impl_->phase = Impl::FramePhase::Open;
-  if (phase == Impl::FramePhase::ForwardIntoHost) return Status::ok();
   GlStateGuard guard;
-  impl_->forward->resolve(impl_->context);
+  if (phase == Impl::FramePhase::ForwardMultisampled) impl_->forward->resolve(impl_->context);
+  if (impl_->forwardMask) impl_->forwardMask->markChanges(impl_->context);
   return Status::ok();
 }
 

@@ -6,6 +6,7 @@
 
 #include "config_keys.h"
 #include "pipeline/pipeline.h"
+#include "shared_constants.h"
 
 #include <memory>
 #include <string>
@@ -18,6 +19,7 @@ struct SharedTargets {
   MsaaGBuffer* msaa = nullptr;
   SliceRenderer* slices = nullptr;
   PostTarget* post = nullptr;
+  const ForwardMask* forwardMask = nullptr;  // held while a technique readsForwardMask()
 };
 
 class Technique {
@@ -39,6 +41,9 @@ class Technique {
   // Whether budget_ms can steer this technique under `config` (through PluginContext::budgetScale).
   virtual bool followsBudget(const Config&) const { return false; }
   virtual uint64_t bytes() const { return 0; }
+  // Whether post() rebuilds pixels from their neighbours' colours knowing only the opaque surfaces (their
+  // depth and normals), so it must leave alone what the host's forward passes drew (ForwardMask).
+  virtual bool readsForwardMask() const { return false; }
   // The config changed in a way that changes the image (Plugin::reconfigure): state carried from frame
   // to frame (a history) starts anew.
   virtual void resetHistory(PluginContext&) {}
@@ -76,6 +81,7 @@ class SampleGeometryTechnique : public Technique {
   GLuint prepassFramebuffer() const override { return geometry_.prepass.get(); }
   int samples() const override { return geometry_.samples; }
   uint64_t bytes() const override { return geometry_.bytes; }
+  bool readsForwardMask() const override { return readsForwardMask_; }
   bool keepsObjectsFor(const Config& config) const override {
     return geometry_.servesConfig(config, config.method == prepassMethod_);
   }
@@ -89,10 +95,20 @@ class SampleGeometryTechnique : public Technique {
     geometry_ = std::move(geometry.value());
     return Status::ok();
   }
+  // A post pass that leaves forward-drawn pixels alone where the layout draws forward passes: its #define
+  // (FORWARD_MASK, sampler uForwardDrawn) and, each frame, the mask bound.
+  std::string forwardMaskDefine(const GBufferLayout& layout, bool runsAfterForwardPasses) {
+    readsForwardMask_ = runsAfterForwardPasses && ForwardMask::appliesTo(layout);
+    return defineLine("FORWARD_MASK", readsForwardMask_);
+  }
+  void bindForwardMask(const ShaderProgram& program, const SharedTargets& shared) const {
+    if (readsForwardMask_) program.bindTexture("uForwardDrawn", shared.forwardMask->drawn());
+  }
   SampleGeometry geometry_;
 
  private:
   Method prepassMethod_ = Method::Off;
+  bool readsForwardMask_ = false;
 };
 
 // What a row needs of the shared pieces (slices imply the MSAA G-buffer).

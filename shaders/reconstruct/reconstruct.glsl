@@ -13,7 +13,9 @@
 // The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING, HAS_NORMALS, PACKED_SAMPLE_NORMALS,
 // SEARCH_RADIUS (rings of pixels, 1: the 3×3 neighbourhood), RADIANCE (run on the HDR light target
 // before tonemapping instead of on the display), LINEAR_INPUT (the display arrives decoded to linear) and
-// LINEAR_DISPLAY (the display holds linear light: read and written as stored).
+// LINEAR_DISPLAY (the display holds linear light: read and written as stored) and FORWARD_MASK (the host
+// draws forward passes: a pixel they drew keeps its colour and lends it to no sub-sample, since the depth
+// and normals here are the opaque surfaces' alone).
 // reconstruct.frag runs it as a full-screen pass in place, reconstruct.comp (`reconstruct_compute=on`)
 // as a compute pass that packs each tile's searching pixels onto adjacent invocations.
 #include "common/depth_buffer.glsl"
@@ -23,6 +25,12 @@ layout(binding = 1) uniform sampler2D uPixelDepth;      // the host's single-sam
 layout(binding = 2) uniform sampler2D uPixelNormal;     // the host's single-sample normal (as encoded)
 layout(binding = 3) uniform sampler2DMS uSampleDepth;   // multisampled depth of the same frame
 layout(binding = 4) uniform sampler2DMS uSampleNormal;  // its normals (xy only when packed)
+#if FORWARD_MASK
+layout(binding = 5) uniform sampler2D uForwardDrawn;  // 1 where a forward pass drew (ForwardMask)
+bool drawnForward(ivec2 pixel) { return texelFetch(uForwardDrawn, pixel, 0).r > 0.5; }
+#else
+bool drawnForward(ivec2 pixel) { return false; }
+#endif
 uniform vec2 uSamplePositions[SAMPLES];
 uniform float uFootprintTan;  // tan(hfov / width)
 uniform float uTolerance;     // c of the Eq. 1 style depth test
@@ -152,6 +160,7 @@ bool outside(Geometry g, Range r) {
 int subSamplesOffOwnSurface(ivec2 pixel, out Geometry own, out Geometry samples[SAMPLES]) {
   own = pixelGeometry(pixel);
   int open = 0;
+  if (drawnForward(pixel)) return open;  // what covers it is nothing the sub-samples know
   for (int s = 0; s < SAMPLES; ++s) {
     samples[s] = sampleGeometry(pixel, s);
     if (similarity(samples[s], own, uTolerance) < 0.5) open |= 1 << s;
@@ -214,7 +223,7 @@ vec4 reconstructPixel(ivec2 pixel, out bool changed) {
       int depthMatch = 0;  // bit s: open sub-sample s lies at the candidate's depth
       for (int s = 0; s < SAMPLES; ++s)
         if (((open >> s) & 1) != 0 && sameDepth(samples[s], candidate, tolerance)) depthMatch |= 1 << s;
-      if (depthMatch == 0) continue;
+      if (depthMatch == 0 || drawnForward(q)) continue;  // a forward pass's colour is no surface's here
       candidate = withNormal(candidate, q);
       // Read once for every sub-sample that takes it. The per-sample loop below chooses with selects
       // rather than branches: a SIMD rasteriser runs both sides of a branch its lanes disagree on, and

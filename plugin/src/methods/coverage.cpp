@@ -21,9 +21,10 @@ class CoverageTechnique : public SampleGeometryTechnique {
       return status.error();
     auto program = context.shaders->program(
         "common/fullscreen.vert", "coverage/coverage_filter.frag",
-        defineLine("SAMPLES", technique->geometry_.samples) + depthEncodingDefines(context.layout),
+        defineLine("SAMPLES", technique->geometry_.samples) + depthEncodingDefines(context.layout) +
+            technique->forwardMaskDefine(context.layout, true),
         {"uSamplePositions", "uTexelSize", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance", "uInput",
-         "uPixelDepth", "uSampleDepth"});
+         "uPixelDepth", "uSampleDepth", "uForwardDrawn"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -37,6 +38,7 @@ class CoverageTechnique : public SampleGeometryTechnique {
     shared.post->bindInput(layout, program_, "uInput");
     program_.bindTexture("uPixelDepth", layout.depthStencilTexture);
     program_.bindTexture("uSampleDepth", geometry_.depth);
+    bindForwardMask(program_, shared);
     program_.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
     program_.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
     program_.setDepthPlanes(context);

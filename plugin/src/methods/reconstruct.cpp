@@ -48,7 +48,8 @@ class ReconstructTechnique : public SampleGeometryTechnique {
                                 defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) +
                                 defineLine("RADIANCE", t.beforeTonemap_) + defineLine("LINEAR_INPUT", t.linearInput_) +
                                 defineLine("LINEAR_DISPLAY", !t.beforeTonemap_ && shared.post->holdsLinearValues()) +
-                                defineLine("SEARCH_RADIUS", t.searchRadius_);
+                                defineLine("SEARCH_RADIUS", t.searchRadius_) +
+                                t.forwardMaskDefine(layout, !t.beforeTonemap_);  // before tonemapping: before them
     auto program = t.compute_ ? context.shaders->computeProgram("reconstruct/reconstruct.comp", defines, kUniforms)
                               : context.shaders->program("common/fullscreen.vert", "reconstruct/reconstruct.frag",
                                                          defines, kUniforms);
@@ -76,6 +77,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
     else
       shared.post->beginInPlace(context);
     program_.bindTexture("uInput", linearInput_ ? shared.post->linearCopyOfInput() : shared.post->copyOfInput());
+    bindForwardMask(program_, shared);
     run(context, frame);
     return Status::ok();
   }
@@ -90,7 +92,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
                                                                    "uFootprintTan",    "uTolerance",
                                                                    "uInput",           "uPixelDepth",
                                                                    "uPixelNormal",     "uSampleDepth",
-                                                                   "uSampleNormal"};
+                                                                   "uSampleNormal",    "uForwardDrawn"};
   static constexpr int kTileSize = 8;  // reconstruct.comp's work group: 8 × 8 pixels
 
   // The pass itself, on a copy of output_ bound as uInput (and for the full-screen pass, output_ bound

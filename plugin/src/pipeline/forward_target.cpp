@@ -1,4 +1,5 @@
-// The host's forward passes after shade(), multisampled over the MSAA G-buffer's depth.
+// The host's forward passes after shade(): multisampled over the MSAA G-buffer's depth (ForwardTarget), and
+// what they drew (ForwardMask).
 #include "../shared_constants.h"
 #include "pipeline.h"
 
@@ -75,6 +76,36 @@ void ForwardTarget::resolve(PluginContext& context) const {
   glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB scene colour stores the linear mean encoded
   resolve_.use();
   resolve_.bindTexture("uForward", colour_.get());
+  context.drawFullscreen();
+}
+
+Result<std::unique_ptr<ForwardMask>> ForwardMask::create(PluginContext& context) {
+  const GBufferLayout& layout = context.layout;
+  auto mask = std::make_unique<ForwardMask>();
+  mask->before_ = makeLightTargetCopy(context, "forward_mask.before", mask->bytes_);
+  mask->drawn_ = makeTexture(context, GL_R8, layout.width, layout.height, 0, "forward_mask.drawn", mask->bytes_);
+  mask->framebuffer_ = makeFramebuffer(context, "forward_mask");
+  glNamedFramebufferTexture(mask->framebuffer_.get(), GL_COLOR_ATTACHMENT0, mask->drawn_.get(), 0);
+  if (Status status = checkFramebuffer(mask->framebuffer_.get(), "forward_mask"); !status) return status.error();
+  auto mark = context.shaders->program("common/fullscreen.vert", "forward/mark_drawn.frag", "", {"uBefore", "uAfter"});
+  if (!mark) return mark.error();
+  mask->mark_ = std::move(mark.value());
+  return mask;
+}
+
+void ForwardMask::clear() const {
+  const float nothing[4] = {0, 0, 0, 0};
+  glClearTexImage(drawn_.get(), 0, GL_RED, GL_FLOAT, nothing);
+}
+
+void ForwardMask::keepSceneColour(const GBufferLayout& layout) const { copyLightTarget(layout, before_.get()); }
+
+void ForwardMask::markChanges(PluginContext& context) const {
+  ScopedPass timed(context, "forward.mask");
+  context.beginFullscreenPass(framebuffer_.get());
+  mark_.use();
+  mark_.bindTexture("uBefore", before_.get());
+  mark_.bindTexture("uAfter", sceneColourTexture(context.layout));
   context.drawFullscreen();
 }
 

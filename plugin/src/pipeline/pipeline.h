@@ -236,6 +236,31 @@ class ForwardTarget {
   uint64_t bytes_ = 0;
 };
 
+// What the host's forward passes drew this frame, for the post passes that rebuild a pixel from its
+// neighbours' colours (`reconstruct`, `coverage`): they know the opaque surfaces' depth and normals, not a
+// transparent's or a particle's, and would spread its colour into pixels it never touched. beginForward()
+// keeps the scene colour as shade() left it; endForward() marks each pixel the forward passes changed. Any
+// host's forward passes, whatever their state: nothing of theirs needs to cooperate. Held while the layout
+// draws forward passes and an active technique readsForwardMask().
+class ForwardMask {
+ public:
+  static bool appliesTo(const GBufferLayout& layout) {
+    return layout.drawsForwardPasses && sceneColourTexture(layout) != 0;
+  }
+  static Result<std::unique_ptr<ForwardMask>> create(PluginContext& context);
+  void clear() const;                                       // at shade(): nothing drawn this frame yet
+  void keepSceneColour(const GBufferLayout& layout) const;  // at beginForward()
+  void markChanges(PluginContext& context) const;           // at endForward(), the forward colour in the scene colour
+  GLuint drawn() const { return drawn_.get(); }             // R8: 1 where a forward pass changed the pixel
+  uint64_t bytes() const { return bytes_; }
+
+ private:
+  GlTexture before_, drawn_;
+  GlFramebuffer framebuffer_;
+  ShaderProgram mark_;
+  uint64_t bytes_ = 0;
+};
+
 // Where the post passes (MethodInfo::filtersDisplay) render: a plugin-owned copy of the host's display
 // target in its format, copied back after each pass, and the bilinear sampler they read the display
 // with. The passes work on the display's stored (gamma-encoded) values: an sRGB-format display
