@@ -29,7 +29,7 @@ cmake -S "$consumer" -B "$work/package" -DCONSUME=package -DCMAKE_PREFIX_PATH="$
 cmake --build "$work/package" >/dev/null
 "$work/package/consumer"
 
-echo "== a window-lit renderer with retroaa put in: at most 60 lines, as docs/integration.md shows them"
+echo "== a window-lit renderer with retroaa put in: at most 70 lines, as docs/integration.md shows them"
 block() { sed -n "/retroaa $1: begin/,/retroaa $1: end/p" "$2" | sed 's/^ *//'; }
 for part in "call sites" glue; do
   diff <(block "$part" "$consumer/window_lit.cpp") <(block "$part" "$source/docs/integration.md") >/dev/null \
@@ -38,7 +38,7 @@ done
 glue=$(block glue "$consumer/window_lit.cpp" | grep -v '^//' | grep -cv '^$')
 sites=$(grep -c '// retroaa$' "$consumer/window_lit.cpp")
 echo "window_lit: $glue lines of glue + $sites changed lines in the renderer = $((glue + sites))"
-[ $((glue + sites)) -le 60 ] || { echo "window_lit: over 60 lines"; exit 1; }
+[ $((glue + sites)) -le 70 ] || { echo "window_lit: over 70 lines"; exit 1; }
 "$work/package/window_lit"
 "$work/package/window_lit" resolve+temporal reconstruct+temporal resolve+fxaa edge+coverage ssaa@supersample=3
 

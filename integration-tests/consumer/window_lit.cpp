@@ -5,14 +5,17 @@
 // checks that they agree and counts them): the glue between its markers, and the lines marked
 // `// retroaa` in frameWithRetroaa(), the renderer's frame with its calls.
 //
-// The window is an EGL pbuffer: a real default framebuffer, headless. Run with method specs
-// (`window_lit fxaa resolve+temporal`), or with none for every method of retroaa's registry; each is
-// checked: no GL error, `off` byte for byte the renderer without retroaa, every other method changes
-// some pixels and not most, the forward pass drawn where it is seen and hidden where it is not.
+// The window is an EGL pbuffer: a real default framebuffer, headless; it holds linear values. Run with
+// method specs (`window_lit fxaa resolve+temporal`), or with none for every method of retroaa's registry;
+// each is checked against the renderer's frame at 4x4 (docs/integration.md lists the checks): no GL error,
+// `off` byte for byte the renderer without retroaa, the forward pass drawn where it is seen and hidden where
+// it is not, anti-aliased by the multisampled G-buffer, spread by no post filter, and the models' edges at
+// least as good as without retroaa.
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 #include <retroaa/plugin.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -149,8 +152,9 @@ class Renderer {
  public:
   static constexpr float kFovY = 0.9f, kNear = 0.1f, kFar = 50.0f;
   GBuffer gbuffer;
-  float eye[3] = {0, 3, 6}, lightPositions[2][3] = {{0.6f, 1.4f, 2.2f}, {0.75f, 0.3f, -1.5f}};
+  float eye[3] = {0, 3, 6}, lightPositions[2][3] = {{0.2f, 1.4f, 2.2f}, {0.75f, 1.0f, -1.5f}};
   const float lightColours[2][3] = {{1.0f, 0.9f, 0.2f}, {0.2f, 0.6f, 1.0f}};
+  bool lightsShown = true;  // the forward pass's cubes (the check compares frames without them)
 
   Renderer(int width, int height) {
     gbuffer.width = width, gbuffer.height = height;
@@ -199,6 +203,7 @@ class Renderer {
     const Mat4 viewProjection = projection() * view();
     geometryPass(gbuffer.framebuffer, 1, viewProjection);
     lightingPass(0);
+    blitDepth(0);
     forwardPass(0, viewProjection);
   }
 
@@ -211,7 +216,7 @@ class Renderer {
     const auto drawModelsAgain = [&](GLuint target) { geometryPass(target, 1, viewProjection); };  // retroaa
     aa.resolve(*this, drawModelsAgain);                                                            // retroaa
     aa.check(aa.plugin->shade([&](GLuint target) { lightingPass(target); }));                      // retroaa
-    forwardPass(aa.window, viewProjection);                                                        // retroaa
+    forwardPass(aa.beginForward(gbuffer), viewProjection);                                         // retroaa
     aa.present();                                                                                  // retroaa
   }
   // ---------------------------------------------- retroaa call sites: end
@@ -247,17 +252,21 @@ class Renderer {
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
 
-  void forwardPass(GLuint target, const Mat4& viewProjection) {  // the lights' cubes, over the lit scene
+  void blitDepth(GLuint target) {  // the G-buffer's depth, for the forward pass to test against
     const int w = gbuffer.width, h = gbuffer.height;
     glBlitNamedFramebuffer(gbuffer.framebuffer, target, 0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+
+  void forwardPass(GLuint target, const Mat4& viewProjection) {  // the lights' cubes, over the lit scene
     glBindFramebuffer(GL_FRAMEBUFFER, target);
+    if (!lightsShown) return;
     glEnable(GL_DEPTH_TEST);
     glUseProgram(forwardProgram_);
     glUniformMatrix4fv(glGetUniformLocation(forwardProgram_, "viewProjection"), 1, GL_FALSE, viewProjection.m);
     glBindVertexArray(cubeArray_);
     for (int i = 0; i < 2; ++i) {
       const float* p = lightPositions[i];
-      const Mat4 model = placed(p[0], p[1], p[2], 0, 0.12f, 0.12f, 0.12f);
+      const Mat4 model = placed(p[0], p[1], p[2], 0, 0.25f, 0.25f, 0.25f);
       glUniformMatrix4fv(glGetUniformLocation(forwardProgram_, "model"), 1, GL_FALSE, model.m);
       glUniform3fv(glGetUniformLocation(forwardProgram_, "albedo"), 1, lightColours[i]);
       glDrawArrays(GL_TRIANGLES, 0, 36);
@@ -319,6 +328,7 @@ struct RetroaaGlue {
     d.layout.gbufferFramebuffer = g.framebuffer, d.layout.depthStencilRenderbuffer = g.depth;
     d.layout.lightFramebuffer = d.layout.displayFramebuffer = window;
     d.layout.lightTexture = d.layout.displayTexture = display;
+    d.layout.drawsForwardPasses = true, d.layout.displayEncoding = retroaa::DisplayEncoding::Linear;  // no sRGB
     d.log = [](retroaa::LogLevel, const std::string& m) { std::fprintf(stderr, "retroaa: %s\n", m.c_str()); };
     auto created = retroaa::Plugin::create(d);
     if (created) plugin = std::move(created.value());
@@ -341,7 +351,16 @@ struct RetroaaGlue {
     check(plugin->resolve(frame));
     if (const GLuint target = plugin->prepassFramebuffer()) drawModelsAgain(target);  // coverage, reconstruct
   }
+  GLuint beginForward(const GBuffer& g) {  // multisampled over the G-buffer's depth, or the window: depth blitted
+    const retroaa::Result<retroaa::GLuintHandle> target = plugin->beginForward();
+    if (target && target.value() != window) return target.value();
+    check(target ? retroaa::Status() : retroaa::Status(target.error()));
+    glBlitNamedFramebuffer(g.framebuffer, window, 0, 0, width, height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT,
+                           GL_NEAREST);
+    return window;
+  }
   void present() {
+    check(plugin->endForward());
     check(plugin->post());
     glBlitNamedFramebuffer(window, 0, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
@@ -403,18 +422,92 @@ void project(const Mat4& viewProjection, const float p[3], int width, int height
   x = int((clip[0] / clip[3] * 0.5f + 0.5f) * width), y = int((clip[1] / clip[3] * 0.5f + 0.5f) * height);
 }
 
+// The window's pixels in three kinds, from the renderer's own frame at 4× width and height (its 4×4 blocks):
+// the forward pass's edges (blocks part cube, part scene), the models' edges (no cube; a depth step within the
+// block), and the scene around the cubes (no cube, within 6 pixels of one). The reference is the blocks' mean.
+struct Reference {
+  std::vector<double> colour;  // rgb per pixel, stored values (the display is linear: means as stored)
+  std::vector<uint8_t> forwardEdge, modelEdge, nearForward;
+};
+
+Reference referenceFrame(int width, int height, const float (&cubeColours)[2][3]) {
+  constexpr int kScale = 4;
+  Renderer big(width * kScale, height * kScale);
+  big.frameWithoutRetroaa();
+  const std::vector<uint8_t> image = readWindow(width * kScale, height * kScale);
+  std::vector<float> depth(image.size() / 4);
+  glReadPixels(0, 0, width * kScale, height * kScale, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  Reference r;
+  r.colour.assign(size_t(width) * height * 3, 0.0);
+  r.forwardEdge.assign(size_t(width) * height, 0), r.modelEdge = r.nearForward = r.forwardEdge;
+  std::vector<int> cubes(size_t(width) * height, 0);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const size_t pixel = size_t(y) * width + x;
+      float nearest = 1e9f, farthest = 0;
+      for (int j = 0; j < kScale; ++j)
+        for (int i = 0; i < kScale; ++i) {
+          const size_t sub = size_t(y * kScale + j) * width * kScale + x * kScale + i;
+          bool cube = false;
+          for (const auto& c : cubeColours) {
+            int distance = 0;
+            for (int k = 0; k < 3; ++k) distance += std::abs(image[sub * 4 + k] - int(std::lround(c[k] * 255)));
+            cube = cube || distance <= 3;
+          }
+          cubes[pixel] += cube;
+          for (int k = 0; k < 3; ++k) r.colour[pixel * 3 + k] += image[sub * 4 + k] / double(kScale * kScale);
+          const float n = Renderer::kNear, f = Renderer::kFar;  // window depth to metres
+          const float metres = depth[sub] >= 1.0f ? 1e6f : 2 * n * f / (f + n - (2 * depth[sub] - 1) * (f - n));
+          nearest = std::min(nearest, metres), farthest = std::max(farthest, metres);
+        }
+      r.forwardEdge[pixel] = cubes[pixel] > 0 && cubes[pixel] < kScale * kScale;
+      r.modelEdge[pixel] = cubes[pixel] == 0 && farthest > nearest * 1.05f;
+    }
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int j = std::max(0, y - 6); j <= std::min(height - 1, y + 6) && cubes[size_t(y) * width + x] == 0; ++j)
+        for (int i = std::max(0, x - 6); i <= std::min(width - 1, x + 6); ++i)
+          r.nearForward[size_t(y) * width + x] |= cubes[size_t(j) * width + i] > 0;
+  return r;
+}
+
+// PSNR (dB, stored values) of `image` against the reference over the pixels `where` marks.
+double psnr(const std::vector<uint8_t>& image, const Reference& r, const std::vector<uint8_t>& where) {
+  double sum = 0;
+  size_t count = 0;
+  for (size_t pixel = 0; pixel < where.size(); ++pixel)
+    for (int k = 0; k < 3 && where[pixel]; ++k, ++count) {
+      const double e = image[pixel * 4 + k] - r.colour[pixel * 3 + k];
+      sum += e * e;
+    }
+  return count == 0 ? 0 : 10 * std::log10(255.0 * 255.0 / std::max(sum / double(count), 1e-12));
+}
+
+// The method a spec names first (`resolve` of `resolve+fxaa@samples=8`).
+std::string baseMethod(const std::string& spec) { return spec.substr(0, spec.find_first_of("+@")); }
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const int width = 192, height = 144;
-  if (!makeWindow(width, height)) return std::fprintf(stderr, "window_lit: no EGL pbuffer with GL 4.5 core\n"), 1;
+  // The window holds the reference at 4× too; the renderer draws in its lower-left corner.
+  if (!makeWindow(width * 4, height * 4))
+    return std::fprintf(stderr, "window_lit: no EGL pbuffer with GL 4.5 core\n"), 1;
   std::vector<std::string> specs(argv + 1, argv + argc);
   if (specs.empty())
     for (const retroaa::MethodInfo& method : retroaa::methodTable()) specs.push_back(method.name);
 
   Renderer renderer(width, height);
+  const Reference reference = referenceFrame(width, height, renderer.lightColours);
+  renderer.lightsShown = false;
+  renderer.frameWithoutRetroaa();
+  const std::vector<uint8_t> stockWithoutLights = readWindow(width, height);
+  renderer.lightsShown = true;
   renderer.frameWithoutRetroaa();
   const std::vector<uint8_t> stock = readWindow(width, height);
+  const double stockForward = psnr(stock, reference, reference.forwardEdge);
+  const double stockModel = psnr(stock, reference, reference.modelEdge);
+  const double stockNear = psnr(stock, reference, reference.nearForward);
   int lightPixel[2][2];
   for (int i = 0; i < 2; ++i)
     project(renderer.projection() * renderer.view(), renderer.lightPositions[i], width, height, lightPixel[i][0],
@@ -423,11 +516,26 @@ int main(int argc, char** argv) {
   RetroaaGlue aa;
   if (!aa.create(renderer.gbuffer)) return 1;
   int failures = 0;
-  std::printf("%-22s %8s %10s %12s\n", "method", "changed", "evals/px", "plugin MiB");
+  std::printf(
+      "PSNR in dB against the renderer at 4x4, on the forward pass's edges, the models' edges and the scene "
+      "within 6 px of the forward pass\n%-22s %8s %10s %12s %9s %9s %9s\n",
+      "method", "changed", "evals/px", "plugin MiB", "forward", "models", "near fwd");
+  std::printf("%-22s %8s %10s %12s %9.2f %9.2f %9.2f\n", "(without retroaa)", "", "", "", stockForward, stockModel,
+              stockNear);
+  const auto render = [&](bool lightsShown) {
+    renderer.lightsShown = lightsShown;
+    for (int frame = 0; frame < 16; ++frame) renderer.frameWithRetroaa(aa);  // `temporal` converges
+    return readWindow(width, height);
+  };
   for (const std::string& spec : specs) {
     if (!aa.select(spec)) return 1;
-    for (int frame = 0; frame < 16; ++frame) renderer.frameWithRetroaa(aa);  // `temporal` converges
-    const std::vector<uint8_t> image = readWindow(width, height);
+    // The post filters that rebuild pixels from the opaque surfaces' depth (coverage, reconstruct; alone: a
+    // stacked temporal, fxaa or smaa filters the cubes' edges as it should) draw the forward pass into the window
+    // as the renderer does: outside the pixels it covers there, nothing of the cubes may spread into the scene.
+    const bool filtersAfterForward =
+        (baseMethod(spec) == "coverage" || baseMethod(spec) == "reconstruct") && spec.find('+') == std::string::npos;
+    const std::vector<uint8_t> withoutLights = filtersAfterForward ? render(false) : std::vector<uint8_t>();
+    const std::vector<uint8_t> image = render(true);
     const retroaa::Stats stats = aa.plugin->waitForStats();
     size_t changed = 0;  // pixels more than 8/255 from the renderer without retroaa
     for (size_t i = 0; i < image.size(); i += 4)
@@ -445,15 +553,37 @@ int main(int argc, char** argv) {
     if (spec == "off" && image != stock) failed("`off` is not the renderer without retroaa, byte for byte");
     if (spec != "off" && (changed == 0 || changed * 6 > size_t(width) * height))
       failed("changed no pixel, or more than a sixth of them");
-    for (int i = 0; i < 2; ++i) {  // light 0 in view; light 1 behind the green cube
+    for (int i = 0; i < 2; ++i) {  // light 0 in view; light 1's centre behind the green cube
       const uint8_t* pixel = &image[(size_t(lightPixel[i][1]) * width + lightPixel[i][0]) * 4];
       int distance = 0;
       for (int c = 0; c < 3; ++c) distance += std::abs(pixel[c] - int(std::lround(renderer.lightColours[i][c] * 255)));
       if ((i == 0) != (distance <= 6))
         failed(i == 0 ? "the forward pass is missing" : "the forward pass shows through");
     }
-    std::printf("%-22s %8zu %10.3f %12.2f\n", spec.c_str(), changed, stats.evaluationsPerPixel(),
-                stats.bytesHeld / 1048576.0);
+    const double forward = psnr(image, reference, reference.forwardEdge);
+    const double models = psnr(image, reference, reference.modelEdge);
+    const double nearForward = psnr(image, reference, reference.nearForward);
+    // Pixels outside the cubes' own that the cubes changed to something else than unfiltered (where a pixel's
+    // filter would read a cube, it is left as the renderer drew it).
+    int spread = 0;
+    for (size_t i = 0; filtersAfterForward && i < image.size(); i += 4)
+      for (size_t c = 0; c < 3 && std::memcmp(&stock[i], &stockWithoutLights[i], 3) == 0; ++c)
+        if (std::abs(int(image[i + c]) - int(withoutLights[i + c])) > 1 && std::abs(image[i + c] - stock[i + c]) > 1) {
+          ++spread;
+          break;
+        }
+    if (spread > 0) failed("the forward pass's colour spread into pixels it does not cover");
+    // The multisampled G-buffer's methods draw the forward pass multisampled (ssaa's supersampled one does not).
+    const std::string base = baseMethod(spec);
+    const bool multisamplesForward = base == "resolve" || base == "edge" || base == "adaptive" || base == "aggregate" ||
+                                     base == "per-sample" || base == "smaa-s2x";
+    if (multisamplesForward && forward < stockForward + 6) failed("the forward pass's edges are not anti-aliased");
+    // `resolve` averages the samples at one depth, normals included, where a cube stands on the floor: its
+    // lit crease is neither surface's (docs/methods/resolve.md).
+    if (base != "resolve" && models < stockModel - 0.1) failed("the models' edges are worse than without retroaa");
+    std::printf("%-22s %8zu %10.3f %12.2f %9.2f %9.2f %9.2f%s\n", spec.c_str(), changed, stats.evaluationsPerPixel(),
+                stats.bytesHeld / 1048576.0, forward, models, nearForward,
+                filtersAfterForward ? (" spread " + std::to_string(spread) + " px").c_str() : "");
   }
   if (failures) return 1;
   std::printf("window_lit: %zu methods, each checked\n", specs.size());
