@@ -48,16 +48,12 @@ class EveryPixelTechnique : public retroaa::Technique {
   retroaa::ShaderProgram program_;
 };
 
-void registerTestTechnique() {
-  static const bool once = [] {
+// Registered while the binary starts, before any test reads the registry (which fixes it).
+const bool kTestTechniqueRegistered =
     retroaa::registerTechnique(retroaa::TechniqueRow::named(kTestMethod, "test-every-pixel", "every sample lit (test)")
                                    .needsMultisampling()
                                    .uses(retroaa::kStorageMsaaGBuffer | retroaa::kStorageSlices)
                                    .createdBy(EveryPixelTechnique::create));
-    return true;
-  }();
-  (void)once;
-}
 // -------------------------------------------------------------------------------------------------
 
 void expectError(const retroaa::Error& error, retroaa::ErrorCode code, const std::string& fragment) {
@@ -75,7 +71,7 @@ retroaa::Description describedHost(const PatchedHost& host) {
 }  // namespace
 
 TEST(Registry, ATechniqueInOneFileAndOneRowRunsThroughEveryLayer) {
-  registerTestTechnique();
+  ASSERT_TRUE(kTestTechniqueRegistered);
   // Config: parsed, printed and listed by name.
   retroaa::Config config;
   ASSERT_TRUE(retroaa::applySetting(config, "method", "test-every-pixel"));
@@ -381,4 +377,13 @@ TEST(PluginErrors, DepthEncodingsOutsideTheirDomainAreInvalid) {
   created = retroaa::Plugin::create(description);
   ASSERT_FALSE(created);
   expectError(created.error(), retroaa::ErrorCode::InvalidLayout, "knee must be a positive number");
+}
+
+TEST(Registry, IsFixedOnceRead) {
+  const size_t rows = retroaa::techniqueRegistry().size();
+  const size_t methods = retroaa::methodTable().size();
+  EXPECT_FALSE(retroaa::registerTechnique(
+      retroaa::TechniqueRow::named(retroaa::Method(uint8_t(kTestMethod) + 1), "test-too-late", "registered late")));
+  EXPECT_EQ(retroaa::techniqueRegistry().size(), rows);
+  EXPECT_EQ(retroaa::methodTable().size(), methods);
 }

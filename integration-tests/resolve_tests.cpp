@@ -178,11 +178,10 @@ TEST(Plugin, EveryCallRestoresTheHostsGlState) {
   PatchedHost host("default", 64, 48);
   host.render("off");  // leaves one of the host's (live) programs current
   retroaa::Plugin& plugin = host.hooks->plugin();
-  retroaa::Config config;
-  config.method = retroaa::Method::Resolve;
-  config.fxaa = true;
-  config.resolveCompute = true;  // writes through image units 0..5
-  ASSERT_TRUE(plugin.reconfigure(config));
+  const host::HostTargets& targets = host.renderer->targets();
+  GLuint buffers[3] = {};  // the host's own atomic counter, storage and uniform buffers
+  glCreateBuffers(3, buffers);
+  for (GLuint buffer : buffers) glNamedBufferStorage(buffer, 1024, nullptr, 0);
   // Unusual host state, as a state-caching engine might leave it.
   glViewport(3, 4, 20, 10);
   glEnable(GL_BLEND);
@@ -192,33 +191,64 @@ TEST(Plugin, EveryCallRestoresTheHostsGlState) {
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 3, 0x0F);
   glDepthFunc(GL_GEQUAL);
-  glBindTextureUnit(0, host.renderer->targets().color);
-  glBindTextureUnit(7, host.renderer->targets().normal);
+  glBindTextureUnit(0, targets.color);
+  glBindTextureUnit(7, targets.normal);
   glActiveTexture(GL_TEXTURE5);
-  glBindImageTexture(3, host.renderer->targets().color, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+  glBindImageTexture(3, targets.color, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+  glPixelStorei(GL_PACK_ALIGNMENT, 8);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+  glBindBufferRange(GL_ATOMIC_COUNTER_BUFFER, 0, buffers[0], 256, 512);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[1]);
+  glBindBufferRange(GL_UNIFORM_BUFFER, 1, buffers[2], 0, 256);
+  glBindBuffer(GL_UNIFORM_BUFFER, buffers[1]);
   const retroaa::GlStateSnapshot before = retroaa::GlStateSnapshot::capture();
-  auto expectUnchanged = [&](const char* call) {
+  auto expectUnchanged = [&](const std::string& call) {
     EXPECT_TRUE(retroaa::GlStateSnapshot::capture() == before) << "GL state changed by " << call;
   };
-  glBindFramebuffer(GL_FRAMEBUFFER, plugin.geometryFramebuffer());
-  glBindFramebuffer(GL_FRAMEBUFFER, before.drawFramebuffer);
-  retroaa::FrameInfo frame;
-  ASSERT_TRUE(plugin.resolve(frame));
-  expectUnchanged("resolve");
-  ASSERT_TRUE(plugin.shade([](retroaa::GLuintHandle target) {
-    glBindFramebuffer(GL_FRAMEBUFFER, target);  // the host's lighting changes state as it likes
-    glDisable(GL_BLEND);
-  }));
-  expectUnchanged("shade");
-  ASSERT_TRUE(plugin.post());
-  expectUnchanged("post");
-  config.method = retroaa::Method::Off;
-  ASSERT_TRUE(plugin.reconfigure(config));
-  expectUnchanged("reconfigure");
-  ASSERT_TRUE(plugin.resize(patch::describeHostGBuffer(host.renderer->targets())));
-  expectUnchanged("resize");
+  // The compute resolve writes through image units 0..5; edge's slices read their counts back; temporal binds
+  // an atomic counter.
+  for (const char* spec : {"resolve+fxaa@resolve_compute=on", "edge+temporal"}) {
+    retroaa::Config config;
+    ASSERT_TRUE(retroaa::applyMethodSpec(config, spec));
+    ASSERT_TRUE(plugin.reconfigure(config));
+    expectUnchanged(std::string(spec) + ": reconfigure");
+    glBindFramebuffer(GL_FRAMEBUFFER, plugin.geometryFramebuffer());
+    glBindFramebuffer(GL_FRAMEBUFFER, before.drawFramebuffer);
+    retroaa::FrameInfo frame;
+    ASSERT_TRUE(plugin.resolve(frame));
+    expectUnchanged(std::string(spec) + ": resolve");
+    ASSERT_TRUE(plugin.shade([](retroaa::GLuintHandle target) {
+      glBindFramebuffer(GL_FRAMEBUFFER, target);  // the host's lighting changes state as it likes
+      glDisable(GL_BLEND);
+    }));
+    expectUnchanged(std::string(spec) + ": shade");
+    ASSERT_TRUE(plugin.post());
+    expectUnchanged(std::string(spec) + ": post");
+    plugin.stats();
+    expectUnchanged(std::string(spec) + ": stats");
+    plugin.waitForStats();
+    expectUnchanged(std::string(spec) + ": waitForStats");
+    EXPECT_FALSE(plugin.readSliceCounts().empty());
+    expectUnchanged(std::string(spec) + ": readSliceCounts");
+    ASSERT_TRUE(plugin.resize(patch::describeHostGBuffer(targets)));
+    expectUnchanged(std::string(spec) + ": resize");
+  }
+  {
+    retroaa::Description description;
+    description.layout = patch::describeHostGBuffer(targets);
+    ASSERT_TRUE(retroaa::applyMethodSpec(description.config, "edge+temporal"));
+    auto created = retroaa::Plugin::create(description);
+    ASSERT_TRUE(created);
+    expectUnchanged("create");
+  }
+  expectUnchanged("the plugin's destruction");
+  retroaa::Config off;
+  ASSERT_TRUE(plugin.reconfigure(off));
   before.restore();
   glBindImageTexture(3, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glDeleteBuffers(3, buffers);  // unbinds them everywhere
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);

@@ -16,6 +16,52 @@ void setEnabled(GLenum capability, GLboolean enabled) {
   else
     glDisable(capability);
 }
+// The generic binding query and the indexed ones of an indexed buffer target, and how many indices it has.
+struct BufferQueries {
+  GLenum generic, buffer, start, size, count;
+};
+BufferQueries queriesOf(GLenum target) {
+  switch (target) {
+    case GL_ATOMIC_COUNTER_BUFFER:
+      return {GL_ATOMIC_COUNTER_BUFFER_BINDING, GL_ATOMIC_COUNTER_BUFFER_BINDING, GL_ATOMIC_COUNTER_BUFFER_START,
+              GL_ATOMIC_COUNTER_BUFFER_SIZE, GL_MAX_ATOMIC_COUNTER_BUFFER_BINDINGS};
+    case GL_SHADER_STORAGE_BUFFER:
+      return {GL_SHADER_STORAGE_BUFFER_BINDING, GL_SHADER_STORAGE_BUFFER_BINDING, GL_SHADER_STORAGE_BUFFER_START,
+              GL_SHADER_STORAGE_BUFFER_SIZE, GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS};
+    default:
+      return {GL_UNIFORM_BUFFER_BINDING, GL_UNIFORM_BUFFER_BINDING, GL_UNIFORM_BUFFER_START, GL_UNIFORM_BUFFER_SIZE,
+              GL_MAX_UNIFORM_BUFFER_BINDINGS};
+  }
+}
+
+GlStateSnapshot::IndexedBuffers captureBuffers(GLenum target) {
+  const BufferQueries q = queriesOf(target);
+  GlStateSnapshot::IndexedBuffers buffers;
+  buffers.generic = getInt(q.generic);
+  buffers.ranges.resize(size_t(std::min(GlStateSnapshot::kBufferIndices, getInt(q.count))));
+  for (GLuint index = 0; index < buffers.ranges.size(); ++index) {
+    GlStateSnapshot::BufferRange& range = buffers.ranges[index];
+    glGetIntegeri_v(q.buffer, index, &range.buffer);
+    glGetInteger64i_v(q.start, index, &range.start);
+    glGetInteger64i_v(q.size, index, &range.size);
+  }
+  return buffers;
+}
+
+// A name the host deleted while it was bound is gone once unbound: it restores to 0.
+GLuint liveBuffer(GLint name) { return name != 0 && glIsBuffer(GLuint(name)) ? GLuint(name) : 0; }
+
+void restoreBuffers(GLenum target, const GlStateSnapshot::IndexedBuffers& buffers) {
+  for (GLuint index = 0; index < buffers.ranges.size(); ++index) {  // each also sets the generic binding
+    const GlStateSnapshot::BufferRange& range = buffers.ranges[index];
+    const GLuint buffer = liveBuffer(range.buffer);
+    if (buffer && range.size > 0)
+      glBindBufferRange(target, index, buffer, GLintptr(range.start), GLsizeiptr(range.size));
+    else
+      glBindBufferBase(target, index, buffer);
+  }
+  glBindBuffer(target, liveBuffer(buffers.generic));
+}
 }  // namespace
 
 GlStateSnapshot GlStateSnapshot::capture() {
@@ -80,6 +126,11 @@ GlStateSnapshot GlStateSnapshot::capture() {
     glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, unit, &image.access);
     glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, unit, &image.format);
   }
+  s.packAlignment = getInt(GL_PACK_ALIGNMENT);
+  s.unpackAlignment = getInt(GL_UNPACK_ALIGNMENT);
+  s.atomicCounterBuffers = captureBuffers(GL_ATOMIC_COUNTER_BUFFER);
+  s.shaderStorageBuffers = captureBuffers(GL_SHADER_STORAGE_BUFFER);
+  s.uniformBuffers = captureBuffers(GL_UNIFORM_BUFFER);
   return s;
 }
 
@@ -132,6 +183,11 @@ void GlStateSnapshot::restore() const {
     glBindImageTexture(unit, image.texture == 0 || glIsTexture(GLuint(image.texture)) ? GLuint(image.texture) : 0,
                        image.level, GLboolean(image.layered), image.layer, GLenum(image.access), GLenum(image.format));
   }
+  glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
+  restoreBuffers(GL_ATOMIC_COUNTER_BUFFER, atomicCounterBuffers);
+  restoreBuffers(GL_SHADER_STORAGE_BUFFER, shaderStorageBuffers);
+  restoreBuffers(GL_UNIFORM_BUFFER, uniformBuffers);
 }
 
 bool GlStateSnapshot::operator==(const GlStateSnapshot& o) const {
@@ -152,7 +208,9 @@ bool GlStateSnapshot::operator==(const GlStateSnapshot& o) const {
          backStencilFail == o.backStencilFail && backStencilPassDepthFail == o.backStencilPassDepthFail &&
          backStencilPassDepthPass == o.backStencilPassDepthPass && minSampleShading == o.minSampleShading &&
          textureBindings2D == o.textureBindings2D && textureBindings2DMultisample == o.textureBindings2DMultisample &&
-         samplerBindings == o.samplerBindings && imageBindings == o.imageBindings;
+         samplerBindings == o.samplerBindings && imageBindings == o.imageBindings && packAlignment == o.packAlignment &&
+         unpackAlignment == o.unpackAlignment && atomicCounterBuffers == o.atomicCounterBuffers &&
+         shaderStorageBuffers == o.shaderStorageBuffers && uniformBuffers == o.uniformBuffers;
 }
 
 }  // namespace retroaa

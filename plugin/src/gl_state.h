@@ -35,9 +35,24 @@ struct GlStateSnapshot {
     }
   };
   std::vector<ImageBinding> imageBindings;
+  GLint packAlignment = 4, unpackAlignment = 4;
+  // Buffer bindings: the generic one of each indexed target, and its first kBufferIndices indexed ranges
+  // (the plugin's passes bind atomic counters at 0; a host's SSBOs and uniform blocks live there too).
+  struct BufferRange {
+    GLint buffer = 0;
+    GLint64 start = 0, size = 0;  // size 0: the whole buffer (glBindBufferBase)
+    bool operator==(const BufferRange& o) const { return buffer == o.buffer && start == o.start && size == o.size; }
+  };
+  struct IndexedBuffers {
+    GLint generic = 0;
+    std::vector<BufferRange> ranges;
+    bool operator==(const IndexedBuffers& o) const { return generic == o.generic && ranges == o.ranges; }
+  };
+  IndexedBuffers atomicCounterBuffers, shaderStorageBuffers, uniformBuffers;
 
   static constexpr int kUnits = 16;
   static constexpr int kImageUnits = kMaxAttachments + 1;  // the compute resolve's: the attachments and its depth
+  static constexpr int kBufferIndices = 4;
   static GlStateSnapshot capture();
   void restore() const;
   bool operator==(const GlStateSnapshot& other) const;

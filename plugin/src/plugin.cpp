@@ -656,6 +656,7 @@ Status Plugin::resize(const GBufferLayout& layout) {
 const Config& Plugin::config() const { return impl_->context.config; }
 
 Stats Plugin::stats() const {
+  GlStateGuard guard;
   const PluginContext& context = impl_->context;
   context.statistics->collect();
   Stats stats = context.frameStats;
@@ -685,6 +686,7 @@ Stats Plugin::waitForStats() {
 }
 
 std::vector<uint8_t> Plugin::readSliceCounts() const {
+  GlStateGuard guard;  // the read's pack alignment
   if (impl_->slices) return impl_->slices->readCounts();
   return std::vector<uint8_t>(impl_->context.pixelCount(), 1);
 }

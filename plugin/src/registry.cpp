@@ -4,6 +4,8 @@
 // what the plugin allocates) reads this table.
 #include "technique.h"
 
+#include <atomic>
+
 namespace retroaa {
 
 // The factories, each defined in its technique's file.
@@ -31,6 +33,13 @@ std::vector<Key> smaaKeys();
 namespace {
 
 constexpr uint32_t kSliced = kStorageMsaaGBuffer | kStorageSlices;
+
+// Whether anything has read the registry: from then on it is fixed (registerTechnique refuses), so every
+// plugin, tool and thread sees one table.
+std::atomic<bool>& registryRead() {
+  static std::atomic<bool> read{false};
+  return read;
+}
 
 std::vector<TechniqueRow>& rows() {
   using Row = TechniqueRow;
@@ -114,10 +123,13 @@ std::vector<TechniqueRow>& rows() {
 
 }  // namespace
 
-const std::vector<TechniqueRow>& techniqueRegistry() { return rows(); }
+const std::vector<TechniqueRow>& techniqueRegistry() {
+  registryRead() = true;
+  return rows();
+}
 
 const TechniqueRow* findTechnique(Method method) {
-  for (const TechniqueRow& row : rows())
+  for (const TechniqueRow& row : techniqueRegistry())
     if (row.info.method == method) return &row;
   return nullptr;
 }
@@ -125,18 +137,21 @@ const TechniqueRow* findTechnique(Method method) {
 // Post-process AA needs no samples: the best a context without multisampling can do.
 Method fallbackWithoutMultisampling() { return Method::Fxaa; }
 
-void registerTechnique(const TechniqueRow& row) { rows().push_back(row); }
+bool registerTechnique(const TechniqueRow& row) {
+  if (registryRead()) return false;
+  rows().push_back(row);
+  return true;
+}
 
 const std::vector<MethodInfo>& methodTable() {
-  // Rebuilt when a row is registered; the rows are few.
-  static std::vector<MethodInfo> infos;
-  if (infos.size() != rows().size()) {
-    infos.clear();
-    for (const TechniqueRow& row : rows()) {
-      infos.push_back(row.info);
-      infos.back().filtersDisplay = row.storage & kStoragePostTarget;
+  static const std::vector<MethodInfo> infos = [] {  // the registry is fixed once read
+    std::vector<MethodInfo> built;
+    for (const TechniqueRow& row : techniqueRegistry()) {
+      built.push_back(row.info);
+      built.back().filtersDisplay = row.storage & kStoragePostTarget;
     }
-  }
+    return built;
+  }();
   return infos;
 }
 

@@ -166,7 +166,8 @@ const std::vector<TechniqueRow>& techniqueRegistry();
 const TechniqueRow* findTechnique(Method method);
 // What a method that needs multisampling becomes on a context without it.
 Method fallbackWithoutMultisampling();
-// Adds a row (tests: a technique that lives in a test file). Not thread-safe; before any plugin exists.
-void registerTechnique(const TechniqueRow& row);
+// Adds a row (tests: a technique that lives in a test file) before anything reads the registry, i.e. during
+// static initialisation; afterwards the registry is fixed and this returns false. Not thread-safe.
+bool registerTechnique(const TechniqueRow& row);
 
 }  // namespace retroaa

@@ -270,8 +270,7 @@ class TemporalTechnique : public Technique {
     program_.set("uHistoryValid", valid ? 1.0f : 0.0f);
     program_.setDepthPlanes(context);
     glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, nonFiniteCounter_.get());
-    context.drawFullscreen();
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, 0);
+    context.drawFullscreen();  // post()'s state guard gives the host its atomic-counter binding back
     reportNonFinite(context);
     historyIndex_ = next;
     framesAccumulated_ = valid ? framesAccumulated_ + 1 : 1;
