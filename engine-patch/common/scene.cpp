@@ -331,28 +331,68 @@ size_t Scene::triangleCount() const {
 
 namespace {
 
-// The scene's JSON, refusing nesting past what a scene needs before it costs memory.
-json parseSceneDocument(const std::string& jsonText, const std::string& fileName) {
-  json document;
-  // A scene is a few levels deep; a file of nested arrays under the size cap would otherwise take
-  // gigabytes and seconds before any error. The parser stops at the first value past the depth.
+// What a scene's text may hold before it is parsed into a document, found in one linear pass over the text
+// (written by hand: nlohmann-json checks neither, and its callback parser, which could, rescans each array
+// after every object it closes, so 10^6 objects took minutes): nesting no deeper than a scene needs, and no
+// more elements in the root's "objects" than a scene may have. Either would otherwise cost gigabytes and
+// seconds before its error. Syntax is the parser's to judge.
+void scanSceneText(const std::string& text, const std::string& fileName) {
   constexpr int kMaxSceneNesting = 32;
-  bool tooDeep = false;
+  int depth = 0;
+  bool inString = false, escaped = false, afterColon = false;
+  std::string lastRootString;  // the last string read directly in the root object (a key, before ':')
+  size_t stringStart = 0;
+  int objectsDepth = -1;  // the depth inside the root's "objects" array, while in it
+  size_t objects = 0;     // its elements so far
+  bool objectsEmpty = true;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"') {
+        inString = false;
+        if (depth == 1) lastRootString.assign(text, stringStart, i - stringStart);
+      }
+      continue;
+    }
+    if (c == ' ' || c == '\n' || c == '\r' || c == '\t') continue;
+    if (objectsDepth >= 0 && depth == objectsDepth && c != ']' && c != ',') objectsEmpty = false;
+    if (c == '"') {
+      inString = true, stringStart = i + 1;
+    } else if (c == '[' || c == '{') {
+      if (c == '[' && depth == 1 && afterColon && lastRootString == "objects") objectsDepth = depth + 1;
+      if (++depth > kMaxSceneNesting)
+        throw SceneError(fileName, "(document)",
+                         "nested more than " + std::to_string(kMaxSceneNesting) + " levels deep");
+    } else if (c == ']' || c == '}') {
+      if (depth == objectsDepth) objectsDepth = -1;
+      depth = std::max(depth - 1, 0);
+    } else if (c == ',' && depth == objectsDepth) {
+      ++objects;
+    }
+    afterColon = c == ':';
+    if (objectsDepth < 0 && !objectsEmpty) {  // the "objects" array closed: its count is known
+      objects += 1;
+      if (objects > kMaxSceneObjects)
+        throw SceneError(
+            fileName, "$.objects",
+            "has " + std::to_string(objects) + " objects (at most " + std::to_string(kMaxSceneObjects) + ")");
+      objects = 0, objectsEmpty = true;
+    }
+  }
+}
+
+// The scene's JSON, once its text is known to be bounded (scanSceneText).
+json parseSceneDocument(const std::string& jsonText, const std::string& fileName) {
+  scanSceneText(jsonText, fileName);
   try {
-    document = json::parse(jsonText, [&tooDeep](int depth, json::parse_event_t event, json&) {
-      if (depth > kMaxSceneNesting &&
-          (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start))
-        tooDeep = true;
-      if (tooDeep) throw std::length_error("nesting");
-      return true;
-    });
+    return json::parse(jsonText);
   } catch (const json::exception& e) {  // syntax errors, and numbers beyond double's range
     throw SceneError(fileName, "(document)", std::string("not valid JSON: ") + e.what());
-  } catch (const std::length_error&) {
-    if (!tooDeep) throw;
-    throw SceneError(fileName, "(document)", "nested more than " + std::to_string(kMaxSceneNesting) + " levels deep");
   }
-  return document;
 }
 
 // "materials" (optional when every object is a model that keeps its own), within the texture budget.
