@@ -359,6 +359,29 @@ TEST(WholeFrame, SampleShadingIsZeroWhereNothingDrawsMultisampled) {
   auto hooks = frame.attach(config);
   ASSERT_TRUE(hooks);
   EXPECT_EQ(hooks->plugin().sampleShading(), 0.0f);
+  EXPECT_EQ(hooks->plugin().textureLodBias(), 0.0f);
+}
+
+TEST(WholeFrame, SampleShadingSharpensTheMipsByTheSamplesShaded) {
+  // Each pixel averages the reads of the samples shaded, all at the pixel's mip: the mip of a render at √k
+  // times the size is log2(√k) finer.
+  SyntheticFrame frame(kWidth, kHeight);
+  auto hooks = frame.attach(retroaa::Method::PerSample);
+  ASSERT_TRUE(hooks);
+  retroaa::Plugin& plugin = hooks->plugin();
+  const std::pair<const char*, float> cases[] = {{"per-sample", 0.0f},
+                                                 {"per-sample@sample_shading=1", -1.0f},
+                                                 {"per-sample@sample_shading=0.5", -0.5f},
+                                                 {"per-sample@sample_shading=0.25", 0.0f},  // one sample shaded
+                                                 {"temporal@temporal_lod_bias=-0.5", -0.5f},
+                                                 {"edge+temporal@sample_shading=1@temporal_lod_bias=-0.5", -1.0f},
+                                                 {"edge+temporal@sample_shading=0.5@temporal_lod_bias=-2", -2.0f}};
+  for (const auto& [spec, bias] : cases) {
+    retroaa::Config config;
+    ASSERT_TRUE(retroaa::applyMethodSpec(config, spec));
+    ASSERT_TRUE(plugin.reconfigure(config));
+    EXPECT_FLOAT_EQ(plugin.textureLodBias(), bias) << spec;
+  }
 }
 
 }  // namespace

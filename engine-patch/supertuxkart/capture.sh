@@ -30,6 +30,7 @@ timeout "${RETROAA_STK_TIMEOUT:-1800}" xvfb-run -a -s "-screen 0 ${width}x${heig
   "$binary" --screensize="${width}x${height}" --windowed --no-sound --no-start-screen --race-now \
   --track="$track" --numkarts=1 --laps=1 --seed=1 --enable-dynamic-lights --disable-dof --disable-motion-blur \
   --disable-light-shaft --disable-ssao --disable-glow --disable-bloom --disable-ibl --disable-particles --shadows=0 "$mlaa" \
+  --anisotropic=0 \
   --aa-capture="$out" --aa-capture-frame="$frame" --aa-methods="$methods" --aa-fixed-dt=0.0166667 \
   --aa-timed-frames="$timed" >"$out/stk.log" 2>&1 || status=$?
 if [ "$status" = 124 ]; then echo "capture: SuperTuxKart did not finish in time ($out/stk.log)" >&2; exit 1; fi

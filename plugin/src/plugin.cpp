@@ -497,7 +497,12 @@ float Plugin::sampleShading() const {
 
 float Plugin::textureLodBias() const {
   const Config& config = impl_->context.config;
-  return runsTemporal(config) ? config.temporalLodBias : 0.0f;
+  const float history = runsTemporal(config) ? config.temporalLodBias : 0.0f;
+  // Sample shading averages k = shaded fraction × samples texture reads a pixel, each at the pixel's mip: the mip
+  // of a render at √k times the width and height is log2(√k) finer (at 4×, shaded fully: -1).
+  const int samples = impl_->msaa ? impl_->msaa->samples() : impl_->context.config.samples;
+  const float shaded = std::max(1.0f, sampleShading() * float(samples));
+  return std::min(history, -0.5f * std::log2(shaded));
 }
 
 Status Plugin::resolve(const FrameInfo& frame) {

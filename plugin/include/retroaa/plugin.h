@@ -74,7 +74,9 @@ class RETROAA_API Plugin {
   Jitter jitter() const;
   // The mip bias to add to the host's material texture samplers while this method runs: where
   // a method with a history runs, temporal_lod_bias (the history averages the sharper mips' detail over the jitter, as
-  // FSR 2 advises for native-resolution AA); 0 otherwise.
+  // FSR 2 advises for native-resolution AA); where the model pass is shaded per sample (sampleShading() > 0),
+  // -0.5 log2(the samples shaded a pixel), since each pixel averages that many reads of the pixel's own mip
+  // (-1 at 4×); the more negative of the two; 0 otherwise.
   float textureLodBias() const;
   // The fraction of each pixel's samples the model pass should shade (Config::sampleShading) where the method
   // draws it multisampled (into geometryFramebuffer() or prepassFramebuffer()); 0 otherwise. Where it is above
