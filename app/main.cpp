@@ -167,8 +167,10 @@ void addRegress(CommandLine& line) {
   sub->add_option("--out", options->out, "report folder");
   sub->add_option("--golden-dir", options->goldenDirectory,
                   "where the goldens live (default: the source tree's integration-tests/golden)");
-  sub->add_flag("--check", options->check, "compare with the goldens; exit 1 naming each figure that got worse");
-  sub->add_flag("--update-golden", options->updateGolden, "rewrite the goldens from this run");
+  sub->add_flag("--check", options->check,
+                "compare with the goldens; exit 1 naming each figure that got worse and each method they lack (new)");
+  sub->add_flag("--update-golden", options->updateGolden,
+                "write this run's figures into the goldens (the methods run; the others' kept where the settings match)");
   line.addConfiguredCommand(sub, options, app::runRegress);
 }
 

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace app {
@@ -137,14 +138,21 @@ std::string htmlEscape(const std::string& text) {
   return out;
 }
 
-// Compares a scene's rows with its golden; returns what got worse beyond tolerance.
-std::vector<std::string> compareWithGolden(const json& golden, const json& scene) {
-  std::vector<std::string> worse;
+// A scene's rows against its golden: what got worse beyond tolerance, and the methods it has no figures for
+// yet (new in the list: a check fails on them too, so no method runs unguarded).
+struct GoldenComparison {
+  std::vector<std::string> worse, fresh;
+};
+
+GoldenComparison compareWithGolden(const json& golden, const json& scene) {
+  GoldenComparison comparison;
+  std::vector<std::string>& worse = comparison.worse;
   const json& tolerance = golden["tolerance"];
   for (const auto& row : scene["rows"]) {
     const std::string method = row["method"];
     if (!golden["methods"].contains(method)) {
-      worse.push_back(scene["scene"].get<std::string>() + " / " + method + ": no golden figures (run --update-golden)");
+      comparison.fresh.push_back(scene["scene"].get<std::string>() + " / " + method +
+                                 ": no golden figures yet (run with --update-golden --methods " + method + ")");
       continue;
     }
     const json& g = golden["methods"][method];
@@ -175,7 +183,7 @@ std::vector<std::string> compareWithGolden(const json& golden, const json& scene
     higher("flicker", tolerance["flicker_relative"], tolerance["flicker_absolute"]);
     higher("evals_per_pixel", tolerance["evals_relative"], 0.0);
   }
-  return worse;
+  return comparison;
 }
 
 }  // namespace
@@ -373,9 +381,22 @@ void writeHtml(const json& report, const RegressOptions& options) {
   std::ofstream(fs::path(options.out) / "report.html") << html.str();
 }
 
-// Goldens: the quality figures per scene and method, with tolerances. Returns the exit status.
+// A golden file's JSON, or nullopt where there is none yet.
+std::optional<json> readGolden(const fs::path& goldenFile) {
+  std::string problem;
+  const std::optional<std::string> text = host::readUserTextFile(goldenFile.string(), problem);
+  if (!text) return std::nullopt;
+  const json golden = json::parse(*text, nullptr, false);
+  if (golden.is_discarded() || !golden.is_object())
+    throw std::invalid_argument(goldenFile.string() + ": not a golden file (not a JSON object)");
+  return golden;
+}
+
+// Goldens: the quality figures per scene and method, with tolerances. An update replaces the figures of the
+// methods run and keeps the others' where the settings match. Returns the exit status.
 int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
   int status = kExitOk;
+  size_t worseCount = 0, freshCount = 0;
   const fs::path goldenDirectory = options.goldenDirectory.empty() ? fs::path(RETROAA_INTEGRATION_TESTS_DIR) / "golden"
                                                                    : fs::path(options.goldenDirectory);
   for (const auto& scene : report["scenes"]) {
@@ -387,6 +408,7 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
                            {"frames", scene["frames"]},
                            {"frame_stride", options.frameStride}};
     if (options.updateGolden) {
+      const std::optional<json> existing = readGolden(goldenFile);
       json golden = {{"scene", scene["scene"]},
                      {"settings", settings},
                      {"renderer", report["renderer"]},
@@ -397,7 +419,9 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
                        {"flicker_relative", 0.25},
                        {"flicker_absolute", 0.0005},
                        {"evals_relative", 0.05}}},
-                     {"methods", json::object()}};
+                     {"methods", existing && (*existing)["settings"] == settings && existing->contains("methods")
+                                     ? (*existing)["methods"]
+                                     : json::object()}};
       for (const auto& r : scene["rows"])
         golden["methods"][r["method"].get<std::string>()] = {{"psnr_db", r["psnr_db"]},
                                                              {"edge_psnr_db", r["edge_psnr_db"]},
@@ -409,23 +433,22 @@ int updateAndCheckGoldens(const json& report, const RegressOptions& options) {
       std::printf("golden written: %s\n", goldenFile.string().c_str());
     }
     if (!options.check) continue;
-    std::string problem;
-    const std::optional<std::string> text = host::readUserTextFile(goldenFile.string(), problem);
-    if (!text)
+    const std::optional<json> golden = readGolden(goldenFile);
+    if (!golden)
       throw std::invalid_argument(goldenFile.string() + ": no golden for scene '" + scene["scene"].get<std::string>() +
-                                  "' (" + problem + "; run with --update-golden)");
-    const json golden = json::parse(*text, nullptr, false);
-    if (golden.is_discarded() || !golden.is_object())
-      throw std::invalid_argument(goldenFile.string() + ": not a golden file (not a JSON object)");
-    if (golden["settings"] != settings)
-      throw std::invalid_argument(goldenFile.string() + ": golden was made with settings " + golden["settings"].dump() +
-                                  ", this run uses " + settings.dump());
-    const std::vector<std::string> worse = compareWithGolden(golden, scene);
-    for (const std::string& line : worse) std::printf("WORSE: %s\n", line.c_str());
-    if (!worse.empty()) status = kExitCheckFailed;
+                                  "' (run with --update-golden)");
+    if ((*golden)["settings"] != settings)
+      throw std::invalid_argument(goldenFile.string() + ": golden was made with settings " +
+                                  (*golden)["settings"].dump() + ", this run uses " + settings.dump());
+    const GoldenComparison comparison = compareWithGolden(*golden, scene);
+    for (const std::string& line : comparison.worse) std::printf("WORSE: %s\n", line.c_str());
+    for (const std::string& line : comparison.fresh) std::printf("NEW: %s\n", line.c_str());
+    worseCount += comparison.worse.size(), freshCount += comparison.fresh.size();
   }
-  if (options.check)
-    std::printf("check: %s\n", status == kExitOk ? "every figure within tolerance" : "figures got worse");
+  if (options.check && worseCount + freshCount > 0) status = kExitCheckFailed;
+  if (options.check && status == kExitOk) std::printf("check: every figure within tolerance\n");
+  if (options.check && status != kExitOk)
+    std::printf("check: %zu figures got worse, %zu methods have no golden figures yet\n", worseCount, freshCount);
   return status;
 }
 
