@@ -169,8 +169,9 @@ void addRegress(CommandLine& line) {
                   "where the goldens live (default: the source tree's integration-tests/golden)");
   sub->add_flag("--check", options->check,
                 "compare with the goldens; exit 1 naming each figure that got worse and each method they lack (new)");
-  sub->add_flag("--update-golden", options->updateGolden,
-                "write this run's figures into the goldens (the methods run; the others' kept where the settings match)");
+  sub->add_flag(
+      "--update-golden", options->updateGolden,
+      "write this run's figures into the goldens (the methods run; the others' kept where the settings match)");
   line.addConfiguredCommand(sub, options, app::runRegress);
 }
 

@@ -69,3 +69,34 @@ TEST(Plugins, TwoInstancesInOneProcessWorkSideBySide) {
   EXPECT_EQ(app::DisplayImage::fromRgba8(96, 72, left.renderer->readDisplay()).rgb, edgeAlone.rgb);
   EXPECT_EQ(app::DisplayImage::fromRgba8(96, 72, right.renderer->readDisplay()).rgb, aggregateAlone.rgb);
 }
+
+TEST(Capabilities, AGBufferOverItsBudgetIsRefusedBeforeAnythingIsAllocated) {
+  // 64 x 48 x 4 samples x the host's 40 B a sample = 480 KiB against a budget of 256 KiB: refused at create
+  // and at reconfigure, naming the size and the budget; the context raises no GL_OUT_OF_MEMORY and the plugin
+  // holds nothing. Within the budget the same method runs.
+  PatchedHost host("default", 64, 48);
+  retroaa::Description description;
+  description.layout = patch::describeHostGBuffer(host.renderer->targets());
+  description.gbufferBudgetBytes = 256 << 10;
+  ASSERT_TRUE(retroaa::applyMethodSpec(description.config, "edge"));
+  const auto refused = retroaa::Plugin::create(description);
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.error().code, retroaa::ErrorCode::InvalidConfig);
+  EXPECT_NE(refused.error().message.find("64 x 48 x 4 samples x 40 B"), std::string::npos) << refused.error().message;
+  EXPECT_NE(refused.error().message.find("over its budget of 256 KiB"), std::string::npos) << refused.error().message;
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  description.config = retroaa::Config{};  // off: nothing multisampled
+  auto created = retroaa::Plugin::create(description);
+  ASSERT_TRUE(created);
+  retroaa::Config edge;
+  ASSERT_TRUE(retroaa::applyMethodSpec(edge, "edge"));
+  const retroaa::Status status = created.value()->reconfigure(edge);
+  ASSERT_FALSE(status);
+  EXPECT_NE(status.error().message.find("over its budget"), std::string::npos) << status.error().message;
+  EXPECT_EQ(created.value()->stats().bytesHeld, 0u);
+  description.gbufferBudgetBytes = 1 << 20;
+  auto within = retroaa::Plugin::create(description);
+  ASSERT_TRUE(within);
+  EXPECT_TRUE(within.value()->reconfigure(edge));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}

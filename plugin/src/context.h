@@ -18,6 +18,8 @@ struct ContextCapabilities {
   bool timerQuery = false;          // GL_TIME_ELAPSED
   bool stencilExport = false;       // ARB_shader_stencil_export
   bool pipelineStatistics = false;  // ARB_pipeline_statistics_query (core in 4.6)
+  int maxTextureSize = 0;           // GL_MAX_TEXTURE_SIZE
+  uint64_t gbufferBudgetBytes = 0;  // Description::gbufferBudgetBytes (0: none)
 };
 
 struct PluginContext {

@@ -178,6 +178,7 @@ ContextCapabilities queryCapabilities(uint32_t disabledFeatures, int maxSamplesL
       epoxy_has_gl_extension("GL_ARB_shader_stencil_export") && !(disabledFeatures & kFeatureStencilExport);
   caps.pipelineStatistics = (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) &&
                             !(disabledFeatures & kFeaturePipelineStatistics);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &caps.maxTextureSize);
   return caps;
 }
 
@@ -449,6 +450,7 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   if (Status status = impl->setLayout(description.layout); !status) return status.error();
   context.log = description.log;
   context.capabilities = queryCapabilities(description.disabledFeatures, description.maxSamplesLimit);
+  context.capabilities.gbufferBudgetBytes = description.gbufferBudgetBytes;
   if (!context.capabilities.stencilExport)
     context.warn(
         "no ARB_shader_stencil_export: slice counts reach the stencil mask in one pass per bit of the count instead of "

@@ -178,6 +178,9 @@ struct Description {
   LogCallback log;                // receives every warning (clamps, fallbacks); may be empty
   uint32_t disabledFeatures = 0;  // Feature bits to treat as missing
   int maxSamplesLimit = 0;        // treat GL_MAX_SAMPLES as at most this (0: the context's own; 1: no MSAA)
+  // The most GPU memory the multisampled (or supersampled) G-buffer may take: a config or size asking for more
+  // is refused (InvalidConfig, naming both) before anything is allocated. 0: no budget (the driver decides).
+  uint64_t gbufferBudgetBytes = uint64_t(8) << 30;
 };
 
 // Per-frame camera facts for the closeness tests.

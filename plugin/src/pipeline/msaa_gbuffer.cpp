@@ -8,6 +8,19 @@
 
 namespace retroaa {
 
+namespace {
+
+// "W x H x N samples x B B = G GiB": the G-buffer's size, for the errors that name it.
+std::string describeSize(int width, int height, int samples, uint64_t bytesPerSample) {
+  char size[160];
+  std::snprintf(size, sizeof size, "%d x %d x %d samples x %llu B = %.2f GiB", width, height, samples,
+                static_cast<unsigned long long>(bytesPerSample),
+                double(bytesPerSample) * double(width) * double(height) * double(samples) / double(1ull << 30));
+  return size;
+}
+
+}  // namespace
+
 Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context, int samples, int supersample) {
   auto gbuffer = std::make_unique<MsaaGBuffer>();
   const GBufferLayout& layout = context.layout;
@@ -15,6 +28,26 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   const int scale = supersample > 1 ? supersample : 1;
   const int storageSamples = scale == 1 && samples > 1 ? samples : 0;
   const int width = layout.width * scale, height = layout.height * scale;
+  const GLenum depthFormat = sizedDepthFormat(layout.depthStencilTexture);
+  uint64_t bytesPerSample = bytesPerTexel(depthFormat);
+  for (const Attachment& attachment : layout.attachments) bytesPerSample += bytesPerTexel(attachment.internalFormat);
+  const int samplesPerTexel = std::max(storageSamples, 1);
+  // What the driver's limits and the budget refuse is refused before any allocation (no GL_OUT_OF_MEMORY).
+  const ContextCapabilities& caps = context.capabilities;
+  if (caps.maxTextureSize > 0 && std::max(width, height) > caps.maxTextureSize)
+    return Error{ErrorCode::InvalidConfig, "the " + std::string(scale > 1 ? "supersampled" : "multisampled") +
+                                               " G-buffer would be " + std::to_string(width) + " x " +
+                                               std::to_string(height) + ", over the context's GL_MAX_TEXTURE_SIZE " +
+                                               std::to_string(caps.maxTextureSize) + ": ask for a smaller size" +
+                                               (scale > 1 ? " or supersample" : "")};
+  const uint64_t needed = bytesPerSample * uint64_t(width) * uint64_t(height) * uint64_t(samplesPerTexel);
+  if (caps.gbufferBudgetBytes > 0 && needed > caps.gbufferBudgetBytes)
+    return Error{ErrorCode::InvalidConfig,
+                 "the MSAA G-buffer would take " + describeSize(width, height, samplesPerTexel, bytesPerSample) +
+                     ", over its budget of " +
+                     (caps.gbufferBudgetBytes >= (1u << 20) ? std::to_string(caps.gbufferBudgetBytes >> 20) + " MiB"
+                                                            : std::to_string(caps.gbufferBudgetBytes >> 10) + " KiB") +
+                     " (Description::gbufferBudgetBytes): ask for fewer samples, a smaller size or a larger budget"};
   gbuffer->requested_ = samples;
   gbuffer->supersample_ = scale;
   gbuffer->framebuffer_ = makeFramebuffer(context, "msaa_gbuffer");
@@ -29,7 +62,6 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
   }
   glNamedFramebufferDrawBuffers(gbuffer->framebuffer(), GLsizei(drawBuffers.size()), drawBuffers.data());
   // The host's depth format: its model pass (depth function, reversed-Z, clear value) runs unchanged.
-  const GLenum depthFormat = sizedDepthFormat(layout.depthStencilTexture);
   gbuffer->depthStencil_ =
       makeTexture(context, depthFormat, width, height, storageSamples, "msaa_gbuffer.depth_stencil", gbuffer->bytes_);
   glNamedFramebufferTexture(gbuffer->framebuffer(),
@@ -41,19 +73,10 @@ Result<std::unique_ptr<MsaaGBuffer>> MsaaGBuffer::create(PluginContext& context,
     glGetTextureLevelParameteriv(gbuffer->depthStencil(), 0, GL_TEXTURE_WIDTH, &allocatedWidth);
     for (size_t i = 0; allocatedWidth && i < layout.attachments.size(); ++i)
       glGetTextureLevelParameteriv(gbuffer->attachment(i), 0, GL_TEXTURE_WIDTH, &allocatedWidth);
-    if (!allocatedWidth) {
-      uint64_t bytesPerSample = bytesPerTexel(depthFormat);
-      for (const Attachment& attachment : layout.attachments)
-        bytesPerSample += bytesPerTexel(attachment.internalFormat);
-      const uint64_t requested =
-          bytesPerSample * uint64_t(width) * uint64_t(height) * uint64_t(std::max(storageSamples, 1));
-      char size[160];
-      std::snprintf(size, sizeof size, "%d x %d x %d samples x %llu B = %.2f GiB", width, height,
-                    std::max(storageSamples, 1), static_cast<unsigned long long>(bytesPerSample),
-                    double(requested) / double(1ull << 30));
-      return Error{ErrorCode::IncompleteFramebuffer, std::string("the driver could not allocate the MSAA G-buffer (") +
-                                                         size + "): ask for fewer samples or a smaller size"};
-    }
+    if (!allocatedWidth)  // within the budget, yet more than the driver has
+      return Error{ErrorCode::IncompleteFramebuffer, "the driver could not allocate the MSAA G-buffer (" +
+                                                         describeSize(width, height, samplesPerTexel, bytesPerSample) +
+                                                         "): ask for fewer samples or a smaller size"};
     // Name what the driver refuses: each attachment alone in a framebuffer of its own.
     for (size_t i = 0; i < layout.attachments.size(); ++i) {
       GLuint probe = 0;
