@@ -5,13 +5,18 @@
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <random>
 #include <tuple>
 
@@ -304,6 +309,42 @@ class DroppedDataLog : public Assimp::LogStream {
   bool ownsLogger_;
 };
 
+// The triangles a glTF file declares (its primitives of mode 4: their index count, or their vertex count
+// without indices, over 3), read from its JSON (.gltf, or a .glb's JSON chunk); nullopt for other files. assimp
+// drops a face with an index past its vertices and says only that some were: this counts them.
+std::optional<size_t> declaredGltfTriangles(const std::string& path) {
+  const std::string extension = std::filesystem::path(path).extension().string();
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if ((extension != ".gltf" && extension != ".glb") || error || bytes > (std::uintmax_t(256) << 20))
+    return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (extension == ".glb") {  // 12-byte header, then the JSON chunk: its length, "JSON", its bytes
+    if (text.size() < 20 || text.compare(16, 4, "JSON") != 0) return std::nullopt;
+    uint32_t length = 0;
+    std::memcpy(&length, text.data() + 12, 4);
+    if (length > text.size() - 20) return std::nullopt;
+    text = text.substr(20, length);
+  }
+  const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
+  if (!document.is_object() || !document.contains("meshes") || !document.contains("accessors")) return std::nullopt;
+  const nlohmann::json& accessors = document["accessors"];
+  auto countOf = [&accessors](const nlohmann::json& index) -> size_t {
+    if (!index.is_number_unsigned() || index.get<size_t>() >= accessors.size()) return 0;
+    return accessors[index.get<size_t>()].value("count", size_t(0));
+  };
+  size_t triangles = 0;
+  for (const nlohmann::json& mesh : document["meshes"])
+    for (const nlohmann::json& primitive : mesh.value("primitives", nlohmann::json::array()))
+      if (primitive.value("mode", 4) == 4)
+        triangles +=
+            (primitive.contains("indices") ? countOf(primitive["indices"])
+                                           : countOf(primitive["attributes"].value("POSITION", nlohmann::json()))) /
+            3;
+  return triangles;
+}
+
 }  // namespace
 
 std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::string>* warnings, ModelTextures textures) {
@@ -321,7 +362,17 @@ std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::strin
     else
       std::fprintf(stderr, "retroaa: warning: %s\n", what.c_str());
   };
-  for (const std::string& message : log.messages) warn(path + ": " + message);
+  for (const std::string& message : log.messages) {
+    size_t imported = 0;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) imported += scene->mMeshes[m]->mNumFaces;
+    const std::optional<size_t> declared =
+        message.find("out-of-range") != std::string::npos ? declaredGltfTriangles(path) : std::nullopt;
+    if (declared && *declared > imported)
+      warn(path + ": " + std::to_string(*declared - imported) + " of " + std::to_string(*declared) +
+           " faces had out-of-range indices; they are left out");
+    else
+      warn(path + ": " + message);
+  }
   std::vector<Mesh> meshes(std::max(1u, scene->mNumMaterials));
   std::vector<std::tuple<std::string, unsigned, unsigned>> dropped;
   appendNode(meshes, *scene, *scene->mRootNode, glm::mat4(1.0f), dropped);
