@@ -49,7 +49,8 @@ enum class ResolveWeighting : uint8_t {
   Back,    // samples close to the farthest sample (background counts as farthest)
   Fso,     // FreeSpace Open's msaa-f.sdr as it runs: its median, its (asymmetric) smoothstep weights
   Mean,    // naive average of all geometry samples: the failure mode, kept for comparison
-  Window,  // a symmetric smooth window: full weight within ±2.5 footprints of the median, none past ±5
+  Window,  // the farther of the two middle samples (background farthest), with a smooth window around it: full
+           // weight within ±2.5 footprints, none past ±5
 };
 
 enum class FxaaQuality : uint8_t {
@@ -74,8 +75,9 @@ enum class SmaaEdgeDetection : uint8_t {
 };
 
 // Every field is a config key (configKeys(), docs/config.md): the comments here say what a field means;
-// its key, allowed values and one-line effect are in plugin/src/config.cpp's key table, written once, and
-// its default is the initialiser below.
+// its key, allowed values and one-line effect are written once where its technique lives (each method's
+// file under plugin/src/methods/ declares its own keys; plugin/src/config.cpp the shared ones), and its
+// default is the initialiser below.
 struct Config {
   // Which method runs. Changing it reallocates only what the new method needs.
   Method method = Method::Off;

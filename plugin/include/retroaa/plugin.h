@@ -107,10 +107,12 @@ class RETROAA_API Plugin {
   // endForward(). Errors: WrongCallOrder without shade() since resolve() in this frame.
   Result<GLuintHandle> beginForward();
   // After the forward passes: the multisampled copy's per-pixel mean into the scene colour (nothing when
-  // beginForward() returned the host's own framebuffer). WrongCallOrder without beginForward().
+  // beginForward() returned the host's own framebuffer), and where coverage or reconstruct runs, the mask of
+  // the pixels the forward passes changed. WrongCallOrder without beginForward().
   Status endForward();
-  // After the host's tonemap, on the display target: each running technique's post pass in the
-  // registry's order (src/registry.cpp), FXAA last.
+  // After the host's tonemap, on the display target: each running technique's post pass, the method's own
+  // first, then the stacked ones in the registry's order (src/registry.cpp), the one marked postPassLast
+  // (fxaa) after the rest: `temporal+smaa` runs temporal, then smaa.
   // Nothing when the method has no post pass.
   Status post();
 

@@ -167,7 +167,7 @@ using LogCallback = std::function<void(LogLevel, const std::string&)>;
 // Context features the plugin uses when present. Masking one off makes the plugin behave as on a
 // context without it (for testing fallbacks, or to work around a driver bug).
 enum Feature : uint32_t {
-  kFeatureStencilExport = 1u << 0,       // ARB_shader_stencil_export: slice counts in one pass (else N passes)
+  kFeatureStencilExport = 1u << 0,       // ARB_shader_stencil_export: slice counts in one pass (else ⌈log2(N+1)⌉)
   kFeatureTimerQuery = 1u << 1,          // GL_TIME_ELAPSED: per-pass GPU times (else none reported)
   kFeaturePipelineStatistics = 1u << 2,  // ARB_pipeline_statistics_query: per-pass shader invocations (else 0)
 };
