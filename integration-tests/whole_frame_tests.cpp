@@ -233,7 +233,7 @@ int partlyForward(const std::vector<glm::vec4>& composed) {
 TEST(WholeFrame, ForwardGeometryIsAntiAliasedByTheGBuffersSamples) {
   // In front of everything, its edge x = 3.5 + 0.25 y (pixels) crossing one grey pixel of each row.
   const ForwardPass edge = [] { drawForwardTriangle({{1, -10}, {11, 30}, {-50, 10}}, 0.0f, kForward); };
-  for (const char* spec : {"per-sample", "edge", "resolve"}) {
+  for (const char* spec : {"per-sample", "edge", "resolve", "adaptive", "aggregate", "smaa-s2x"}) {
     const ComposedRun run = runComposed(spec, edge);
     ASSERT_EQ(run.composed.size(), size_t(kWidth) * kHeight) << spec;
     EXPECT_GE(partlyForward(run.composed), kHeight) << spec;

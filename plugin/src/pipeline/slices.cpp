@@ -221,8 +221,8 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
       if (Status status = plan.maskAfterFirstSlice(); !status) return status;
     }
     const Status composited = compositeSlice(context, plan, slice);
-    if (keepsSamples) {
-      forward->keepSample(context, light_.get(), counts_.get(), leastCountLitBy(plan, slice),
+    if (keepsSamples) {  // a pixel one slice lit is that slice's colour in every sample: fill.frag gives it
+      forward->keepSample(context, light_.get(), counts_.get(), std::max(leastCountLitBy(plan, slice), 2),
                           plan.sampleOrder.empty() ? slice : plan.sampleOrder[size_t(slice)]);
     }
     if (skippable) glEndConditionalRender();
