@@ -26,14 +26,20 @@ export SUPERTUXKART_DATADIR=$data LP_NUM_THREADS=${LP_NUM_THREADS:-2}
 mlaa=--disable-mlaa
 case " $methods " in *" stk-mlaa "*) mlaa=--enable-mlaa ;; esac
 status=0
-timeout "${RETROAA_STK_TIMEOUT:-1800}" xvfb-run -a -s "-screen 0 ${width}x${height}x24" \
-  "$binary" --screensize="${width}x${height}" --windowed --no-sound --no-start-screen --race-now \
+# The timeout runs inside xvfb-run, on STK itself: STK ignores SIGTERM, so it is killed 15 s later, and
+# xvfb-run then takes its X server down (a timeout around xvfb-run would leave STK running).
+xvfb-run -a -s "-screen 0 ${width}x${height}x24" \
+  timeout --kill-after=15 "${RETROAA_STK_TIMEOUT:-1800}" "$binary" --screensize="${width}x${height}" --windowed --no-sound --no-start-screen --race-now \
   --track="$track" --numkarts=1 --laps=1 --seed=1 --enable-dynamic-lights --disable-dof --disable-motion-blur \
   --disable-light-shaft --disable-ssao --disable-glow --disable-bloom --disable-ibl --disable-particles --shadows=0 "$mlaa" \
   --anisotropic=0 \
   --aa-capture="$out" --aa-capture-frame="$frame" --aa-methods="$methods" --aa-fixed-dt=0.0166667 \
   --aa-timed-frames="$timed" >"$out/stk.log" 2>&1 || status=$?
-if [ "$status" = 124 ]; then echo "capture: SuperTuxKart did not finish in time ($out/stk.log)" >&2; exit 1; fi
+if [ "$status" = 124 ] || [ "$status" = 137 ]; then
+  reached=$(grep -o 'AaCapture: .*' "$out/stk.log" | tail -1 || true)
+  echo "capture: SuperTuxKart did not finish in ${RETROAA_STK_TIMEOUT:-1800} s on $track (its last word: ${reached:-none}; $out/stk.log)" >&2
+  exit 1
+fi
 captured=$(grep -c '"image"' "$out/capture.jsonl" 2>/dev/null || true)
 wanted=$(echo "$methods" | wc -w)
 if [ "${captured:-0}" != "$wanted" ]; then
