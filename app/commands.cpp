@@ -440,6 +440,10 @@ int runSoak(const SoakOptions& options) {
     session.renderer->renderFrame(session.camera(frame % std::max(session.scene.path.frameCount(), 1)));
     if (frame == std::min(options.frames - 1, 100)) residentAfterWarmUp = residentMiB();
     residentPeak = std::max(residentPeak, residentMiB());
+    // The settings above repeat every 4200 frames (their periods' least common multiple, with the sizes'): a
+    // cache that fills while new combinations come (the driver's shader variants) flattens after one period,
+    // a leak does not.
+    if ((frame + 1) % 1050 == 0) std::printf("soak: frame %d, resident %.1f MiB\n", frame + 1, residentMiB());
   }
   session.renderer->resize(options.width, options.height);
   session.configure(retroaa::Config{});
