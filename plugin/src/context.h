@@ -36,9 +36,6 @@ struct PluginContext {
   std::unique_ptr<FrameStatistics> statistics;  // what the GPU counts of it, read back frames later
   bool timePasses = false;                      // measure_gpu_time, or a budget that needs the times
   double budgetScale = 1.0;                     // multiplies the refinement of Technique::followsBudget (budget mode)
-  // A history's frames started when its jitter sequence last began (a new history), so that the frame
-  // after a switch or reset always takes the sequence's first point, whatever ran before.
-  uint64_t jitterOrigin = 0;
 
   void warn(const std::string& message);
   uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }

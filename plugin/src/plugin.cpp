@@ -217,16 +217,6 @@ struct Plugin::Impl {
                : nullptr;
   }
 
-  // The rows active under `config`: its method's, then every row stacked on it (post-last ones last).
-  static std::vector<const TechniqueRow*> activeRows(const Config& config) {
-    std::vector<const TechniqueRow*> rows;
-    if (const TechniqueRow* own = findTechnique(config.method)) rows.push_back(own);
-    for (const TechniqueRow& row : techniqueRegistry())
-      if (row.info.method != config.method && row.stackedOn && row.stackedOn(config)) rows.push_back(&row);
-    std::stable_partition(rows.begin() + (rows.empty() ? 0 : 1), rows.end(),
-                          [](const TechniqueRow* row) { return !row->postLast; });
-    return rows;
-  }
   static uint32_t storageOf(const Config& config, const std::vector<const TechniqueRow*>& rows) {
     uint32_t storage = kStorageNone;
     for (const TechniqueRow* row : rows)
@@ -314,7 +304,7 @@ struct Plugin::Impl {
   // Holds exactly what the active rows need: frees the rest, creates what is missing.
   Status allocate(bool rebuildAll) {
     const Config& config = context.config;
-    const std::vector<const TechniqueRow*> rows = activeRows(config);
+    const std::vector<const TechniqueRow*> rows = activeTechniqueRows(config);
     const uint32_t storage = storageOf(config, rows);
     const bool needMsaa = storage & kStorageMsaaGBuffer;
     // A host's depth renderbuffer: the passes read its texture mirror, held only while any pass runs.
@@ -487,9 +477,11 @@ GLuintHandle Plugin::geometryFramebuffer() const {
 
 Jitter Plugin::jitter() const {
   const PluginContext& context = impl_->context;
-  if (!runsTemporal(context.config)) return {};
-  return temporalJitter(context.statistics->framesStarted() + 1 - context.jitterOrigin,
-                        context.config.temporalJitterLength);
+  for (const ActiveTechnique& active : impl_->techniques)
+    if (const std::optional<Jitter> offset =
+            active.technique->jitter(context.config, context.statistics->framesStarted()))
+      return *offset;
+  return {};
 }
 
 float Plugin::sampleShading() const {
@@ -499,7 +491,8 @@ float Plugin::sampleShading() const {
 
 float Plugin::textureLodBias() const {
   const Config& config = impl_->context.config;
-  const float history = runsTemporal(config) ? config.temporalLodBias : 0.0f;
+  float history = 0.0f;  // a method with a history's own (the others' are 0)
+  for (const ActiveTechnique& active : impl_->techniques) history += active.technique->textureLodBias(config);
   // Sample shading averages k = shaded fraction × samples texture reads a pixel, each at the pixel's mip: the mip
   // of a render at √k times the width and height is log2(√k) finer (at 4×, shaded fully: -1).
   const int samples = impl_->msaa ? impl_->msaa->samples() : impl_->context.config.samples;
@@ -642,12 +635,7 @@ Status Plugin::reconfigure(const Config& config) {
     }
   }
   impl_->configureBudget(previous);
-  // A history starts anew when the image changes: not for the statistics or the blend weight.
-  Config sameImage = previous;
-  sameImage.measureGpuTime = context.config.measureGpuTime;
-  sameImage.temporalBlend = context.config.temporalBlend;
-  if (toConfigText(sameImage) != toConfigText(context.config))
-    for (ActiveTechnique& active : impl_->techniques) active.technique->resetHistory(context);
+  for (ActiveTechnique& active : impl_->techniques) active.technique->reconfigured(context, previous);
   // Figures measured under another config would be reported as this one's.
   if (toConfigText(context.config) != toConfigText(previous)) context.statistics->release();
   return status;

@@ -4,6 +4,7 @@
 // what the plugin allocates) reads this table.
 #include "technique.h"
 
+#include <algorithm>
 #include <atomic>
 
 namespace retroaa {
@@ -27,6 +28,7 @@ std::vector<Key> aggregateKeys();
 std::vector<Key> coverageKeys();
 std::vector<Key> reconstructKeys();
 std::vector<Key> temporalKeys();
+int temporalConvergence(const Config& config);
 std::vector<Key> fxaaKeys();
 std::vector<Key> smaaKeys();
 
@@ -84,6 +86,7 @@ std::vector<TechniqueRow>& rows() {
           .uses(kStoragePostTarget)
           .createdBy(createTemporalTechnique)
           .configuredBy(temporalKeys)
+          .convergesIn(temporalConvergence)
           .stacks(
               "temporal_filter", [](const Config& c) { return c.temporalFilter; }, kStoragePostTarget),
       Row::named(Method::Edge, "edge", "edge pixels (a detector decides) lit once per sample through slices")
@@ -126,6 +129,23 @@ std::vector<TechniqueRow>& rows() {
 const std::vector<TechniqueRow>& techniqueRegistry() {
   registryRead() = true;
   return rows();
+}
+
+std::vector<const TechniqueRow*> activeTechniqueRows(const Config& config) {
+  std::vector<const TechniqueRow*> rows;
+  if (const TechniqueRow* own = findTechnique(config.method)) rows.push_back(own);
+  for (const TechniqueRow& row : techniqueRegistry())
+    if (row.info.method != config.method && row.stackedOn && row.stackedOn(config)) rows.push_back(&row);
+  std::stable_partition(rows.begin() + (rows.empty() ? 0 : 1), rows.end(),
+                        [](const TechniqueRow* row) { return !row->postLast; });
+  return rows;
+}
+
+int historyFrames(const Config& config) {
+  int frames = 0;
+  for (const TechniqueRow* row : activeTechniqueRows(config))
+    if (row->convergence) frames = std::max(frames, row->convergence(config));
+  return frames;
 }
 
 const TechniqueRow* findTechnique(Method method) {

@@ -9,6 +9,7 @@
 #include "shared_constants.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,12 +42,17 @@ class Technique {
   // Whether budget_ms can steer this technique under `config` (through PluginContext::budgetScale).
   virtual bool followsBudget(const Config&) const { return false; }
   virtual uint64_t bytes() const { return 0; }
+  // A method with a history: the sub-pixel offset the host adds to the projection of the frame about to begin
+  // (`framesStarted` begun so far; Plugin::jitter), and the mip bias for its material samplers
+  // (Plugin::textureLodBias). None and 0 otherwise.
+  virtual std::optional<Jitter> jitter(const Config&, uint64_t /*framesStarted*/) const { return std::nullopt; }
+  virtual float textureLodBias(const Config&) const { return 0.0f; }
   // Whether post() rebuilds pixels from their neighbours' colours knowing only the opaque surfaces (their
   // depth and normals), so it must leave alone what the host's forward passes drew (ForwardMask).
   virtual bool readsForwardMask() const { return false; }
-  // The config changed in a way that changes the image (Plugin::reconfigure): state carried from frame
-  // to frame (a history) starts anew.
-  virtual void resetHistory(PluginContext&) {}
+  // The config changed (Plugin::reconfigure; context.config is the new one): state carried from frame to frame
+  // (a history) starts anew where the change alters the image.
+  virtual void reconfigured(PluginContext&, const Config& /*previous*/) {}
   // Whether the GL objects built for the config it was created under still serve `config`; if not,
   // the plugin rebuilds the technique. (A new sample count or layout rebuilds every technique.)
   virtual bool keepsObjectsFor(const Config& config) const = 0;
@@ -133,6 +139,8 @@ struct TechniqueRow {
   int minSupersample = 0;  // a supersampled G-buffer of at least this factor (a smaller `supersample` is raised)
   bool postLast = false;   // its post pass runs after every other active technique's
   std::vector<Key> (*keys)() = nullptr;  // its config keys, declared beside it (config_keys.h)
+  // A method with a history: the frames a still view takes to converge under a config (historyFrames()).
+  int (*convergence)(const Config&) = nullptr;
 
   static TechniqueRow named(Method method, const char* name, const char* summary) {
     TechniqueRow row{};
@@ -153,16 +161,13 @@ struct TechniqueRow {
   }
   TechniqueRow& postPassLast() { return postLast = true, *this; }
   TechniqueRow& configuredBy(std::vector<Key> (*techniqueKeys)()) { return keys = techniqueKeys, *this; }
+  TechniqueRow& convergesIn(int (*frames)(const Config&)) { return convergence = frames, *this; }
 };
-
-// The jitter of the history method (defined with its technique) for frame `frame` of a sequence of
-// `length` (1: the first after the sequence began), and whether `config` runs it (as the method or
-// stacked).
-Jitter temporalJitter(uint64_t frame, int length);
-bool runsTemporal(const Config& config);
 
 // Every method, in the order listings use.
 const std::vector<TechniqueRow>& techniqueRegistry();
+// The rows active under `config`: its method's, then every row stacked on it (the post-last ones last).
+std::vector<const TechniqueRow*> activeTechniqueRows(const Config& config);
 const TechniqueRow* findTechnique(Method method);
 // What a method that needs multisampling becomes on a context without it.
 Method fallbackWithoutMultisampling();

@@ -86,6 +86,14 @@ float halton(uint32_t index, uint32_t base) {
   return result;
 }
 
+// Point `frame` of the Halton (2, 3) sequence of `length` points, centred on the pixel (frame 1: its first).
+Jitter haltonJitter(uint64_t frame, int length) {
+  if (length <= 1) return {};
+  // Frame 1 takes the sequence's first point, Halton index 1 (index 0 is the pixel's corner).
+  const uint32_t index = frame == 0 ? 1u : uint32_t((frame - 1) % uint64_t(length)) + 1;
+  return {halton(index, 2) - 0.5f, halton(index, 3) - 0.5f};
+}
+
 // Why the layout's light target cannot hold the history's input (empty: it can): the accumulation
 // needs one float target that is not the display.
 std::string whyNotBeforeTonemap(const GBufferLayout& layout) {
@@ -106,7 +114,7 @@ class TemporalTechnique : public Technique {
   static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
     auto technique = std::make_unique<TemporalTechnique>();
     TemporalTechnique& t = *technique;
-    context.jitterOrigin = context.statistics->framesStarted();
+    t.jitterOrigin_ = context.statistics->framesStarted();
     const GBufferLayout& layout = context.layout;
     t.beforeTonemapRequested_ = context.config.temporalBeforeTonemap;
     t.jitterLength_ = context.config.temporalJitterLength;
@@ -178,10 +186,20 @@ class TemporalTechnique : public Technique {
     return Status::ok();
   }
 
-  void resetHistory(PluginContext& context) override {
+  // The history starts anew when the image changes: not for the statistics or the blend weight.
+  void reconfigured(PluginContext& context, const Config& previous) override {
+    Config sameImage = previous;
+    sameImage.measureGpuTime = context.config.measureGpuTime;
+    sameImage.temporalBlend = context.config.temporalBlend;
+    if (toConfigText(sameImage) == toConfigText(context.config)) return;
     historyValid_ = false;
-    context.jitterOrigin = context.statistics->framesStarted();
+    jitterOrigin_ = context.statistics->framesStarted();
   }
+  // The sequence starts anew with the history: the frame about to begin is its frame framesStarted + 1 - origin.
+  std::optional<Jitter> jitter(const Config&, uint64_t framesStarted) const override {
+    return haltonJitter(framesStarted + 1 - jitterOrigin_, jitterLength_);
+  }
+  float textureLodBias(const Config& config) const override { return config.temporalLodBias; }
   bool keepsObjectsFor(const Config& config) const override {
     return config.temporalBeforeTonemap == beforeTonemapRequested_ && config.temporalJitterLength == jitterLength_;
   }
@@ -285,6 +303,7 @@ class TemporalTechnique : public Technique {
   bool beforeTonemapRequested_ = false;  // temporal_before_tonemap as created
   bool linearInput_ = false;
   int jitterLength_ = 8;
+  uint64_t jitterOrigin_ = 0;  // frames begun when the sequence (re)started
   bool historyValid_ = false;  // false: the next frame starts a new history (reset, or unusable matrices)
   int framesAccumulated_ = 0;  // frames in the history since it started
   Matrix4 previousView_{}, previousProjection_{};
@@ -297,19 +316,10 @@ class TemporalTechnique : public Technique {
 
 }  // namespace
 
-Jitter temporalJitter(uint64_t frame, int length) {
-  if (length <= 1) return {};
-  // Frame 1 takes the sequence's first point, Halton index 1 (index 0 is the pixel's corner).
-  const uint32_t index = frame == 0 ? 1u : uint32_t((frame - 1) % uint64_t(length)) + 1;
-  return {halton(index, 2) - 0.5f, halton(index, 3) - 0.5f};
-}
-
-bool runsTemporal(const Config& config) { return config.method == Method::Temporal || config.temporalFilter; }
-
-int historyFrames(const Config& config) {
-  if (!runsTemporal(config)) return 0;
-  // Two rounds of the jitter sequence, and 4 / temporal_blend frames (the history's weight of its first
-  // frame then below e^-4, 2 %).
+// The frames a still view takes to converge (its row's convergesIn, read by historyFrames()): two rounds of
+// the jitter sequence, and 4 / temporal_blend frames (the history's weight of its first frame then below
+// e^-4, 2 %).
+int temporalConvergence(const Config& config) {
   return std::max(2 * config.temporalJitterLength, int(std::ceil(4.0f / config.temporalBlend)));
 }
 
