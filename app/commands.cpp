@@ -128,7 +128,11 @@ std::vector<MethodSpec> parseMethodList(const std::string& list, const retroaa::
 
 int runRender(const RenderOptions& options) {
   host::HeadlessContext context;
-  Session session(options.scene, options.width, options.height, context.info().summary(), options.host);
+  const bool groundTruth = options.method == "ground-truth";
+  const retroaa::Config config =
+      groundTruth || options.method.empty() ? options.base : parseMethodSpec(options.method, options.base).config;
+  Session session(options.scene, options.width, options.height, context.info().summary(), options.host,
+                  {groundTruth ? retroaa::Config{} : config});
   const host::Camera camera = session.camera(options.frame);
   const std::string ext = lowerExtension(options.out);
   if (ext != ".png" && ext != ".exr")
@@ -137,12 +141,12 @@ int runRender(const RenderOptions& options) {
 
   std::vector<uint8_t> display;
   std::vector<float> radiance;
-  if (options.method == "ground-truth") {
+  if (groundTruth) {
     const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, options.groundTruthSamples);
     display = truth.display;
     radiance = truth.radiance;
   } else {
-    session.configure(options.method.empty() ? options.base : parseMethodSpec(options.method, options.base).config);
+    session.configure(config);
     // A history (temporal) builds over frames: a path frame is reached by playing the path up to it (its
     // first camera held before it starts), the scene's camera by holding it still.
     const int historyFrames = retroaa::historyFrames(session.config);
@@ -295,7 +299,9 @@ int runBench(const BenchOptions& options) {
   const std::vector<MethodSpec> specs = parseMethodList(options.methods, options.base);
 
   host::HeadlessContext context;
-  Session session(options.scene, options.width, options.height, context.info().summary(), options.host);
+  std::vector<retroaa::Config> configs;
+  for (const MethodSpec& spec : specs) configs.push_back(spec.config);
+  Session session(options.scene, options.width, options.height, context.info().summary(), options.host, configs);
   const host::Camera camera = session.camera(options.frame);
   const int w = options.width, h = options.height;
   std::fprintf(stderr, "bench: %s, %dx%d, %zu triangles, %zu lights; ground truth %dx%d per pixel...\n",

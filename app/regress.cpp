@@ -474,7 +474,9 @@ int runRegress(const RegressOptions& options) {
       {"flicker", "mean over frames t of the RMS over pixels of (error_t - error_(t-1)), error = image - ground truth"},
       {"scenes", json::array()}};
   for (size_t si = 0; si < scenes.size(); ++si) {
-    Session session(scenes[si], options.width, options.height, context.info().summary(), options.host);
+    std::vector<retroaa::Config> configs;
+    for (const MethodSpec& spec : specs) configs.push_back(spec.config);
+    Session session(scenes[si], options.width, options.height, context.info().summary(), options.host, configs);
     report["scenes"].push_back(regressScene(session, scenes[si], frames[si], specs, options, progress));
   }
   std::ofstream(fs::path(options.out) / "report.json") << report.dump(2) << "\n";

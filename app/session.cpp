@@ -2,6 +2,10 @@
 
 #include "renderer.h"
 #include "retroaa/config.h"
+#include "retroaa/plugin.h"
+
+#include <algorithm>
+#include <cstdio>
 
 namespace app {
 
@@ -11,11 +15,37 @@ std::unique_ptr<Hooks> attach(Created created) {
   if (!created) throw std::runtime_error("retroaa: " + created.error().message);
   return std::move(created.value());
 }
+
+// The plugin's budget for the multisampled (or supersampled) mirror of the host's G-buffer, applied to `config`
+// before the host's own targets exist: at 8192 x 8192 they alone take gigabytes, which the plugin's own check,
+// made once they exist, comes too late to spare.
+void requireGBufferWithinBudget(uint64_t bytesPerSample, int width, int height, const retroaa::Config& config) {
+  const retroaa::MethodInfo* method = retroaa::findMethod(config.method);
+  if (!method || !retroaa::usesMsaa(config.method)) return;
+  GLint maxSamples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+  const int factor = std::max(config.supersample, 2);  // a supersampled G-buffer: factor² sub-positions
+  const uint64_t samples = method->multisampled ? uint64_t(std::clamp(config.samples, 1, std::max(int(maxSamples), 1)))
+                                                : uint64_t(factor) * uint64_t(factor);
+  const uint64_t bytes = bytesPerSample * uint64_t(width) * uint64_t(height) * samples;
+  const uint64_t budget = retroaa::Description{}.gbufferBudgetBytes;
+  if (budget == 0 || bytes <= budget) return;
+  char size[200];
+  std::snprintf(size, sizeof size, "%d x %d x %llu samples x %llu B = %.2f GiB", width, height,
+                static_cast<unsigned long long>(samples), static_cast<unsigned long long>(bytesPerSample),
+                double(bytes) / double(1ull << 30));
+  throw std::invalid_argument(std::string(method->name) + ": the MSAA G-buffer would take " + size +
+                              ", over its budget of " + std::to_string(budget >> 20) +
+                              " MiB: ask for fewer samples or a smaller size");
+}
 }  // namespace
 
 Session::Session(const std::string& scenePath, int width, int height, std::string contextSummary,
-                 const std::string& hostName)
+                 const std::string& hostName, const std::vector<retroaa::Config>& configsToRun)
     : scene(host::loadScene(scenePath)), hostName(hostName), contextSummary(std::move(contextSummary)) {
+  const uint64_t bytesPerSample = hostName == "second" ? host::SecondRenderer::gbufferBytesPerSample()
+                                                       : host::Renderer::gbufferBytesPerSample(scene);
+  for (const retroaa::Config& config : configsToRun) requireGBufferWithinBudget(bytesPerSample, width, height, config);
   if (hostName == "fso") {
     auto fso = std::make_unique<host::Renderer>(scene, width, height);
     fsoHooks = attach<patch::RetroaaHooks>(patch::RetroaaHooks::create(fso->targets(), retroaa::Config{}));

@@ -28,9 +28,10 @@ struct Session {
   retroaa::Config config;      // the config of the last configure(), as requested
 
   // Needs a current GL 4.5 core context; throws what loading the scene or creating the plugin throws, and
-  // std::invalid_argument for a host not in kHostNames.
+  // std::invalid_argument for a host not in kHostNames or, before any target exists, for one of
+  // `configsToRun` whose multisampled G-buffer would exceed the plugin's budget at this size.
   Session(const std::string& scenePath, int width, int height, std::string contextSummary,
-          const std::string& hostName = "fso");
+          const std::string& hostName = "fso", const std::vector<retroaa::Config>& configsToRun = {});
   // The scene camera (frame < 0) or frame `frame` of its recorded path.
   host::Camera camera(int frame) const { return frame < 0 ? scene.camera : scene.path.at(scene.camera, frame); }
   retroaa::Plugin& plugin() const { return fsoHooks ? fsoHooks->plugin() : secondHooks->plugin(); }

@@ -49,6 +49,19 @@ TEST(Cli, BadInputExitsWithCodeTwoAndNamesTheProblem) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find("bad.cfg:2: unknown config key 'closenes'"), std::string::npos) << r.output;
 
+  // A multisampled G-buffer over the plugin's budget is refused before the host's own targets exist (at this size
+  // they alone took 3.6 GB and 6 s before the refusal); a supersampled one by its factor.
+  r = runCli("render --method edge --width 8192 --height 8192 --out " + temp("x.png"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("edge: the MSAA G-buffer would take 8192 x 8192 x 4 samples x 40 B = 10.00 GiB, over its "
+                          "budget of 8192 MiB"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("GL debug"), std::string::npos) << r.output;
+  r = runCli("bench --methods off,ssaa@supersample=4 --width 4096 --height 4096 --json " + temp("bench.json"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("x 16 samples x 40 B"), std::string::npos) << r.output;
+
   r = runCli("render -m 6 --out " + temp("x.png"));  // FSO: warn and use 0
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("-msaa 6 is not one of 0, 4, 8, 16"), std::string::npos) << r.output;

@@ -79,6 +79,19 @@ Program& Program::operator=(Program&& other) noexcept {
   return *this;
 }
 
+uint64_t texelBytes(GLenum format) {
+  switch (format) {
+    case GL_RGBA32F: return 16;
+    case GL_RGBA16F: return 8;
+    case GL_RGBA8:
+    case GL_SRGB8_ALPHA8:
+    case GL_RG16F:
+    case GL_DEPTH24_STENCIL8:
+    case GL_DEPTH_COMPONENT32F: return 4;
+    default: return 0;
+  }
+}
+
 Texture makeTexture2D(GLenum internalFormat, int width, int height, const char* label) {
   GLuint name = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &name);

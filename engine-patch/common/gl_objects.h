@@ -79,6 +79,8 @@ class Program {
   GLuint name_ = 0;
 };
 
+// Bytes a texel of `format` takes, for the formats the hosts allocate (0 for any other).
+uint64_t texelBytes(GLenum format);
 Texture makeTexture2D(GLenum internalFormat, int width, int height, const char* label);
 
 // Uniforms of the bound program, by location.

@@ -9,6 +9,11 @@ namespace host {
 
 namespace {
 
+// opengl_setup_scene_textures(): FSO's G-buffer attachments (colour, position, normal, specular, emissive) and
+// depth, with the velocity attachment of scenes whose objects move.
+constexpr GLenum kGBufferFormats[] = {GL_RGBA16F, GL_RGBA16F, GL_RGBA16F, GL_RGBA8, GL_RGBA16F};
+constexpr GLenum kDepthStencilFormat = GL_DEPTH24_STENCIL8, kVelocityFormat = GL_RG16F;
+
 // The position-depth encoding's #defines, for every program that includes depth_codec.glsl.
 std::string positionDepthDefines(const Scene& scene) {
   if (scene.positionDepth != PositionDepth::FsoCompressed) return "";
@@ -44,19 +49,24 @@ Renderer::Renderer(const Scene& scene, int width, int height)
 
 Renderer::~Renderer() = default;
 
+uint64_t Renderer::gbufferBytesPerSample(const Scene& scene) {
+  uint64_t bytes = texelBytes(kDepthStencilFormat);
+  for (GLenum format : kGBufferFormats) bytes += texelBytes(format);
+  return bytes + (scene.objectsMove() && scene.velocityAttachmentAllowed ? texelBytes(kVelocityFormat) : 0);
+}
+
 void Renderer::createTargets(int width, int height) {
-  // opengl_setup_scene_textures(): FSO's attachments and formats.
-  color_ = makeTexture2D(GL_RGBA16F, width, height, "host.gbuffer.color");
-  position_ = makeTexture2D(GL_RGBA16F, width, height, "host.gbuffer.position");
-  normal_ = makeTexture2D(GL_RGBA16F, width, height, "host.gbuffer.normal");
-  specular_ = makeTexture2D(GL_RGBA8, width, height, "host.gbuffer.specular");
-  emissive_ = makeTexture2D(GL_RGBA16F, width, height, "host.gbuffer.emissive");
-  depthStencil_ = makeTexture2D(GL_DEPTH24_STENCIL8, width, height, "host.gbuffer.depth_stencil");
+  color_ = makeTexture2D(kGBufferFormats[0], width, height, "host.gbuffer.color");
+  position_ = makeTexture2D(kGBufferFormats[1], width, height, "host.gbuffer.position");
+  normal_ = makeTexture2D(kGBufferFormats[2], width, height, "host.gbuffer.normal");
+  specular_ = makeTexture2D(kGBufferFormats[3], width, height, "host.gbuffer.specular");
+  emissive_ = makeTexture2D(kGBufferFormats[4], width, height, "host.gbuffer.emissive");
+  depthStencil_ = makeTexture2D(kDepthStencilFormat, width, height, "host.gbuffer.depth_stencil");
   light_ = makeTexture2D(GL_RGBA16F, width, height, "host.light");
   display_ = makeTexture2D(GL_RGBA8, width, height, "host.display");
   // Objects that move on their own: the model pass writes their motion too (engines with TAA do).
   const bool writesVelocity = scene_.objectsMove() && scene_.velocityAttachmentAllowed;
-  velocity_ = writesVelocity ? makeTexture2D(GL_RG16F, width, height, "host.gbuffer.velocity") : Texture();
+  velocity_ = writesVelocity ? makeTexture2D(kVelocityFormat, width, height, "host.gbuffer.velocity") : Texture();
 
   GLuint fbos[3];
   glCreateFramebuffers(3, fbos);

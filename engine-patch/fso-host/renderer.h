@@ -17,6 +17,9 @@ class Renderer : public Engine {
  public:
   Renderer(const Scene& scene, int width, int height);
   ~Renderer() override;
+  // Bytes a pixel's G-buffer takes (its attachments and depth-stencil) for `scene`: what an AA module's
+  // multisampled mirror of it takes a sample, known before any target exists.
+  static uint64_t gbufferBytesPerSample(const Scene& scene);
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 

@@ -30,10 +30,21 @@ SecondRenderer::SecondRenderer(const Scene& scene, int width, int height, bool w
 
 SecondRenderer::~SecondRenderer() = default;
 
+namespace {
+// Its G-buffer: octahedral normals, albedo and specular, depth, and world positions where asked for.
+constexpr GLenum kNormalFormat = GL_RG16F, kAlbedoSpecularFormat = GL_RGBA8, kDepthFormat = GL_DEPTH_COMPONENT32F,
+                 kWorldPositionFormat = GL_RGBA32F;
+}  // namespace
+
+uint64_t SecondRenderer::gbufferBytesPerSample(bool worldPositionTarget) {
+  return texelBytes(kNormalFormat) + texelBytes(kAlbedoSpecularFormat) + texelBytes(kDepthFormat) +
+         (worldPositionTarget ? texelBytes(kWorldPositionFormat) : 0);
+}
+
 void SecondRenderer::createTargets(int width, int height) {
-  normal_ = makeTexture2D(GL_RG16F, width, height, "second.gbuffer.normal");
-  albedoSpecular_ = makeTexture2D(GL_RGBA8, width, height, "second.gbuffer.albedo_specular");
-  depth_ = makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, "second.depth");
+  normal_ = makeTexture2D(kNormalFormat, width, height, "second.gbuffer.normal");
+  albedoSpecular_ = makeTexture2D(kAlbedoSpecularFormat, width, height, "second.gbuffer.albedo_specular");
+  depth_ = makeTexture2D(kDepthFormat, width, height, "second.depth");
   display_ = makeTexture2D(GL_SRGB8_ALPHA8, width, height, "second.display");
   GLuint fbos[2];
   glCreateFramebuffers(2, fbos);
@@ -42,7 +53,7 @@ void SecondRenderer::createTargets(int width, int height) {
   glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT0, normal_, 0);
   glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT1, albedoSpecular_, 0);
   if (worldPositionTarget_) {
-    worldPosition_ = makeTexture2D(GL_RGBA32F, width, height, "second.gbuffer.world_position");
+    worldPosition_ = makeTexture2D(kWorldPositionFormat, width, height, "second.gbuffer.world_position");
     glNamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT2, worldPosition_, 0);
   }
   const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};

@@ -53,6 +53,9 @@ class SecondRenderer : public Engine {
   // own lighting does not read: a third attachment for a layout that takes depth from it.
   SecondRenderer(const Scene& scene, int width, int height, bool worldPositionTarget = false);
   ~SecondRenderer() override;
+  // Bytes a pixel's G-buffer takes (attachments and depth): what an AA module's multisampled mirror of it
+  // takes a sample, known before any target exists.
+  static uint64_t gbufferBytesPerSample(bool worldPositionTarget = false);
 
   void setSeams(SecondSeams* seams);  // nullptr: the stock path
   const SecondTargets& targets() const { return targets_; }
