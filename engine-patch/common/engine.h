@@ -16,6 +16,16 @@
 
 namespace host {
 
+// The frame's camera as both engines hand it to an AA module (its resolve's closeness test, a history's
+// reprojection), per frame.
+struct FrameView {
+  float verticalFovRadians = 1.0f;  // the projection's (FreeSpace Open's Proj_fov)
+  int width = 0, height = 0;
+  float nearPlane = 0.1f, farPlane = 1e6f;  // metres
+  glm::mat4 view{1.0f};                     // world to view
+  glm::mat4 projection{1.0f};               // view to clip, without an AA module's jitter
+};
+
 // GPU time of the host's passes for the last frame (timer queries), in milliseconds.
 struct HostTimings {
   double modelPassMs = 0;       // the host's own geometry: sky and models into the model-pass target

@@ -3,6 +3,8 @@
 // Each hook names the FreeSpace Open function it corresponds to (docs/integration.md).
 #pragma once
 
+#include "engine.h"
+
 #include <epoxy/gl.h>
 
 #include <glm/glm.hpp>
@@ -23,15 +25,6 @@ struct HostTargets {
   bool logarithmicDepth = true;        // depth buffer holds log2(d/near)/log2(far/near), else perspective depth
   bool fsoCompressedPosition = false;  // position z is FSO's compressed view z (fso_z), else depth_codec
   float globalFarZ = 2.0e6f;           // metres: FSO's GLOBAL_FAR_Z for fso_z (the camera's far plane)
-};
-
-// Camera facts a resolve needs for its closeness test, per frame.
-struct FrameView {
-  float verticalFovRadians = 1.0f;  // the projection's (FreeSpace Open's Proj_fov)
-  int width = 0, height = 0;
-  float nearPlane = 0.1f, farPlane = 1e6f;  // metres
-  glm::mat4 view{1.0f};                     // world to view
-  glm::mat4 projection{1.0f};               // view to clip, without an AA module's jitter
 };
 
 // Draws the frame's models again into `target` with the model shaders; the target's draw buffers

@@ -5,9 +5,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <cstring>
-
-#include <glm/gtc/type_ptr.hpp>
 
 namespace patch {
 
@@ -46,16 +43,6 @@ retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets) {
   layout.displayFramebuffer = targets.displayFramebuffer;
   layout.displayTexture = targets.displayTexture;
   return layout;
-}
-
-retroaa::FrameInfo frameInfo(const host::FrameView& view) {
-  retroaa::FrameInfo frame;
-  frame.verticalFovRadians = view.verticalFovRadians;  // FSO passes its projection's fov
-  frame.nearPlane = view.nearPlane;
-  frame.farPlane = view.farPlane;
-  std::memcpy(frame.viewMatrix, glm::value_ptr(view.view), sizeof frame.viewMatrix);
-  std::memcpy(frame.projectionMatrix, glm::value_ptr(view.projection), sizeof frame.projectionMatrix);
-  return frame;
 }
 
 retroaa::Result<std::unique_ptr<RetroaaHooks>> RetroaaHooks::create(const host::HostTargets& targets,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "frame_hooks.h"
+#include "frame_info.h"
 #include "retroaa/plugin.h"
 
 #include <memory>
@@ -13,8 +14,6 @@ namespace patch {
 
 // The host's G-buffer described to the plugin by role (FSO's layout and depth encoding).
 retroaa::GBufferLayout describeHostGBuffer(const host::HostTargets& targets);
-// The frame's camera as the plugin takes it (both in-repo hosts hand their camera over as a FrameView).
-retroaa::FrameInfo frameInfo(const host::FrameView& view);
 
 class RetroaaHooks : public host::FrameHooks {
  public:

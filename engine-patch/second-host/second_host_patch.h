@@ -1,7 +1,7 @@
 // The second host's patch: the only code of that host that knows retroaa (with second_host_patch.cpp).
 #pragma once
+#include "frame_info.h"
 #include "retroaa/plugin.h"
-#include "retroaa_hooks.h"
 #include "second_renderer.h"
 
 #include <cstdio>

@@ -9,7 +9,6 @@
 #pragma once
 
 #include "engine.h"
-#include "frame_hooks.h"
 #include "gl_objects.h"
 #include "scene.h"
 
