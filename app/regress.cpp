@@ -473,9 +473,9 @@ int runRegress(const RegressOptions& options) {
       {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
       {"flicker", "mean over frames t of the RMS over pixels of (error_t - error_(t-1)), error = image - ground truth"},
       {"scenes", json::array()}};
+  std::vector<retroaa::Config> configs;
+  for (const MethodSpec& spec : specs) configs.push_back(spec.config);
   for (size_t si = 0; si < scenes.size(); ++si) {
-    std::vector<retroaa::Config> configs;
-    for (const MethodSpec& spec : specs) configs.push_back(spec.config);
     Session session(scenes[si], options.width, options.height, context.info().summary(), options.host, configs);
     report["scenes"].push_back(regressScene(session, scenes[si], frames[si], specs, options, progress));
   }

@@ -329,20 +329,26 @@ std::optional<size_t> declaredGltfTriangles(const std::string& path) {
   }
   const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
   if (!document.is_object() || !document.contains("meshes") || !document.contains("accessors")) return std::nullopt;
-  const nlohmann::json& accessors = document["accessors"];
-  auto countOf = [&accessors](const nlohmann::json& index) -> size_t {
-    if (!index.is_number_unsigned() || index.get<size_t>() >= accessors.size()) return 0;
-    return accessors[index.get<size_t>()].value("count", size_t(0));
-  };
-  size_t triangles = 0;
-  for (const nlohmann::json& mesh : document["meshes"])
-    for (const nlohmann::json& primitive : mesh.value("primitives", nlohmann::json::array()))
-      if (primitive.value("mode", 4) == 4)
-        triangles +=
-            (primitive.contains("indices") ? countOf(primitive["indices"])
-                                           : countOf(primitive["attributes"].value("POSITION", nlohmann::json()))) /
-            3;
-  return triangles;
+  try {  // a file assimp read may still hold fields of the wrong type: then nothing is counted
+    const nlohmann::json& accessors = document.at("accessors");
+    auto countOf = [&accessors](const nlohmann::json& index) -> size_t {
+      if (!index.is_number_unsigned() || index.get<size_t>() >= accessors.size()) return 0;
+      return accessors.at(index.get<size_t>()).value("count", size_t(0));
+    };
+    size_t triangles = 0;
+    for (const nlohmann::json& mesh : document.at("meshes"))
+      for (const nlohmann::json& primitive : mesh.value("primitives", nlohmann::json::array()))
+        if (primitive.value("mode", 4) == 4)
+          triangles +=
+              (primitive.contains("indices")
+                   ? countOf(primitive.at("indices"))
+                   : countOf(
+                         primitive.value("attributes", nlohmann::json::object()).value("POSITION", nlohmann::json()))) /
+              3;
+    return triangles;
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -362,13 +368,15 @@ std::vector<ModelPart> loadModel(const std::string& path, std::vector<std::strin
     else
       std::fprintf(stderr, "retroaa: warning: %s\n", what.c_str());
   };
+  const bool droppedFaces = std::any_of(log.messages.begin(), log.messages.end(), [](const std::string& message) {
+    return message.find("out-of-range") != std::string::npos;
+  });
+  const size_t declared = droppedFaces ? declaredGltfTriangles(path).value_or(0) : 0;  // 0: not counted
+  size_t imported = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) imported += scene->mMeshes[m]->mNumFaces;
   for (const std::string& message : log.messages) {
-    size_t imported = 0;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) imported += scene->mMeshes[m]->mNumFaces;
-    const std::optional<size_t> declared =
-        message.find("out-of-range") != std::string::npos ? declaredGltfTriangles(path) : std::nullopt;
-    if (declared && *declared > imported)
-      warn(path + ": " + std::to_string(*declared - imported) + " of " + std::to_string(*declared) +
+    if (declared > imported && message.find("out-of-range") != std::string::npos)
+      warn(path + ": " + std::to_string(declared - imported) + " of " + std::to_string(declared) +
            " faces had out-of-range indices; they are left out");
     else
       warn(path + ": " + message);
