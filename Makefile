@@ -50,21 +50,35 @@ STK_FRAME ?= 40
 STK_REPORT_METHODS = off stk-mlaa fxaa smaa resolve resolve/front resolve/back resolve/fso coverage reconstruct \
   edge adaptive aggregate smaa-s2x per-sample resolve+fxaa resolve+smaa resolve+coverage resolve+reconstruct \
   edge+smaa ssaa@supersample=2 temporal@temporal_before_tonemap=off per-sample@sample_shading=1 edge@sample_shading=1
+# Then the same with the effects of STK's high preset on (out/stk/effects/<track>), and a driven race
+# (out/stk/race: STK's AI drives, each method from the start, frames 600-607 at 320x240 against the same
+# frames at 1280x960; the kart and the wires scored apart).
+STK_RACE_METHODS = off fxaa smaa reconstruct resolve edge per-sample temporal reconstruct+temporal
+STK_RACE_SCORE = --region kart=120,110,80,75 --region wires=160,0,160,70 --crop 128,112,64 --crop 200,20,64
 stk-report: stk
-	for track in $(STK_TRACKS); do \
-	  case $$track in black_forest) crop="210 130" ;; *) crop="300 200" ;; esac; set -- $$crop; \
-	  bash $(STK_DIR)/capture.sh $(STK) $$track 640x480 $(STK_FRAME) "$(STK_REPORT_METHODS)" out/stk/$$track 1 && \
-	  bash $(STK_DIR)/capture.sh $(STK) $$track 2560x1920 $(STK_FRAME) "off" out/stk/$$track/reference 1 && \
-	  $(RETROAA) score out/stk/$$track --reference out/stk/$$track/reference/off.png --factor 4 \
-	    --crop-x $$1 --crop-y $$2 --crop-size 64 || exit 1; done
+	for effects in "" --effects; do for track in $(STK_TRACKS); do \
+	  case $$track in black_forest) crop=210,130,64 ;; *) crop=300,200,64 ;; esac; \
+	  dir=out/stk/$${effects:+effects/}$$track; \
+	  bash $(STK_DIR)/capture.sh $(STK) $$track 640x480 $(STK_FRAME) "$(STK_REPORT_METHODS)" $$dir 1 $$effects && \
+	  bash $(STK_DIR)/capture.sh $(STK) $$track 2560x1920 $(STK_FRAME) "off" $$dir/reference 1 $$effects && \
+	  $(RETROAA) score $$dir --reference $$dir/reference/off.png --factor 4 --crop $$crop || exit 1; done; done
+	bash $(STK_DIR)/race.sh $(STK) $(RETROAA) cornfield_crossing 320x240 607 8 "$(STK_RACE_METHODS)" out/stk/race \
+	  $(STK_RACE_SCORE)
 
 # The real-engine check (run by .ci/run, not by `make test`): the core methods at 320x240 on an indoor
 # track (silhouettes against geometry: every multi-sample method must beat off's edge PSNR) and on one
 # with sky and power lines (the sky must stay as off has it), each against STK's own 4x render.
 STK_TEST_METHODS = off fxaa resolve reconstruct edge per-sample temporal@temporal_before_tonemap=off
+# Then: the choice in STK's graphics settings (saved, applied in a race, an unknown one falling back); the
+# effects of its high preset on; and a short driven race (reproducible, every method from the start).
 test-stk: stk
 	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) olivermath $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/olivermath --edges --whole-frame
 	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) cornfield_crossing $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/cornfield_crossing --sky --whole-frame
+	bash $(STK_DIR)/options.sh $(STK) edge@samples=4 out/test-stk/options
+	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) olivermath $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/effects --effects
+	bash $(STK_DIR)/race.sh $(STK) $(RETROAA) cornfield_crossing 320x240 404 4 "fxaa reconstruct temporal" out/test-stk/race \
+	  $(STK_RACE_SCORE)
+	python3 $(STK_DIR)/check.py out/test-stk/race $(STK_DIR)/patches --race
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo

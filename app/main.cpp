@@ -243,15 +243,23 @@ void addScore(CommandLine& line) {
   CLI::App* sub = line.cli.add_subcommand(
       "score", "a foreign engine's captured frames (one per method) against its supersampled reference render");
   sub->add_option("captures", options->captureDir, "folder with capture.jsonl and the captured PNGs")->required();
-  sub->add_option("--reference", options->reference, "the same frame rendered at --factor× width and height")
+  sub->add_option("--reference", options->reference,
+                  "the same frame rendered at --factor× width and height; for a sequence (records with a frame), "
+                  "the folder of the reference's capture, matched frame by frame")
       ->required();
   sub->add_option("--factor", options->factor, "the reference's scale, box-filtered down in linear light")
       ->default_val(4);
   sub->add_option("--out", options->out, "folder for report.md, report.json and crops (default: the captures')");
-  sub->add_option("--crop-x", options->cropX, "crop x (capture pixels, from the left)");
-  sub->add_option("--crop-y", options->cropY, "crop y (from the top)");
-  sub->add_option("--crop-size", options->cropSize, "crop size; 0 writes no crops")->default_val(0);
-  line.commands.push_back({sub, [options](const retroaa::Config&) { return app::score(*options); }});
+  auto crops = std::make_shared<std::vector<std::string>>();
+  auto regions = std::make_shared<std::vector<std::string>>();
+  sub->add_option("--crop", *crops, "X,Y,SIZE: a square of capture pixels shown 4× for every method (repeatable)");
+  sub->add_option("--region", *regions, "NAME=X,Y,W,H: a rectangle scored apart, e.g. kart=120,150,80,60 (repeatable)");
+  line.commands.push_back({sub, [options, crops, regions](const retroaa::Config&) {
+                             for (const std::string& crop : *crops) options->crops.push_back(app::parseCrop(crop));
+                             for (const std::string& region : *regions)
+                               options->regions.push_back(app::parseRegion(region));
+                             return app::score(*options);
+                           }});
 }
 
 }  // namespace

@@ -130,4 +130,24 @@ std::vector<uint8_t> errorHeatmap(const DisplayImage& image, const DisplayImage&
   return out;
 }
 
+void SequenceError::add(const DisplayImage& image, const DisplayImage& reference, const std::vector<uint8_t>& changed) {
+  if (std::count(changed.begin(), changed.end(), 1) > 0)
+    lagSum_ += pixelErrors(image, reference, changed).edgePsnrDb, ++lagFrames_;
+  std::vector<float> error(image.rgb.size());
+  for (size_t i = 0; i < error.size(); ++i) error[i] = image.rgb[i] - reference.rgb[i];
+  if (previousError_.size() == error.size()) {
+    double sum = 0;
+    for (size_t i = 0; i < error.size(); ++i)
+      sum += double(error[i] - previousError_[i]) * (error[i] - previousError_[i]);
+    flickerSum_ += std::sqrt(sum / double(std::max<size_t>(error.size(), 1)));
+    ++flickerPairs_;
+  }
+  previousError_ = std::move(error);
+}
+
+std::optional<double> SequenceError::lagPsnrDb() const {
+  if (!lagFrames_) return std::nullopt;
+  return lagSum_ / lagFrames_;
+}
+
 }  // namespace app

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace app {
@@ -37,6 +38,23 @@ ErrorMetrics compare(const DisplayImage& image, const DisplayImage& reference, c
 ErrorMetrics pixelErrors(const DisplayImage& image, const DisplayImage& reference,
                          const std::vector<uint8_t>& edgeMask);
 double ssim(const DisplayImage& a, const DisplayImage& b);
+
+// A method's error over consecutive frames of one sequence, added in order.
+class SequenceError {
+ public:
+  // `changed`: the pixels whose reference changed since the frame before (empty: none known).
+  void add(const DisplayImage& image, const DisplayImage& reference, const std::vector<uint8_t>& changed);
+  // Mean over consecutive pairs of the RMS change of the signed error: shimmer and swings the reference
+  // does not have. 0 with one frame.
+  double flicker() const { return flickerPairs_ ? flickerSum_ / flickerPairs_ : 0.0; }
+  // Mean PSNR over the changed pixels of the frames that have any: a history's lag shows there.
+  std::optional<double> lagPsnrDb() const;
+
+ private:
+  std::vector<float> previousError_;  // signed display error of the frame before
+  double flickerSum_ = 0, lagSum_ = 0;
+  int flickerPairs_ = 0, lagFrames_ = 0;
+};
 
 // Edge pixels of the ground truth: where its supersamples' display luma spread exceeds `threshold`.
 std::vector<uint8_t> edgeMaskFromSpread(const std::vector<float>& lumaStdDev, float threshold = 0.03f);

@@ -42,23 +42,20 @@ std::string fileSafe(std::string name) {
 // Per method, summed over a scene's frames.
 struct MethodTotals {
   double psnr = 0, edgePsnr = 0, minEdgePsnr = 1e9, interiorPsnr = 0, psnrVsPerSample = 0, ssim = 0, maxError = 0;
-  double lagPsnr = 0;  // on the pixels whose ground truth changed since the previous frame (FrameReference)
-  int lagFrames = 0;
-  double evaluations = 0, gpuMs = 0, flicker = 0;
+  SequenceError sequence;  // flicker, and lag on the pixels whose ground truth changed (FrameReference)
+  double evaluations = 0, gpuMs = 0;
   double wallMs = 0;  // of the first frame (0: not measured)
   std::map<std::string, double> passMs;
-  int frames = 0, flickerFrames = 0, edgeFrames = 0;  // edge figures: frames whose ground truth has edges
+  int frames = 0, edgeFrames = 0;  // edge figures: frames whose ground truth has edges
   int interiorFrames = 0;
   double bytesPerPixel = 0;
-  std::vector<float> previousError;  // signed display error of the previous frame
 
   void add(const Measurement& m, const FrameReference& reference) {
     psnr += m.error.psnrDb;
     if (m.error.edgePixels > 0)
       edgePsnr += m.error.edgePsnrDb, minEdgePsnr = std::min(minEdgePsnr, m.error.edgePsnrDb), ++edgeFrames;
     if (m.error.interiorPixels > 0) interiorPsnr += m.error.interiorPsnrDb, ++interiorFrames;
-    if (std::count(reference.changed.begin(), reference.changed.end(), 1) > 0)
-      lagPsnr += pixelErrors(m.image, reference.truth, reference.changed).edgePsnrDb, ++lagFrames;
+    sequence.add(m.image, reference.truth, reference.changed);
     psnrVsPerSample += m.psnrVsPerSampleDb.value_or(0);
     ssim += m.error.ssim, maxError = std::max(maxError, m.error.maxAbsError);
     evaluations += m.stats.evaluationsPerPixel(), gpuMs += m.gpuMs;
@@ -66,16 +63,6 @@ struct MethodTotals {
     for (const auto& [name, ms] : m.passMs) passMs[name] += ms;
     bytesPerPixel = m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0;
     ++frames;
-    std::vector<float> error(m.image.rgb.size());
-    for (size_t i = 0; i < error.size(); ++i) error[i] = m.image.rgb[i] - reference.truth.rgb[i];
-    if (!previousError.empty()) {
-      double sum = 0;
-      for (size_t i = 0; i < error.size(); ++i)
-        sum += double(error[i] - previousError[i]) * (error[i] - previousError[i]);
-      flicker += std::sqrt(sum / error.size());
-      ++flickerFrames;
-    }
-    previousError = std::move(error);
   }
 
   // Means over the frames (minimum and maximum where named so), by the names bench uses.
@@ -94,11 +81,11 @@ struct MethodTotals {
             {"edge_psnr_db", edgeFrames ? json(edgePsnr / edgeFrames) : json(nullptr)},
             {"min_edge_psnr_db", edgeFrames ? json(minEdgePsnr) : json(nullptr)},
             {"interior_psnr_db", interiorFrames ? json(interiorPsnr / interiorFrames) : json(nullptr)},
-            {"lag_psnr_db", lagFrames ? json(lagPsnr / lagFrames) : json(nullptr)},
+            {"lag_psnr_db", sequence.lagPsnrDb() ? json(*sequence.lagPsnrDb()) : json(nullptr)},
             {"psnr_vs_per_sample_db", psnrVsPerSample / n},
             {"ssim", ssim / n},
             {"max_abs_error", maxError},
-            {"flicker", flickerFrames ? flicker / flickerFrames : 0.0}};
+            {"flicker", sequence.flicker()}};
   }
 };
 

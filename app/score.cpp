@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -55,11 +57,13 @@ DisplayImage downsample(const DisplayImage& big, int factor, std::vector<float>&
   return small;
 }
 
-void writeCrop(const DisplayImage& image, int x0, int y0, int size, int zoom, const std::string& path) {
+// A crop enlarged 4× (nearest), so single pixels show.
+void writeCrop(const DisplayImage& image, const Crop& crop, const std::string& path) {
+  const int zoom = 4, size = crop.size;
   std::vector<uint8_t> rgba(size_t(size * zoom) * size * zoom * 4, 255);
   for (int y = 0; y < size * zoom; ++y)
     for (int x = 0; x < size * zoom; ++x) {
-      const int sx = std::min(image.width - 1, x0 + x / zoom), sy = std::min(image.height - 1, y0 + y / zoom);
+      const int sx = std::min(image.width - 1, crop.x + x / zoom), sy = std::min(image.height - 1, crop.y + y / zoom);
       for (int c = 0; c < 3; ++c)
         rgba[(size_t(y) * size * zoom + x) * 4 + c] =
             uint8_t(std::lround(std::clamp(image.rgb[(size_t(sy) * image.width + sx) * 3 + c], 0.0f, 1.0f) * 255));
@@ -67,44 +71,123 @@ void writeCrop(const DisplayImage& image, int x0, int y0, int size, int zoom, co
   writeImage8(path, size * zoom, size * zoom, rgba);
 }
 
-// One captured method, scored against the reference.
-struct ScoredCapture {
-  nlohmann::json capture;
-  DisplayImage image;
-  ErrorMetrics metrics;
+// A reference frame: the supersampled render box-filtered to the capture's size, and its edge mask.
+struct ReferenceFrame {
+  DisplayImage big, image;
+  std::vector<uint8_t> edges;
 };
 
-// Every record of the engine's capture.jsonl that has an image, scored; a record without one is named.
-std::vector<ScoredCapture> readCaptures(const ScoreOptions& options, const DisplayImage& reference,
-                                        const std::vector<uint8_t>& edges) {
-  const std::string captureLog = options.captureDir + "/capture.jsonl";
+ReferenceFrame readReference(const std::string& path, int factor) {
+  ReferenceFrame frame;
+  frame.big = readDisplay(path);
+  std::vector<float> spread;
+  frame.image = downsample(frame.big, factor, spread);
+  frame.edges = edgeMaskFromSpread(spread);
+  return frame;
+}
+
+// The records of a capture.jsonl that name an image, in order; a record without one is named on stderr.
+std::vector<nlohmann::json> readRecords(const std::string& folder) {
+  const std::string captureLog = folder + "/capture.jsonl";
   std::ifstream in(captureLog);
   if (!in) throw std::invalid_argument(captureLog + ": cannot read (run the engine's capture first)");
-  std::vector<ScoredCapture> rows;
+  std::vector<nlohmann::json> records;
   int lineNumber = 0;
   for (std::string line; std::getline(in, line);) {
     ++lineNumber;
     if (line.empty()) continue;
-    nlohmann::json capture = nlohmann::json::parse(line, nullptr, false);
-    if (capture.is_discarded() || !capture.is_object() || !capture.contains("spec"))
+    nlohmann::json record = nlohmann::json::parse(line, nullptr, false);
+    if (record.is_discarded() || !record.is_object() || !record.contains("spec") || !record["spec"].is_string() ||
+        (record.contains("image") && !record["image"].is_string()) ||
+        (record.contains("frame") && !record["frame"].is_number_integer()))
       throw std::invalid_argument(captureLog + ":" + std::to_string(lineNumber) + ": not a capture record");
-    if (!capture.contains("image")) {
-      std::fprintf(stderr, "retroaa score: %s was not captured: %s\n", capture.value("spec", "?").c_str(),
-                   capture.value("error", "no image").c_str());
+    if (!record.contains("image")) {
+      std::fprintf(stderr, "retroaa score: %s was not captured: %s\n", record["spec"].get<std::string>().c_str(),
+                   record.value("error", "no image").c_str());
       continue;
     }
-    DisplayImage image = readDisplay(options.captureDir + "/" + capture["image"].get<std::string>());
-    if (image.width != reference.width || image.height != reference.height)
-      throw std::invalid_argument(capture["image"].get<std::string>() + " is " + std::to_string(image.width) + "x" +
-                                  std::to_string(image.height) + "; the reference filtered by " +
-                                  std::to_string(options.factor) + " is " + std::to_string(reference.width) + "x" +
-                                  std::to_string(reference.height));
-    const ErrorMetrics metrics = compare(image, reference, edges);
-    rows.push_back({std::move(capture), std::move(image), metrics});
+    records.push_back(std::move(record));
   }
-  if (rows.empty()) throw std::invalid_argument(captureLog + ": no captured method");
-  return rows;
+  if (records.empty()) throw std::invalid_argument(captureLog + ": no captured method");
+  return records;
 }
+
+// The references the records are scored against: one image for all, or, with a reference folder, the
+// reference capture's image of each record's frame.
+class References {
+ public:
+  References(const ScoreOptions& options) : options_(options) {
+    if (!std::filesystem::is_directory(options.reference)) {
+      single_ = readReference(options.reference, options.factor);
+      return;
+    }
+    for (const nlohmann::json& record : readRecords(options.reference))
+      if (record.contains("frame")) paths_[record["frame"].get<int>()] = record["image"].get<std::string>();
+  }
+  bool sequence() const { return !single_; }
+  // The reference of `record`; a frame the reference folder lacks is an error naming it.
+  const ReferenceFrame& of(const nlohmann::json& record) {
+    if (single_) return *single_;
+    const int frame = record.value("frame", -1);
+    const auto path = paths_.find(frame);
+    if (path == paths_.end())
+      throw std::invalid_argument(options_.reference + "/capture.jsonl has no frame " + std::to_string(frame) +
+                                  " (for " + record["image"].get<std::string>() + ")");
+    auto cached = frames_.find(frame);
+    if (cached == frames_.end())
+      cached = frames_.emplace(frame, readReference(options_.reference + "/" + path->second, options_.factor)).first;
+    return cached->second;
+  }
+  // Pixels whose reference changed (more than 4/255 in a channel) from `frame - 1` to `frame`; empty
+  // without both.
+  std::vector<uint8_t> changedAt(const nlohmann::json& record) {
+    const int frame = record.value("frame", -1);
+    if (!single_ && paths_.count(frame) && paths_.count(frame - 1)) {
+      nlohmann::json before = record;
+      before["frame"] = frame - 1;
+      const DisplayImage& a = of(before).image;
+      const DisplayImage& b = of(record).image;
+      std::vector<uint8_t> changed(a.rgb.size() / 3, 0);
+      for (size_t i = 0; i < a.rgb.size(); ++i)
+        if (std::abs(a.rgb[i] - b.rgb[i]) > 4.0f / 255) changed[i / 3] = 1;
+      return changed;
+    }
+    return {};
+  }
+
+ private:
+  const ScoreOptions& options_;
+  std::optional<ReferenceFrame> single_;
+  std::map<int, std::string> paths_;
+  std::map<int, ReferenceFrame> frames_;
+};
+
+// The figures of one region of an image against its reference (the edge mask cut to it).
+ErrorMetrics regionErrors(const DisplayImage& image, const ReferenceFrame& reference, const Region& region) {
+  DisplayImage a, b;
+  a.width = b.width = region.width, a.height = b.height = region.height;
+  std::vector<uint8_t> edges;
+  for (int y = region.y; y < region.y + region.height; ++y)
+    for (int x = region.x; x < region.x + region.width; ++x) {
+      const size_t p = size_t(y) * image.width + x;
+      for (int c = 0; c < 3; ++c)
+        a.rgb.push_back(image.rgb[p * 3 + c]), b.rgb.push_back(reference.image.rgb[p * 3 + c]);
+      edges.push_back(reference.edges[p]);
+    }
+  return pixelErrors(a, b, edges);
+}
+
+// One method over its frames (one frame for a held capture).
+struct MethodScore {
+  std::string spec, lastImage;
+  nlohmann::json lastRecord;
+  DisplayImage lastFrame;
+  int frames = 0, edgeFrames = 0;
+  double psnr = 0, edgePsnr = 0, interiorPsnr = 0, ssim = 0, minPsnr = 1e9, maxPsnr = -1e9, wall = 0;
+  double edgePixels = 0;
+  std::vector<double> regionPsnr, regionEdgePsnr;
+  SequenceError sequence;
+};
 
 // The reference's background.png, where its capture wrote one, marks its pixels without geometry: a
 // capture pixel whose block and neighbours' blocks are all background there (no wire thinner than a
@@ -140,52 +223,129 @@ nlohmann::json skyKept(const DisplayImage& image, const DisplayImage& off, const
   return double(kept) / double(sky.size());
 }
 
-void writeReferenceImages(const ScoreOptions& options, const DisplayImage& reference, const std::string& out) {
-  writeCrop(reference, options.cropX, options.cropY, options.cropSize, 4, out + "/crop-reference.png");
+void writeReferenceImage(const DisplayImage& reference, const std::string& path) {
   std::vector<uint8_t> rgba(reference.rgb.size() / 3 * 4, 255);
   for (size_t p = 0; p < reference.rgb.size() / 3; ++p)
     for (int c = 0; c < 3; ++c)
       rgba[p * 4 + c] = uint8_t(std::lround(std::clamp(reference.rgb[p * 3 + c], 0.f, 1.f) * 255));
-  writeImage8(out + "/reference.png", reference.width, reference.height, rgba);
+  writeImage8(path, reference.width, reference.height, rgba);
 }
 
 }  // namespace
 
+Crop parseCrop(const std::string& text) {
+  Crop crop;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%d,%d,%d%c", &crop.x, &crop.y, &crop.size, &tail) != 3 || crop.x < 0 || crop.y < 0 ||
+      crop.size < 1)
+    throw std::invalid_argument("--crop expects X,Y,SIZE (pixels, size >= 1), got '" + text.substr(0, 40) + "'");
+  return crop;
+}
+
+Region parseRegion(const std::string& text) {
+  Region region;
+  const size_t equals = text.find('=');
+  char tail = 0;
+  if (equals == std::string::npos || equals == 0 ||
+      std::sscanf(text.c_str() + equals + 1, "%d,%d,%d,%d%c", &region.x, &region.y, &region.width, &region.height,
+                  &tail) != 4 ||
+      region.x < 0 || region.y < 0 || region.width < 1 || region.height < 1)
+    throw std::invalid_argument("--region expects NAME=X,Y,W,H (pixels), got '" + text.substr(0, 40) + "'");
+  region.name = text.substr(0, equals);
+  return region;
+}
+
 int score(const ScoreOptions& options) {
   if (options.factor < 1 || options.factor > 16) throw std::invalid_argument("--factor must be 1..16");
-  const DisplayImage big = readDisplay(options.reference);
-  std::vector<float> spread;
-  const DisplayImage reference = downsample(big, options.factor, spread);
-  const std::vector<uint8_t> edges = edgeMaskFromSpread(spread);
+  References references(options);
   const std::string out = options.out.empty() ? options.captureDir : options.out;
-  const std::vector<ScoredCapture> rows = readCaptures(options, reference, edges);
+  std::filesystem::create_directories(out);
+  std::vector<MethodScore> methods;  // in the order of their first record
+  const ReferenceFrame* lastReference = nullptr;
+  for (const nlohmann::json& record : readRecords(options.captureDir)) {
+    const std::string spec = record["spec"].get<std::string>();
+    auto method = std::find_if(methods.begin(), methods.end(), [&](const MethodScore& m) { return m.spec == spec; });
+    if (method == methods.end()) {
+      methods.push_back({});
+      method = methods.end() - 1;
+      method->spec = spec;
+    }
+    const ReferenceFrame& reference = references.of(record);
+    DisplayImage image = readDisplay(options.captureDir + "/" + record["image"].get<std::string>());
+    if (image.width != reference.image.width || image.height != reference.image.height)
+      throw std::invalid_argument(record["image"].get<std::string>() + " is " + std::to_string(image.width) + "x" +
+                                  std::to_string(image.height) + "; the reference filtered by " +
+                                  std::to_string(options.factor) + " is " + std::to_string(reference.image.width) +
+                                  "x" + std::to_string(reference.image.height));
+    for (const Region& region : options.regions)
+      if (region.x + region.width > image.width || region.y + region.height > image.height)
+        throw std::invalid_argument("--region " + region.name + " reaches past the " + std::to_string(image.width) +
+                                    "x" + std::to_string(image.height) + " capture");
+    const ErrorMetrics metrics = compare(image, reference.image, reference.edges);
+    method->frames++;
+    method->psnr += metrics.psnrDb, method->interiorPsnr += metrics.interiorPsnrDb, method->ssim += metrics.ssim;
+    if (metrics.edgePixels > 0) method->edgePsnr += metrics.edgePsnrDb, method->edgeFrames++;
+    method->edgePixels = metrics.edgePixels;
+    method->minPsnr = std::min(method->minPsnr, metrics.psnrDb),
+    method->maxPsnr = std::max(method->maxPsnr, metrics.psnrDb);
+    method->wall += record.value("wall_ms", 0.0);
+    method->regionPsnr.resize(options.regions.size()), method->regionEdgePsnr.resize(options.regions.size());
+    for (size_t r = 0; r < options.regions.size(); ++r) {
+      const ErrorMetrics inside = regionErrors(image, reference, options.regions[r]);
+      method->regionPsnr[r] += inside.psnrDb, method->regionEdgePsnr[r] += inside.edgePsnrDb;
+    }
+    method->sequence.add(image, reference.image, references.changedAt(record));
+    method->lastRecord = record, method->lastImage = record["image"].get<std::string>();
+    method->lastFrame = std::move(image);
+    lastReference = &reference;
+  }
 
   // `off` (the engine's stock path) is the baseline of the ratios and of the sky check: sky must stay
-  // as off has it.
-  const ScoredCapture* off = nullptr;
-  for (const ScoredCapture& row : rows)
-    if (row.capture["spec"] == "off") off = &row;
-  const double offWall = off ? off->capture.value("wall_ms", 0.0) : 0.0;
-  const std::vector<size_t> sky = off ? skyPixels(options, big, reference) : std::vector<size_t>{};
+  // as off has it (a held frame's only: the mask is its reference's).
+  const MethodScore* off = nullptr;
+  for (const MethodScore& method : methods)
+    if (method.spec == "off") off = &method;
+  const double offWall = off ? off->wall / off->frames : 0.0;
+  const std::vector<size_t> sky = off && !references.sequence()
+                                      ? skyPixels(options, lastReference->big, lastReference->image)
+                                      : std::vector<size_t>{};
 
   nlohmann::json report = nlohmann::json::array();
   std::ostringstream md;
-  md << "| method | PSNR dB | edge PSNR dB | interior PSNR dB | evals/px | wall ms | × off | retroaa passes GPU ms | "
-        "plugin MB | sky kept |\n|---|---|---|---|---|---|---|---|---|---|\n";
-  char buffer[512];
-  for (const ScoredCapture& row : rows) {
-    const nlohmann::json& r = row.capture.contains("retroaa") ? row.capture["retroaa"] : nlohmann::json::object();
+  const bool sequence = references.sequence();
+  md << "| method | " << (sequence ? "frames | " : "") << "PSNR dB | edge PSNR dB | interior PSNR dB | "
+     << (sequence ? "PSNR swing dB | flicker | lag PSNR dB | " : "");
+  for (const Region& region : options.regions) md << region.name << " PSNR / edge dB | ";
+  md << "evals/px | wall ms | × off | retroaa passes GPU ms | plugin MB | sky kept |\n|---|";
+  const int columns = 9 + (sequence ? 4 : 0) + int(options.regions.size());
+  for (int c = 0; c < columns; ++c) md << "---|";
+  md << "\n";
+  char buffer[256];
+  for (const MethodScore& method : methods) {
+    const double n = method.frames;
+    const nlohmann::json& r =
+        method.lastRecord.contains("retroaa") ? method.lastRecord["retroaa"] : nlohmann::json::object();
     double passMs = 0;
     if (r.contains("passes"))
       for (const auto& pass : r["passes"].items()) passMs += pass.value().get<double>();
-    const nlohmann::json kept = off ? skyKept(row.image, off->image, sky) : nlohmann::json();
-    const double wall = row.capture.value("wall_ms", 0.0);
-    nlohmann::json entry = {{"spec", row.capture["spec"]},
-                            {"psnr_db", row.metrics.psnrDb},
-                            {"edge_psnr_db", row.metrics.edgePsnrDb},
-                            {"interior_psnr_db", row.metrics.interiorPsnrDb},
-                            {"ssim", row.metrics.ssim},
-                            {"edge_pixels", row.metrics.edgePixels},
+    const nlohmann::json kept = off ? skyKept(method.lastFrame, off->lastFrame, sky) : nlohmann::json();
+    const double wall = method.wall / n;
+    nlohmann::json regions = nlohmann::json::object();
+    for (size_t i = 0; i < options.regions.size(); ++i)
+      regions[options.regions[i].name] = {{"psnr_db", method.regionPsnr[i] / n},
+                                          {"edge_psnr_db", method.regionEdgePsnr[i] / n}};
+    const std::optional<double> lag = method.sequence.lagPsnrDb();
+    nlohmann::json entry = {{"spec", method.spec},
+                            {"frames", method.frames},
+                            {"psnr_db", method.psnr / n},
+                            {"edge_psnr_db", method.edgeFrames ? method.edgePsnr / method.edgeFrames : 0.0},
+                            {"interior_psnr_db", method.interiorPsnr / n},
+                            {"ssim", method.ssim / n},
+                            {"edge_pixels", method.edgePixels},
+                            {"psnr_swing_db", method.maxPsnr - method.minPsnr},
+                            {"flicker", method.sequence.flicker()},
+                            {"lag_psnr_db", lag ? nlohmann::json(*lag) : nlohmann::json()},
+                            {"regions", regions},
                             {"evaluations_per_pixel", r.value("evaluations_per_pixel", 1.0)},
                             {"wall_ms", wall},
                             {"wall_vs_off", offWall > 0 ? wall / offWall : 0.0},
@@ -195,20 +355,41 @@ int score(const ScoreOptions& options) {
                             {"sky_pixels", sky.size()},
                             {"sky_kept", kept}};
     report.push_back(entry);
-    std::snprintf(buffer, sizeof buffer, "| `%s` | %.2f | %.2f | %.2f | %.2f | %.0f | %.2f | %.1f | %.1f | %s |\n",
-                  row.capture["spec"].get<std::string>().c_str(), row.metrics.psnrDb, row.metrics.edgePsnrDb,
-                  row.metrics.interiorPsnrDb, entry["evaluations_per_pixel"].get<double>(), wall,
-                  offWall > 0 ? wall / offWall : 0.0, passMs, entry["plugin_bytes"].get<double>() / 1048576.0,
+    md << "| `" << method.spec << "` | ";
+    if (sequence) md << method.frames << " | ";
+    std::snprintf(buffer, sizeof buffer, "%.2f | %.2f | %.2f | ", entry["psnr_db"].get<double>(),
+                  entry["edge_psnr_db"].get<double>(), entry["interior_psnr_db"].get<double>());
+    md << buffer;
+    if (sequence) {
+      std::snprintf(buffer, sizeof buffer, "%.2f | %.4f | %s | ", entry["psnr_swing_db"].get<double>(),
+                    entry["flicker"].get<double>(), lag ? std::to_string(*lag).substr(0, 5).c_str() : "–");
+      md << buffer;
+    }
+    for (size_t i = 0; i < options.regions.size(); ++i) {
+      std::snprintf(buffer, sizeof buffer, "%.2f / %.2f | ", method.regionPsnr[i] / n, method.regionEdgePsnr[i] / n);
+      md << buffer;
+    }
+    std::snprintf(buffer, sizeof buffer, "%.2f | %.0f | %.2f | %.1f | %.1f | %s |\n",
+                  entry["evaluations_per_pixel"].get<double>(), wall, offWall > 0 ? wall / offWall : 0.0, passMs,
+                  entry["plugin_bytes"].get<double>() / 1048576.0,
                   kept.is_null() ? "–" : std::to_string(kept.get<double>()).substr(0, 6).c_str());
     md << buffer;
-    if (options.cropSize > 0)
-      writeCrop(row.image, options.cropX, options.cropY, options.cropSize, 4,
-                out + "/crop-" + row.capture["image"].get<std::string>());
+    for (size_t c = 0; c < options.crops.size(); ++c)
+      writeCrop(
+          method.lastFrame, options.crops[c],
+          out + "/crop" + std::to_string(c + 1) + "-" + std::filesystem::path(method.lastImage).filename().string());
   }
-  if (options.cropSize > 0) writeReferenceImages(options, reference, out);
-  md << "\nReference: " << options.reference << " box-filtered " << options.factor << "×" << options.factor
-     << " in linear light; " << std::count(edges.begin(), edges.end(), 1) << " edge pixels (luma spread > 0.03); "
-     << sky.size()
+  for (size_t c = 0; c < options.crops.size(); ++c)
+    writeCrop(lastReference->image, options.crops[c], out + "/crop" + std::to_string(c + 1) + "-reference.png");
+  if (!options.crops.empty()) writeReferenceImage(lastReference->image, out + "/reference.png");
+  md << "\nReference: " << options.reference << (sequence ? " (each frame's)" : "") << " box-filtered "
+     << options.factor << "×" << options.factor << " in linear light; "
+     << std::count(lastReference->edges.begin(), lastReference->edges.end(), 1) << " edge pixels"
+     << (sequence ? " in the last frame" : "") << " (luma spread > 0.03)"
+     << (sequence ? "; swing: the largest minus the smallest frame's PSNR; flicker: RMS frame-to-frame change of "
+                    "the signed error; lag: PSNR where the reference changed since the frame before"
+                  : "")
+     << "; " << sky.size()
      << " sky pixels (no geometry within a pixel of them in the reference), kept = within 1/255 of off.\n";
   std::ofstream(out + "/report.md") << md.str();
   std::ofstream(out + "/report.json") << report.dump(2) << "\n";

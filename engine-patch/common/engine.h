@@ -24,6 +24,12 @@ struct FrameView {
   float nearPlane = 0.1f, farPlane = 1e6f;  // metres
   glm::mat4 view{1.0f};                     // world to view
   glm::mat4 projection{1.0f};               // view to clip, without an AA module's jitter
+  // Objects that move on their own, as boxes (the cube [-1, 1]³ onto each, world space) now and a frame
+  // ago: what an engine without a velocity output can say of its moving objects (Scene::ObjectMotion::Boxes).
+  struct MovingBox {
+    glm::mat4 now{1.0f}, before{1.0f};
+  };
+  std::vector<MovingBox> movingBoxes;
 };
 
 // GPU time of the host's passes for the last frame (timer queries), in milliseconds.

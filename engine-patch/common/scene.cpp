@@ -562,7 +562,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   const json document = parseSceneDocument(jsonText, fileName);
   const Reader root(fileName, document, "$");
   root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient", "sky_color",
-                     "star_density", "exposure", "shading", "depth_buffer", "position_depth", "velocity_attachment",
+                     "star_density", "exposure", "shading", "depth_buffer", "position_depth", "object_motion",
                      "comment"});
   Scene scene;
   scene.name = root.has("name") ? root.child("name").string() : fileName;
@@ -574,7 +574,11 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   if (!fitToObjects) scene.camera = readCamera(root.child("camera"));
   scene.ambient = root.vec3Or("ambient", scene.ambient, 0.0f, 1e4f);
   scene.skyColor = root.vec3Or("sky_color", scene.skyColor, 0.0f, 1e4f);
-  if (root.has("velocity_attachment")) scene.velocityAttachmentAllowed = root.child("velocity_attachment").boolean();
+  if (root.has("object_motion"))
+    scene.objectMotion = namedValue<Scene::ObjectMotion>(root.child("object_motion"), "object motion",
+                                                         {{"velocity", Scene::ObjectMotion::Velocity},
+                                                          {"boxes", Scene::ObjectMotion::Boxes},
+                                                          {"camera", Scene::ObjectMotion::Camera}});
   scene.starDensity = root.numberOr("star_density", scene.starDensity, 0.0f, 10.0f);
   scene.exposure = root.numberOr("exposure", scene.exposure, 1e-4f, 1e4f);
   scene.shading = root.has("shading") ? namedValue<ShadingModel>(

@@ -96,9 +96,12 @@ struct Scene {
   ShadingModel shading = ShadingModel::BlinnPhong;
   DepthBuffer depthBuffer = DepthBuffer::Logarithmic;
   PositionDepth positionDepth = PositionDepth::LogAboveKnee;
-  // The FSO-shaped host's model pass also writes each pixel's screen motion (a velocity attachment) when
-  // an object moves on its own, unless the scene says "velocity_attachment": false.
-  bool velocityAttachmentAllowed = true;
+  // How the FSO-shaped host tells a history of the objects that move on their own ("object_motion"):
+  // its model pass writes each pixel's screen motion (a velocity attachment), it hands a box around each
+  // object now and a frame ago (FrameInfo::movingObjects, an engine without a velocity output), or neither
+  // (the camera alone).
+  enum class ObjectMotion { Velocity, Boxes, Camera };
+  ObjectMotion objectMotion = ObjectMotion::Velocity;
   bool objectsMove() const;
   size_t triangleCount() const;
 };

@@ -23,7 +23,27 @@ std::string positionDepthDefines(const Scene& scene) {
   return text;
 }
 
+bool writesVelocity(const Scene& scene) {
+  return scene.objectsMove() && scene.objectMotion == Scene::ObjectMotion::Velocity;
+}
+
 }  // namespace
+
+std::vector<FrameView::MovingBox> Renderer::movingBoxes() const {
+  std::vector<FrameView::MovingBox> boxes;
+  for (const Object& object : scene_.objects) {
+    if (object.velocity == glm::vec3(0.0f) || object.mesh.vertices.empty()) continue;
+    glm::vec3 low(1e30f), high(-1e30f);
+    for (const Vertex& vertex : object.mesh.vertices)
+      low = glm::min(low, vertex.position), high = glm::max(high, vertex.position);
+    // The cube [-1, 1]³ onto the mesh's bounds, a little larger (an engine's boxes are seldom tight).
+    const glm::mat4 cubeToMesh =
+        glm::scale(glm::translate(glm::mat4(1.0f), 0.5f * (low + high)), 0.5f * (high - low) * 1.05f + 1e-3f);
+    boxes.push_back(
+        {object.transformAt(motion_.currentTime) * cubeToMesh, object.transformAt(motion_.previousTime) * cubeToMesh});
+  }
+  return boxes;
+}
 
 Renderer::Renderer(const Scene& scene, int width, int height)
     : scene_(scene),
@@ -52,7 +72,7 @@ Renderer::~Renderer() = default;
 uint64_t Renderer::gbufferBytesPerSample(const Scene& scene) {
   uint64_t bytes = texelBytes(kDepthStencilFormat);
   for (GLenum format : kGBufferFormats) bytes += texelBytes(format);
-  return bytes + (scene.objectsMove() && scene.velocityAttachmentAllowed ? texelBytes(kVelocityFormat) : 0);
+  return bytes + (writesVelocity(scene) ? texelBytes(kVelocityFormat) : 0);
 }
 
 void Renderer::createTargets(int width, int height) {
@@ -65,8 +85,8 @@ void Renderer::createTargets(int width, int height) {
   light_ = makeTexture2D(GL_RGBA16F, width, height, "host.light");
   display_ = makeTexture2D(GL_RGBA8, width, height, "host.display");
   // Objects that move on their own: the model pass writes their motion too (engines with TAA do).
-  const bool writesVelocity = scene_.objectsMove() && scene_.velocityAttachmentAllowed;
-  velocity_ = writesVelocity ? makeTexture2D(kVelocityFormat, width, height, "host.gbuffer.velocity") : Texture();
+  velocity_ =
+      writesVelocity(scene_) ? makeTexture2D(kVelocityFormat, width, height, "host.gbuffer.velocity") : Texture();
 
   GLuint fbos[3];
   glCreateFramebuffers(3, fbos);
@@ -74,7 +94,7 @@ void Renderer::createTargets(int width, int height) {
   lightFramebuffer_ = Framebuffer(fbos[1]);
   displayFramebuffer_ = Framebuffer(fbos[2]);
   const GLuint attachments[] = {color_, position_, normal_, specular_, emissive_, velocity_};
-  const int attachmentCount = writesVelocity ? 6 : 5;
+  const int attachmentCount = writesVelocity(scene_) ? 6 : 5;
   GLenum drawBuffers[6];
   for (int i = 0; i < attachmentCount; ++i) {
     glNamedFramebufferTexture(gbufferFramebuffer_, GL_COLOR_ATTACHMENT0 + i, attachments[i], 0);
@@ -169,6 +189,7 @@ void Renderer::renderFrame(const Camera& camera, glm::vec2 jitterPixels) {
   frameView.farPlane = camera.farPlane;
   frameView.view = view;
   frameView.projection = camera.projection(width, height, jitterPixels);
+  if (scene_.objectMotion == Scene::ObjectMotion::Boxes) frameView.movingBoxes = movingBoxes();
   hooks_->modelPassEnd(frameView);
   hooks_->modelPrepass([&](GLuint target) { drawPrepass(target, camera, projection); });
   stages.stamp(StageTimestamps::HooksEnd);

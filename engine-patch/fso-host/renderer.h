@@ -68,6 +68,8 @@ class Renderer : public Engine {
     float currentTime = 0, previousTime = 0;
   } motion_;
   bool hasPrevious_ = false;
+  // Scene::ObjectMotion::Boxes: a box around each object that moves, now and at the previous frame's time.
+  std::vector<FrameView::MovingBox> movingBoxes() const;
   int attachmentCount() const { return targets_.velocity ? 6 : 5; }
   Framebuffer gbufferFramebuffer_, lightFramebuffer_, displayFramebuffer_;
   Program modelProgram_, backgroundProgram_, ambientProgram_, pointProgram_, emissiveProgram_, tonemapProgram_;

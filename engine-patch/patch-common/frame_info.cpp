@@ -13,6 +13,12 @@ retroaa::FrameInfo frameInfo(const host::FrameView& view) {
   frame.farPlane = view.farPlane;
   std::memcpy(frame.viewMatrix, glm::value_ptr(view.view), sizeof frame.viewMatrix);
   std::memcpy(frame.projectionMatrix, glm::value_ptr(view.projection), sizeof frame.projectionMatrix);
+  for (const host::FrameView::MovingBox& box : view.movingBoxes) {
+    retroaa::MovingObject object;
+    std::memcpy(object.boxToWorld, glm::value_ptr(box.now), sizeof object.boxToWorld);
+    std::memcpy(object.previousBoxToWorld, glm::value_ptr(box.before), sizeof object.previousBoxToWorld);
+    frame.movingObjects.push_back(object);
+  }
   return frame;
 }
 

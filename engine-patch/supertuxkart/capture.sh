@@ -3,10 +3,27 @@
 # llvmpipe): the race starts at once with one kart and no opponents, the world advances by a fixed step
 # to frame FRAME, then holds still while each method renders it (2 frames to settle, TIMED frames timed,
 # the last one written). Writes OUT/<method>.png and OUT/capture.jsonl.
-#   usage: capture.sh STK_BINARY TRACK WIDTHxHEIGHT FRAME "METHODS" OUT [TIMED]
-# METHODS: retroaa method specs (off, fxaa, edge, resolve/fso+fxaa, ...) and `stk-mlaa` (STK's own MLAA).
+#   usage: capture.sh STK_BINARY TRACK WIDTHxHEIGHT FRAME "METHODS" OUT [TIMED] [--race=K] [--effects]
+# METHODS: retroaa method specs (off, fxaa, edge, resolve/fso+fxaa, ...), `stk-mlaa` (STK's own MLAA) and
+# `chosen` (the choice saved in STK's config.xml; see RETROAA_STK_HOME).
+# --race=K: a race in motion instead: STK's AI drives (its profile mode), the world never holds, the one
+#   method renders from the start, and frames FRAME-K+1 .. FRAME are written (<method>.<frame>.png).
+# --effects: the effects STK's high preset turns on (shadows, SSAO, glow, bloom, light shafts, image-based
+#   lighting, particles) instead of off.
 set -euo pipefail
-binary=$1 track=$2 size=$3 frame=$4 methods=$5 out=$6 timed=${7:-3}
+binary=$1 track=$2 size=$3 frame=$4 methods=$5 out=$6
+shift 6
+timed=3 mode=(--race-now --numkarts=1 --laps=1) race=0
+effects=(--disable-light-shaft --disable-ssao --disable-glow --disable-bloom --disable-ibl --disable-particles --shadows=0)
+for option in "$@"; do
+  case $option in
+    --race=*) race=${option#--race=} mode=(--numkarts=1 --profile-time=100000 "--aa-race=$race") ;;
+    --effects) effects=(--enable-light-shaft --enable-ssao --enable-glow --enable-bloom --enable-ibl --enable-particles
+                        --shadows=1024) ;;
+    *[!0-9]* | '') echo "capture: unknown option '$option'" >&2; exit 2 ;;
+    *) timed=$option ;;
+  esac
+done
 width=${size%x*} height=${size#*x}
 data=/usr/share/games/supertuxkart
 [ -d "$data/data/tracks/$track" ] || { echo "capture: no track '$track' in $data/data/tracks" >&2; exit 2; }
@@ -14,8 +31,13 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 rm -f "$out/capture.jsonl"
 # A private home: STK's config, its first-run screens and its caches stay out of the user's.
-home=$(mktemp -d)
-trap 'rm -rf "$home"' EXIT
+# RETROAA_STK_HOME keeps one across runs (a choice saved in its config.xml).
+if [ -n "${RETROAA_STK_HOME:-}" ]; then
+  home=$(mkdir -p "$RETROAA_STK_HOME" && cd "$RETROAA_STK_HOME" && pwd)
+else
+  home=$(mktemp -d)
+  trap 'rm -rf "$home"' EXIT
+fi
 # Mesa's shader cache outside the clone: STK's ~200 shaders compile once per machine, not per run.
 export MESA_SHADER_CACHE_DIR=${RETROAA_STK_SHADER_CACHE:-/var/cache/retroaa/mesa-shader-cache}
 mkdir -p "$MESA_SHADER_CACHE_DIR"
@@ -29,10 +51,9 @@ status=0
 # The timeout runs inside xvfb-run, on STK itself: STK ignores SIGTERM, so it is killed 15 s later, and
 # xvfb-run then takes its X server down (a timeout around xvfb-run would leave STK running).
 xvfb-run -a -s "-screen 0 ${width}x${height}x24" \
-  timeout --kill-after=15 "${RETROAA_STK_TIMEOUT:-1800}" "$binary" --screensize="${width}x${height}" --windowed --no-sound --no-start-screen --race-now \
-  --track="$track" --numkarts=1 --laps=1 --seed=1 --enable-dynamic-lights --disable-dof --disable-motion-blur \
-  --disable-light-shaft --disable-ssao --disable-glow --disable-bloom --disable-ibl --disable-particles --shadows=0 "$mlaa" \
-  --anisotropic=0 \
+  timeout --kill-after=15 "${RETROAA_STK_TIMEOUT:-1800}" "$binary" --screensize="${width}x${height}" --windowed --no-sound --no-start-screen \
+  --track="$track" "${mode[@]}" --seed=1 --enable-dynamic-lights --disable-dof --disable-motion-blur \
+  "${effects[@]}" "$mlaa" --anisotropic=0 \
   --aa-capture="$out" --aa-capture-frame="$frame" --aa-methods="$methods" --aa-fixed-dt=0.0166667 \
   --aa-timed-frames="$timed" >"$out/stk.log" 2>&1 || status=$?
 if [ "$status" = 124 ] || [ "$status" = 137 ]; then
@@ -42,6 +63,7 @@ if [ "$status" = 124 ] || [ "$status" = 137 ]; then
 fi
 captured=$(grep -c '"image"' "$out/capture.jsonl" 2>/dev/null || true)
 wanted=$(echo "$methods" | wc -w)
+[ "$race" = 0 ] || wanted=$race
 if [ "${captured:-0}" != "$wanted" ]; then
   tail -20 "$out/stk.log" >&2
   echo "capture: $captured of $wanted methods captured on $track (exit $status; $out/stk.log)" >&2

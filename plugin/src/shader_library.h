@@ -31,6 +31,9 @@ class ShaderProgram {
   void setMatrix4(const char* name, const float* columnMajor) const {
     glProgramUniformMatrix4fv(get(), location(name), 1, GL_FALSE, columnMajor);
   }
+  void setMatrix4Array(const char* name, int count, const float* columnMajor) const {
+    glProgramUniformMatrix4fv(get(), location(name), count, GL_FALSE, columnMajor);
+  }
   void setVec2Array(const char* name, int count, const float* xy) const {
     glProgramUniform2fv(get(), location(name), count, xy);
   }

@@ -8,8 +8,8 @@
 //
 // Defines: LINEAR_INPUT (the display is read through its sRGB view, which the texture unit decodes, so
 // the output is encoded again), HAS_VELOCITY (the layout's velocity attachment: geometry follows it
-// instead of the camera, so objects that move on their own keep their history) and the depth buffer's
-// encoding. The history always holds linear colour.
+// instead of the camera, so objects that move on their own keep their history), MAX_MOVING_OBJECTS and
+// the depth buffer's encoding. The history always holds linear colour.
 #include "common/depth_buffer.glsl"
 
 layout(binding = 0) uniform sampler2D uInput;    // a copy of this frame (display or light target)
@@ -22,6 +22,11 @@ uniform vec4 uProjection;          // P[0][0], P[1][1], P[2][0], P[2][1] of this
 uniform float uClipWPerViewZ;      // P[2][3]: -1 for GL's right-handed view space, +1 for a left-handed one
 uniform float uBlend;              // the current frame's weight
 uniform float uHistoryValid;       // 0 on the first frame after a reset (cut, new config, no matrices)
+// FrameInfo::movingObjects, nearest first: a surface inside box i (this view to [-1, 1]³) reprojects
+// through the object's own motion instead of the camera's alone.
+uniform int uMovingObjects;
+uniform mat4 uViewToBox[MAX_MOVING_OBJECTS];
+uniform mat4 uObjectViewToPreviousClip[MAX_MOVING_OBJECTS];
 
 // Pixels whose light, history or blend was not finite (NaN, infinite): the plugin reads the count
 // frames later and tells the host once.
@@ -159,6 +164,11 @@ void main() {
   float zPerDepth = 1.0 / uClipWPerViewZ;
   vec4 viewPoint = sky ? vec4(ray, zPerDepth, 0.0) : vec4(ray * depth, zPerDepth * depth, 1.0);
   vec4 previousClip = uViewToPreviousClip * viewPoint;
+  for (int i = 0; i < uMovingObjects && !sky; ++i)
+    if (all(lessThanEqual(abs((uViewToBox[i] * viewPoint).xyz), vec3(1.0)))) {
+      previousClip = uObjectViewToPreviousClip[i] * viewPoint;
+      break;
+    }
   vec2 previousUv = previousClip.xy / previousClip.w * 0.5 + 0.5;
 #if HAS_VELOCITY
   // The host's own motion, for geometry (the sky keeps the camera's: no model pass drew it). The depth

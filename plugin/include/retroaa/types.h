@@ -183,6 +183,19 @@ struct Description {
   uint64_t gbufferBudgetBytes = uint64_t(8) << 30;
 };
 
+// For a method with a history, in place of a velocity attachment: an object that moves on its own (a kart, a
+// door), as a box around it in this frame and the last. The plugin reprojects each pixel whose surface lies
+// inside the box (depth and the view say where) with the object's motion, so the history follows the object;
+// no shader of the host's changes. Boxes may be loose: a surface inside one that does not move with the
+// object (the road under a kart) is reprojected with it, and the history's depth test rejects it.
+struct MovingObject {
+  // This frame's transform of the cube [-1, 1]³ onto the object's box, in the space viewMatrix maps from,
+  // column-major; and the same transform a frame ago.
+  float boxToWorld[16] = {};
+  float previousBoxToWorld[16] = {};
+};
+constexpr int kMaxMovingObjects = 16;  // more in one frame: the nearest are kept (with one warning)
+
 // Per-frame camera facts for the closeness tests.
 struct FrameInfo {
   // The projection's vertical field of view (what FreeSpace Open passes its MSAA resolve as `fov`).
@@ -199,6 +212,9 @@ struct FrameInfo {
   // For a method with a history: the view does not continue the previous frame's (a cut, a teleport, a new level): the
   // history is dropped and this frame starts a new one.
   bool cameraCut = false;
+  // For a method with a history: the objects that move on their own this frame (MovingObject), at most
+  // kMaxMovingObjects; the rest of the frame reprojects with the camera (or the velocity attachment).
+  std::vector<MovingObject> movingObjects = {};
 };
 
 // For a method with a history: the sub-pixel offset, in pixels (x right, y up), by which the host shifts this frame's

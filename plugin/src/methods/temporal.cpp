@@ -162,9 +162,11 @@ class TemporalTechnique : public Technique {
     auto program =
         context.shaders->program("common/fullscreen.vert", "temporal/temporal.frag",
                                  depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_) +
-                                     defineLine("HAS_VELOCITY", layout.velocityAttachment >= 0),
+                                     defineLine("HAS_VELOCITY", layout.velocityAttachment >= 0) +
+                                     "#define MAX_MOVING_OBJECTS " + std::to_string(kMaxMovingObjects) + "\n",
                                  {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ",
-                                  "uBlend", "uHistoryValid", "uInput", "uHistory", "uDepth", "uVelocity"});
+                                  "uBlend", "uHistoryValid", "uInput", "uHistory", "uDepth", "uVelocity",
+                                  "uMovingObjects", "uViewToBox", "uObjectViewToPreviousClip"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -208,9 +210,9 @@ class TemporalTechnique : public Technique {
  private:
   // Whether this frame can reproject the history: its matrices are given and usable, and the previous
   // frame's were. Warns once per cause.
-  bool reprojectable(PluginContext& context, const FrameInfo& frame, Matrix4& viewToPreviousClip) {
+  bool reprojectable(PluginContext& context, const FrameInfo& frame, Matrix4& viewToPreviousClip, Matrix4& inverseView,
+                     Matrix4& previousViewProjection) {
     const Matrix4 view = toMatrix(frame.viewMatrix), projection = toMatrix(frame.projectionMatrix);
-    Matrix4 inverseView{};
     bool usable = true;
     if (allZero(projection)) {
       usable = false;
@@ -225,7 +227,10 @@ class TemporalTechnique : public Technique {
                "projection; the history is dropped for such frames");
     }
     const bool continues = usable && historyValid_ && !frame.cameraCut;
-    if (continues) viewToPreviousClip = multiply(multiply(previousProjection_, previousView_), inverseView);
+    if (continues) {
+      previousViewProjection = multiply(previousProjection_, previousView_);
+      viewToPreviousClip = multiply(previousViewProjection, inverseView);
+    }
     historyValid_ = usable;  // the history this frame writes can be reprojected by the next
     previousView_ = view;
     previousProjection_ = projection;
@@ -255,6 +260,46 @@ class TemporalTechnique : public Technique {
     nonFiniteCopied_.insert();
   }
 
+  // The frame's moving objects as the shader takes them, the nearest kMaxMovingObjects: this view to each
+  // box's [-1, 1]³ (where a pixel's surface is inside it), and this view to the previous clip through the
+  // object's own motion. Objects whose transforms are singular or not finite are left out (warned once).
+  int movingObjects(PluginContext& context, const FrameInfo& frame, const Matrix4& inverseView,
+                    const Matrix4& previousViewProjection, std::vector<float>& viewToBox,
+                    std::vector<float>& objectViewToPreviousClip) {
+    std::vector<std::pair<float, size_t>> byDistance;  // the box centre's squared distance from the camera
+    const Matrix4 view = toMatrix(frame.viewMatrix);
+    for (size_t i = 0; i < frame.movingObjects.size(); ++i) {
+      const float* m = frame.movingObjects[i].boxToWorld;
+      float centre[3];
+      for (int r = 0; r < 3; ++r)
+        centre[r] = view[r] * m[12] + view[4 + r] * m[13] + view[8 + r] * m[14] + view[12 + r];
+      byDistance.push_back({centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2], i});
+    }
+    std::sort(byDistance.begin(), byDistance.end());
+    if (byDistance.size() > size_t(kMaxMovingObjects))
+      warnOnce(context, warnedTooManyObjects_,
+               "temporal: " + std::to_string(byDistance.size()) + " moving objects in one frame; the nearest " +
+                   std::to_string(kMaxMovingObjects) + " keep their motion, the rest reproject with the camera");
+    int count = 0;
+    for (const auto& [distance, index] : byDistance) {
+      if (count == kMaxMovingObjects) break;
+      const MovingObject& object = frame.movingObjects[index];
+      const Matrix4 box = toMatrix(object.boxToWorld), previousBox = toMatrix(object.previousBoxToWorld);
+      Matrix4 worldToBox{};
+      if (!allFinite(box) || !allFinite(previousBox) || !invert(box, worldToBox)) {
+        warnOnce(context, warnedBadObject_,
+                 "temporal: a moving object's box transform is singular or not finite; it reprojects with the camera");
+        continue;
+      }
+      const Matrix4 toBox = multiply(worldToBox, inverseView);
+      const Matrix4 toPrevious = multiply(multiply(previousViewProjection, previousBox), toBox);
+      viewToBox.insert(viewToBox.end(), toBox.begin(), toBox.end());
+      objectViewToPreviousClip.insert(objectViewToPreviousClip.end(), toPrevious.begin(), toPrevious.end());
+      ++count;
+    }
+    return count;
+  }
+
   static void warnOnce(PluginContext& context, bool& warned, const std::string& message) {
     if (warned) return;
     warned = true;
@@ -265,8 +310,12 @@ class TemporalTechnique : public Technique {
   // output and the next history written together.
   void run(PluginContext& context, const FrameInfo& frame, GLuint input) {
     const GBufferLayout& layout = context.layout;
-    Matrix4 viewToPreviousClip{};
-    const bool valid = reprojectable(context, frame, viewToPreviousClip);
+    Matrix4 viewToPreviousClip{}, inverseView{}, previousViewProjection{};
+    const bool valid = reprojectable(context, frame, viewToPreviousClip, inverseView, previousViewProjection);
+    std::vector<float> viewToBox, objectViewToPreviousClip;
+    const int objects =
+        valid ? movingObjects(context, frame, inverseView, previousViewProjection, viewToBox, objectViewToPreviousClip)
+              : 0;
     const int previous = historyIndex_, next = 1 - historyIndex_;
     context.beginFullscreenPass(framebuffers_[next].get());
     program_.use();
@@ -278,6 +327,11 @@ class TemporalTechnique : public Technique {
     for (const char* filtered : {"uInput", "uHistory"})  // their textures' own filtering: no post pass's sampler
       if (const int unit = program_.unit(filtered); unit >= 0) glBindSampler(GLuint(unit), 0);
     program_.setMatrix4("uViewToPreviousClip", viewToPreviousClip.data());
+    program_.set("uMovingObjects", objects);
+    if (objects > 0) {
+      program_.setMatrix4Array("uViewToBox", objects, viewToBox.data());
+      program_.setMatrix4Array("uObjectViewToPreviousClip", objects, objectViewToPreviousClip.data());
+    }
     const Matrix4& projection = previousProjection_;  // this frame's, as reprojectable() keeps it
     const float projectionTerms[4] = {projection[0], projection[5], projection[8], projection[9]};
     program_.setVec4("uProjection", projectionTerms);  // P[0][0], P[1][1], P[2][0], P[2][1]
@@ -311,6 +365,7 @@ class TemporalTechnique : public Technique {
   const GLuint* nonFiniteMapped_ = nullptr;        // the readback buffer, mapped for the technique's life
   GlFence nonFiniteCopied_;                        // pending: the copy is not yet read
   bool warnedNoProjection_ = false, warnedBadMatrices_ = false, warnedNonFinite_ = false;
+  bool warnedTooManyObjects_ = false, warnedBadObject_ = false;
   uint64_t bytes_ = 0;
 };
 
