@@ -42,6 +42,7 @@ struct MiniatureStk {
   host::Texture display = host::makeTexture2D(GL_RGBA8, kWidth, kHeight, "mini.display");
   GLuint gbuffer = 0, light = 0, displayTarget = 0;
   float curvature = 0;  // surface A's normal turns by this (in x) per pixel: a curved surface
+  retroaa::DepthBufferEncoding depthEncoding = retroaa::DepthBufferEncoding::Perspective;
 
   MiniatureStk() {
     glCreateFramebuffers(1, &gbuffer);
@@ -71,6 +72,7 @@ struct MiniatureStk {
                           {retroaa::AttachmentRole::NormalGloss, GL_RGBA8, normal}};
     layout.normalEncoding = retroaa::NormalEncoding::Spheremap;
     layout.depthSource = retroaa::DepthSource::DepthBuffer;
+    layout.depthBufferEncoding = depthEncoding;
     layout.gbufferFramebuffer = gbuffer;
     layout.depthStencilTexture = depth;
     layout.lightFramebuffer = light;
@@ -269,6 +271,47 @@ TEST(ForeignLayout, AModelPassWithMultisamplingOffIsNamedInAWarningOnce) {
   runFrame(host, *plugin);
   glEnable(GL_MULTISAMPLE);
   EXPECT_EQ(multisampleWarnings(), 1);
+}
+
+// Irrlicht's perspective projection (SuperTuxKart's) puts clip z in 0 … w, as Direct3D does; under GL's default
+// depth range its window depth is 0.5 + 0.5 × a GL projection's (DepthBufferEncoding::PerspectiveClipZeroToOne).
+// A frame whose projection disagrees with the layout's encoding is named in one warning; one that agrees, in none.
+TEST(ForeignLayout, AProjectionWhoseClipZDisagreesWithTheLayoutIsNamedOnce) {
+  testing_support::context();
+  const float n = 1.0f, f = 1200.0f;
+  retroaa::FrameInfo irrlicht{1.396f, n, f};  // buildProjectionMatrixPerspectiveFovLH, column-major
+  irrlicht.projectionMatrix[0] = 1.2f, irrlicht.projectionMatrix[5] = 1.6f;
+  irrlicht.projectionMatrix[10] = f / (f - n), irrlicht.projectionMatrix[11] = 1.0f;
+  irrlicht.projectionMatrix[14] = -n * f / (f - n);
+  retroaa::FrameInfo gl = irrlicht;  // the same planes, clip z -w … w
+  gl.projectionMatrix[10] = (f + n) / (f - n), gl.projectionMatrix[14] = -2.0f * n * f / (f - n);
+  auto count = [](const retroaa::Plugin& plugin, const char* text) {
+    int found = 0;
+    for (const std::string& warning : plugin.warnings()) found += warning.find(text) != std::string::npos;
+    return found;
+  };
+  for (const auto encoding :
+       {retroaa::DepthBufferEncoding::Perspective, retroaa::DepthBufferEncoding::PerspectiveClipZeroToOne}) {
+    const bool zeroToOne = encoding == retroaa::DepthBufferEncoding::PerspectiveClipZeroToOne;
+    MiniatureStk host;
+    host.depthEncoding = encoding;
+    auto plugin = createPlugin(host, "resolve@samples=4");
+    ASSERT_TRUE(plugin);
+    for (int frame = 0; frame < 2; ++frame) {
+      host.solidPass(plugin->geometryFramebuffer());
+      ASSERT_TRUE(plugin->resolve(zeroToOne ? irrlicht : gl));
+      ASSERT_TRUE(plugin->shade([&](GLuint target) { host.lighting(target); }));
+    }
+    EXPECT_EQ(count(*plugin, "clip z runs"), 0) << int(encoding);
+    host.solidPass(plugin->geometryFramebuffer());
+    ASSERT_TRUE(plugin->resolve(zeroToOne ? gl : irrlicht));  // the other convention than the layout's
+    ASSERT_TRUE(plugin->resolve(zeroToOne ? gl : irrlicht));
+    EXPECT_EQ(
+        count(*plugin, zeroToOne ? "clip z runs -w … w (GL's) but depthBufferEncoding is PerspectiveClipZeroToOne"
+                                 : "clip z runs 0 … w (Direct3D's, Irrlicht's) but depthBufferEncoding is Perspective"),
+        1);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
 }
 
 TEST(ForeignLayout, ReconstructTakesTheSpheremapNormalsOfItsPrepass) {

@@ -35,7 +35,8 @@ inline constexpr Named<DepthBufferEncoding> kDepthBufferEncodings[] = {
     {DepthBufferEncoding::Perspective, "perspective"},
     {DepthBufferEncoding::Logarithmic, "logarithmic"},
     {DepthBufferEncoding::ReversedPerspective, "reversed_perspective"},
-    {DepthBufferEncoding::ReversedInfinite, "reversed_infinite"}};
+    {DepthBufferEncoding::ReversedInfinite, "reversed_infinite"},
+    {DepthBufferEncoding::PerspectiveClipZeroToOne, "perspective_clip_zero_to_one"}};
 inline constexpr Named<DepthSource> kDepthSources[] = {{DepthSource::PositionChannel, "position_channel"},
                                                        {DepthSource::DepthBuffer, "depth_buffer"},
                                                        {DepthSource::WorldPosition, "world_position"}};

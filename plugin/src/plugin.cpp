@@ -207,8 +207,28 @@ struct Plugin::Impl {
   // The method's technique first, then the stacked ones; each pass runs them in this order.
   std::vector<ActiveTechnique> techniques;
   std::unique_ptr<BudgetController> budget;
-  bool warnedMultisampleOff = false;  // once per plugin: GL_MULTISAMPLE was off at resolve()
-  uint64_t budgetFrame = 0;           // the measured frame the budget last saw
+  bool warnedMultisampleOff = false;      // once per plugin: GL_MULTISAMPLE was off at resolve()
+  bool warnedProjectionEncoding = false;  // once per plugin: the projection's clip z disagrees with the layout
+
+  // A perspective projection's depth term P[3][2] is -2fn/(f-n) where clip z runs -w … w (GL's) and -fn/(f-n)
+  // where it runs 0 … w (Direct3D's, Irrlicht's): the two window depths differ, and a layout that names the
+  // other one decodes every depth wrong (positions, closeness, a history's reprojection). Warned once.
+  void checkProjectionAgainstDepthEncoding(const FrameInfo& frame) {
+    const DepthBufferEncoding declared = context.layout.depthBufferEncoding;
+    const bool perspective = declared == DepthBufferEncoding::Perspective,
+               zeroToOne = declared == DepthBufferEncoding::PerspectiveClipZeroToOne;
+    const float n = frame.nearPlane, f = frame.farPlane, term = frame.projectionMatrix[14];
+    if (warnedProjectionEncoding || !(perspective || zeroToOne) || term == 0.0f || !(f > n && n > 0.0f)) return;
+    const float ratio = std::fabs(term) / (f * n / (f - n));  // 2 for GL's clip z, 1 for 0 … w
+    if (!(std::isfinite(ratio) && ratio > 0.5f && ratio < 2.5f) || (ratio < 1.5f) == zeroToOne) return;
+    warnedProjectionEncoding = true;
+    context.warn(std::string("layout check: FrameInfo::projectionMatrix's clip z runs ") +
+                 (zeroToOne ? "-w … w (GL's)" : "0 … w (Direct3D's, Irrlicht's)") + " but depthBufferEncoding is " +
+                 (zeroToOne ? "PerspectiveClipZeroToOne" : "Perspective") + ": declare " +
+                 (zeroToOne ? "Perspective" : "PerspectiveClipZeroToOne") +
+                 ", or every depth the plugin reads is decoded wrong (docs/integration.md)");
+  }
+  uint64_t budgetFrame = 0;  // the measured frame the budget last saw
 
   SharedTargets shared() { return {msaa.get(), slices.get(), postTarget.get(), forwardMask.get()}; }
   Technique* methodTechnique() {
@@ -505,6 +525,7 @@ Status Plugin::resolve(const FrameInfo& frame) {
   impl_->beginFrame();
   impl_->phase = Impl::FramePhase::Resolved;
   impl_->context.frame = frame;
+  impl_->checkProjectionAgainstDepthEncoding(frame);
   if (!impl_->resolvePass) return Status::ok();
   // With GL_MULTISAMPLE off (Irrlicht turns it off on a window without MSAA) the model pass rasterised
   // single-sample: every sample holds the pixel centre's surface, or only sample 0 was written. A state

@@ -13,6 +13,9 @@ bool depthBufferIsFar(float z) { return !(z < 1.0); }
 
 // Metres in front of the camera.
 float depthBufferToMetres(float z) {
+#if DEPTH_BUFFER_ENCODING == DEPTH_BUFFER_PERSPECTIVE_CLIP_ZERO_TO_ONE
+  z = 2.0 * z - 1.0;  // GL made 0.5 + 0.5 × (clip z / w) of it: back to Perspective's value
+#endif
 #if DEPTH_BUFFER_ENCODING == DEPTH_BUFFER_LOGARITHMIC
   return uDepthNear * exp2(z * log2(uDepthFar / uDepthNear));
 #elif DEPTH_BUFFER_ENCODING == DEPTH_BUFFER_REVERSED_PERSPECTIVE
@@ -32,6 +35,8 @@ float metresToDepthBuffer(float d) {
   return uDepthNear * (uDepthFar - d) / (d * (uDepthFar - uDepthNear));
 #elif DEPTH_BUFFER_ENCODING == DEPTH_BUFFER_REVERSED_INFINITE
   return uDepthNear / d;
+#elif DEPTH_BUFFER_ENCODING == DEPTH_BUFFER_PERSPECTIVE_CLIP_ZERO_TO_ONE
+  return 0.5 + 0.5 * uDepthFar * (d - uDepthNear) / (d * (uDepthFar - uDepthNear));
 #else
   return uDepthFar * (d - uDepthNear) / (d * (uDepthFar - uDepthNear));
 #endif

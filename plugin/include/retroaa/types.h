@@ -61,6 +61,10 @@ enum class DepthBufferEncoding : uint8_t {
   // Reversed-Z: near 1, far 0, with glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE): n(f − d) / (d(f − n)).
   ReversedPerspective,
   ReversedInfinite,  // reversed-Z with the far plane at infinity: n / d (FrameInfo::farPlane unused)
+  // A perspective projection whose clip z runs 0 … w (Direct3D's convention: Irrlicht's
+  // buildProjectionMatrixPerspectiveFovLH, SuperTuxKart's) under GL's default clip control and depth range:
+  // window depth 0.5 + 0.5 × Perspective's, 0.5 at the near plane, 1 at the far.
+  PerspectiveClipZeroToOne,
 };
 
 // Where the plugin reads each sample's view depth (closeness tests, edges, clustering, background).

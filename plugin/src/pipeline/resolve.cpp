@@ -163,7 +163,8 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
   layoutCheckState_ = LayoutCheck::Done;
   const double pixels = double(context.pixelCount());
   const char* kinds[] = {"Linear", "LogAboveKnee", "FsoCompressedViewZ"};
-  const char* depthBufferKinds[] = {"Perspective", "Logarithmic", "ReversedPerspective", "ReversedInfinite"};
+  const char* depthBufferKinds[] = {"Perspective", "Logarithmic", "ReversedPerspective", "ReversedInfinite",
+                                    "PerspectiveClipZeroToOne"};
   const bool fromDepthBuffer = layout.depthSource == DepthSource::DepthBuffer;
   const bool fromWorld = layout.depthSource == DepthSource::WorldPosition;
   const std::string where =
