@@ -128,38 +128,43 @@ class References {
   // The reference of `record`; a frame the reference folder lacks is an error naming it.
   const ReferenceFrame& of(const nlohmann::json& record) {
     if (single_) return *single_;
-    const int frame = record.value("frame", -1);
-    const auto path = paths_.find(frame);
-    if (path == paths_.end())
-      throw std::invalid_argument(options_.reference + "/capture.jsonl has no frame " + std::to_string(frame) +
-                                  " (for " + record["image"].get<std::string>() + ")");
-    auto cached = frames_.find(frame);
-    if (cached == frames_.end())
-      cached = frames_.emplace(frame, readReference(options_.reference + "/" + path->second, options_.factor)).first;
-    return cached->second;
+    return frame(record.value("frame", -1), record["image"].get<std::string>());
   }
-  // Pixels whose reference changed (more than 4/255 in a channel) from `frame - 1` to `frame`; empty
-  // without both.
-  std::vector<uint8_t> changedAt(const nlohmann::json& record) {
-    const int frame = record.value("frame", -1);
-    if (!single_ && paths_.count(frame) && paths_.count(frame - 1)) {
-      nlohmann::json before = record;
-      before["frame"] = frame - 1;
-      const DisplayImage& a = of(before).image;
-      const DisplayImage& b = of(record).image;
-      std::vector<uint8_t> changed(a.rgb.size() / 3, 0);
-      for (size_t i = 0; i < a.rgb.size(); ++i)
-        if (std::abs(a.rgb[i] - b.rgb[i]) > 4.0f / 255) changed[i / 3] = 1;
-      return changed;
-    }
-    return {};
+  // Pixels whose reference changed (more than 4/255 in a channel) from the record's frame - 1 to its frame;
+  // empty without both. Computed once a frame, whichever method asks.
+  const std::vector<uint8_t>& changedAt(const nlohmann::json& record) {
+    static const std::vector<uint8_t> none;
+    const int at = record.value("frame", -1);
+    if (single_ || !paths_.count(at) || !paths_.count(at - 1)) return none;
+    auto cached = changed_.find(at);
+    if (cached != changed_.end()) return cached->second;
+    const std::string image = record["image"].get<std::string>();
+    const DisplayImage& a = frame(at - 1, image).image;
+    const DisplayImage& b = frame(at, image).image;
+    std::vector<uint8_t> changed(a.rgb.size() / 3, 0);
+    for (size_t i = 0; i < a.rgb.size(); ++i)
+      if (std::abs(a.rgb[i] - b.rgb[i]) > 4.0f / 255) changed[i / 3] = 1;
+    return changed_.emplace(at, std::move(changed)).first->second;
   }
 
  private:
+  // The reference capture's frame `at`, read and filtered once; `forImage` names the capture in an error.
+  const ReferenceFrame& frame(int at, const std::string& forImage) {
+    const auto path = paths_.find(at);
+    if (path == paths_.end())
+      throw std::invalid_argument(options_.reference + "/capture.jsonl has no frame " + std::to_string(at) + " (for " +
+                                  forImage + ")");
+    auto cached = frames_.find(at);
+    if (cached == frames_.end())
+      cached = frames_.emplace(at, readReference(options_.reference + "/" + path->second, options_.factor)).first;
+    return cached->second;
+  }
+
   const ScoreOptions& options_;
   std::optional<ReferenceFrame> single_;
   std::map<int, std::string> paths_;
   std::map<int, ReferenceFrame> frames_;
+  std::map<int, std::vector<uint8_t>> changed_;  // changedAt's masks, by frame
 };
 
 // The figures of one region of an image against its reference (the edge mask cut to it).
