@@ -136,7 +136,11 @@ TEST(Temporal, ALeftHandedProjectionReprojectsAsWell) {
 }
 
 TEST(Temporal, ASurfaceThatWasNotThereTakesNoHistory) {
-  HandWrittenFrames frames;
+  // Frames written at the pixels' centres: no jitter, so the frame shown where the history is gone (this
+  // frame resampled at the centres) is the frame as written.
+  retroaa::Config unjittered;
+  unjittered.temporalJitterLength = 1;
+  HandWrittenFrames frames(unjittered);
   for (int i = 0; i < 12; ++i) frames.run(wall(10, kRed));
   // Columns 4.. now show a nearer surface, red and blue in a checkerboard: the neighbourhood's box holds
   // red, so only the depth test keeps the red history out of the blue pixels.
@@ -156,6 +160,27 @@ TEST(Temporal, ASurfaceThatWasNotThereTakesNoHistory) {
   for (int i = 0; i < 12; ++i) frames.run(wall(10, kRed));
   const std::vector<glm::vec4> sameDepth = frames.run(wall(10, kRed, 4, 10.0f));
   EXPECT_GT(sameDepth[size_t(0 * 8 + 4)].r, 0.5f);
+}
+
+// Where the history is gone, a pixel shows this frame at its centre, resampled from the samples the jitter
+// moved off it: a new surface whose light is a ramp across the view, written where each pixel's sample lies
+// (its centre plus the jitter; glm's right-handed projection), is shown at the ramp's value at the centres.
+TEST(Temporal, WhereTheHistoryIsGoneThePixelShowsThisFrameAtItsCentre) {
+  HandWrittenFrames frames;
+  for (int i = 0; i < 10; ++i) frames.run(wall(10, kRed));
+  const retroaa::Jitter jitter = frames.hooks->plugin().jitter();
+  ASSERT_GT(std::fabs(jitter.x), 0.2f);  // frame 11 of Halton (2, 3): off the centre by a quarter pixel or more
+  const auto ramp = [](float x) { return glm::vec3(0.1f + 0.1f * x, 0, 0); };
+  std::vector<std::vector<SyntheticSample>> nearer(64);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) nearer[size_t(y * 8 + x)] = {surfaceSample(5, {0, 0, 1}, ramp(x + 0.5f + jitter.x))};
+  const std::vector<glm::vec4> light = frames.run(nearer);
+  for (int y = 2; y < 6; ++y)
+    for (int x = 2; x < 6; ++x) {  // away from the borders, where the resampling clamps to the edge
+      const float shown = light[size_t(y * 8 + x)].r;
+      EXPECT_NEAR(shown, ramp(x + 0.5f).r, 0.005f) << x << "," << y;  // Lanczos-2 bends a ramp a little
+      EXPECT_GT(std::fabs(shown - ramp(x + 0.5f + jitter.x).r), 0.015f) << x << "," << y;  // not as sampled
+    }
 }
 
 TEST(Temporal, WithoutMatricesOrWithBrokenOnesEachFrameIsShownAsRenderedWithOneWarning) {

@@ -22,6 +22,7 @@ uniform vec4 uProjection;          // P[0][0], P[1][1], P[2][0], P[2][1] of this
 uniform float uClipWPerViewZ;      // P[2][3]: -1 for GL's right-handed view space, +1 for a left-handed one
 uniform float uBlend;              // the current frame's weight
 uniform float uHistoryValid;       // 0 on the first frame after a reset (cut, new config, no matrices)
+uniform vec2 uSampleOffset;        // where this frame's samples lie from their pixels' centres (px): the jitter
 // FrameInfo::movingObjects, nearest first: a surface inside box i (this view to [-1, 1]³) reprojects
 // through the object's own motion instead of the camera's alone.
 uniform int uMovingObjects;
@@ -85,8 +86,8 @@ float lanczos2(float x) {
   float px = 3.14159265 * x;
   return 2.0 * sin(px) * sin(0.5 * px) / (px * px);
 }
-vec3 historyLanczos(vec2 uv) {
-  ivec2 size = textureSize(uHistory, 0);
+vec3 lanczos(sampler2D image, vec2 uv) {
+  ivec2 size = textureSize(image, 0);
   vec2 position = uv * vec2(size) - 0.5;  // in texel centres
   ivec2 first = ivec2(floor(position)) - 1;
   vec2 f = position - floor(position);
@@ -94,7 +95,7 @@ vec3 historyLanczos(vec2 uv) {
   float weight = 0.0;
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 4; ++x) {
-      vec3 c = texelFetch(uHistory, clamp(first + ivec2(x, y), ivec2(0), size - 1), 0).rgb;
+      vec3 c = texelFetch(image, clamp(first + ivec2(x, y), ivec2(0), size - 1), 0).rgb;
       float w = lanczos2(float(x - 1) - f.x) * lanczos2(float(y - 1) - f.y);
       sum += c * w;
       weight += w;
@@ -106,10 +107,12 @@ vec3 historyLanczos(vec2 uv) {
   return clamp(sum / weight, nearestLow, nearestHigh);
 }
 
-// Where the history is not the same surface: no texel of the 3×3 footprint around `uv`'s nearest
-// holds a depth near `expected` (the sky matches only the sky). 3×3, not the bilinear 2×2: a
-// silhouette pixel's jittered samples see the surface in front in some frames and the one behind in
-// others, and its history's depth may be either.
+// Where the history is not the same surface: no texel of the 3×3 footprint around `uv`'s nearest holds a
+// depth near `expected` (the sky matches only the sky). 3×3, not the bilinear 2×2: a silhouette pixel's
+// jittered samples see the surface in front in some frames and the one behind in others, and its
+// history's depth may be either. (Testing against the range the pixel's 3×3 neighbourhood sees instead
+// kept more of a race's corn and wires, +0.3 dB, but let the old surface's history into the first column
+// of every disocclusion: a ghost one pixel wide.)
 bool disoccluded(vec2 uv, float expected) {
   ivec2 size = textureSize(uHistory, 0);
   ivec2 nearest = ivec2(floor(uv * vec2(size)));
@@ -184,13 +187,20 @@ void main() {
   float gamma = mix(kStillClipGamma, kMovingClipGamma, clamp(motion / kMotionForTightClip, 0.0, 1.0));
   vec3 boxLow = max(lowest, mean - gamma * sigma), boxHigh = min(highest, mean + gamma * sigma);
 
-  vec3 result = current;
+  // This frame at its pixels' centres, resampled from its jittered samples (Karis): what a pixel shows where
+  // its history is gone and what it blends in where it moves. As sampled, with the weight it has there, it
+  // would shift those pixels by the jitter each frame: in a race −0.5 dB, and the PSNR swinging 1.6 dB
+  // with the jitter's phase (retroaa score over STK's driven race, docs/results.md).
+  // A new history, or none kept (blend 1), starts from or shows the frame as rendered.
+  bool accumulating = uHistoryValid > 0.5 && uBlend < 1.0;
+  vec3 centred = accumulating ? lanczos(uInput, (vec2(pixel) + 0.5 - uSampleOffset) / vec2(last + 1)) : current;
+  vec3 result = centred;
   bool currentFinite = finite3(current);
   bool finite = currentFinite;  // false: this pixel shows what it can and its history restarts
   bool usable = uHistoryValid > 0.5 && previousClip.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0))) &&
                 all(lessThanEqual(previousUv, vec2(1.0))) && !disoccluded(previousUv, expectedDepth);
   if (usable) {
-    vec3 history = historyLanczos(previousUv);
+    vec3 history = lanczos(uHistory, previousUv);
     if (finite3(history)) {
       // Clip towards the box's centre (Salvi), not per channel: keeps the history's hue.
       vec3 h = toYCoCg(compress(history));
@@ -213,10 +223,12 @@ void main() {
       // to the pixel's mean (this weighting biases it dark: -0.4 dB edge on the demo frame). Recorded
       // paths: +0.1-0.6 dB interior, flicker down on all five, the still frame unchanged.
       vec3 clipped = expand(fromYCoCg(h));
+      // Still, the frame as sampled (the jitter is how the history gathers the pixel's area); moving, centred.
+      vec3 arriving = mix(current, centred, clamp(motion / kMotionForFullBlend, 0.0, 1.0));
       float weighting = clamp(motion, 0.0, 1.0);
-      float currentWeight = blend / (1.0 + weighting * lumaOf(current));
+      float currentWeight = blend / (1.0 + weighting * lumaOf(arriving));
       float historyWeight = (1.0 - blend) / (1.0 + weighting * lumaOf(clipped));
-      result = (current * currentWeight + clipped * historyWeight) / (currentWeight + historyWeight);
+      result = (arriving * currentWeight + clipped * historyWeight) / (currentWeight + historyWeight);
     } else {
       finite = false;
     }

@@ -165,8 +165,8 @@ class TemporalTechnique : public Technique {
                                      defineLine("HAS_VELOCITY", layout.velocityAttachment >= 0) +
                                      "#define MAX_MOVING_OBJECTS " + std::to_string(kMaxMovingObjects) + "\n",
                                  {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ",
-                                  "uBlend", "uHistoryValid", "uInput", "uHistory", "uDepth", "uVelocity",
-                                  "uMovingObjects", "uViewToBox", "uObjectViewToPreviousClip"});
+                                  "uBlend", "uHistoryValid", "uSampleOffset", "uInput", "uHistory", "uDepth",
+                                  "uVelocity", "uMovingObjects", "uViewToBox", "uObjectViewToPreviousClip"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -336,6 +336,10 @@ class TemporalTechnique : public Technique {
     const float projectionTerms[4] = {projection[0], projection[5], projection[8], projection[9]};
     program_.setVec4("uProjection", projectionTerms);  // P[0][0], P[1][1], P[2][0], P[2][1]
     program_.set("uClipWPerViewZ", projection[11]);    // P[2][3]
+    // Where this frame's samples lie from their pixels' centres: the jitter the host shifted its projection
+    // by moves the image against it under a right-handed view (clip w = -z) and with it under a left-handed one.
+    const Jitter shift = haltonJitter(context.statistics->framesStarted() - jitterOrigin_, jitterLength_);
+    program_.set("uSampleOffset", -projection[11] * shift.x, -projection[11] * shift.y);
     // A new history averages its first frames evenly (1/n) until temporal_blend takes over: a cut or a
     // reset converges in a few frames instead of fading in over ~2/blend.
     program_.set("uBlend", valid ? std::max(context.config.temporalBlend, 1.0f / float(framesAccumulated_ + 1)) : 1.0f);
