@@ -472,13 +472,17 @@ int runSoak(const SoakOptions& options) {
 
 std::string configReference(bool markdown) {
   std::ostringstream out;
-  if (markdown) out << "| key | default | allowed | effect |\n|---|---|---|---|\n";
+  if (markdown) out << "| key | default | allowed | read by | effect |\n|---|---|---|---|---|\n";
   for (const retroaa::ConfigKey& key : retroaa::configKeys()) {
     const std::string defaultValue = *key.defaultValue ? key.defaultValue : "(empty)";
+    std::string readers;
+    for (const char* method : key.methods) readers += (readers.empty() ? "" : ", ") + std::string(method);
     if (markdown)
-      out << "| `" << key.name << "` | `" << defaultValue << "` | " << key.allowed << " | " << key.effect << " |\n";
+      out << "| `" << key.name << "` | `" << defaultValue << "` | " << key.allowed << " | "
+          << (readers.empty() ? "every method" : readers) << " | " << key.effect << " |\n";
     else
-      out << key.name << " = " << defaultValue << "  [" << key.allowed << "]  " << key.effect << "\n";
+      out << key.name << " = " << defaultValue << "  [" << key.allowed << "]  "
+          << (readers.empty() ? "" : "(" + readers + ") ") << key.effect << "\n";
   }
   return out.str();
 }

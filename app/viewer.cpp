@@ -394,14 +394,14 @@ class Viewer {
     return !chosen.empty() && retroaa::applySetting(config, name, chosen);  // out of range: refused, unchanged
   }
 
-  // The keys the panel shows for `config`: the sample count, the keys of the method in use (and of the
-  // resolve where it multisamples), and the switch of every method that stacks on it.
+  // The keys the panel shows for `config`: the sample count, the keys the method in use reads, and the
+  // switch of every method that stacks on it.
   static std::vector<std::string> panelKeys(const retroaa::Config& config) {
     const std::string method = retroaa::toString(config.method);
-    const bool multisampled = retroaa::usesMsaa(config.method);
     std::vector<std::string> keys = {"samples"};
     for (const retroaa::ConfigKey& key : retroaa::configKeys())
-      if (key.method == method || (multisampled && std::string(key.method) == "resolve")) keys.push_back(key.name);
+      for (const char* reader : key.methods)
+        if (reader == method) keys.push_back(key.name);
     for (const retroaa::MethodInfo& row : retroaa::methodTable())
       if (*row.stackKey && row.name != method) keys.push_back(row.stackKey);
     return keys;

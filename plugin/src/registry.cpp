@@ -35,6 +35,8 @@ std::vector<Key> smaaKeys();
 namespace {
 
 constexpr uint32_t kSliced = kStorageMsaaGBuffer | kStorageSlices;
+// The resolve's keys, which every method on the MSAA G-buffer reads: each renders into it and runs the resolve.
+const std::vector<const char*> kResolveKeys = {"supersample", "resolve_weighting", "resolve_compute", "closeness"};
 
 // Whether anything has read the registry: from then on it is fixed (registerTechnique refuses), so every
 // plugin, tool and thread sees one table.
@@ -93,33 +95,40 @@ std::vector<TechniqueRow>& rows() {
           .needsMultisampling()
           .uses(kSliced)
           .createdBy(createEdgeTechnique)
-          .configuredBy(edgeKeys),
+          .configuredBy(edgeKeys)
+          .alsoReads(kResolveKeys),
       Row::named(Method::Adaptive, "adaptive", "Holländer's metrics choose k samples per pixel, lit through slices")
           .needsMultisampling()
           .uses(kSliced)
           .createdBy(createAdaptiveTechnique)
-          .configuredBy(adaptiveKeys),
+          .configuredBy(adaptiveKeys)
+          .alsoReads(kResolveKeys),
       Row::named(Method::Aggregate, "aggregate", "AGAA's clustering: at most c aggregates per pixel, each lit once")
           .needsMultisampling()
           .uses(kSliced)
           .createdBy(createAggregateTechnique)
-          .configuredBy(aggregateKeys),
+          .configuredBy(aggregateKeys)
+          .alsoReads(kResolveKeys),
       Row::named(Method::SmaaS2x, "smaa-s2x",
                  "SMAA S2x: SMAA 1x on two single-sample slices of the MSAA G-buffer, each lit by the host, blended "
                  "50/50")
           .needsMultisampling(2)
           .uses(kSliced)
-          .createdBy(createSmaaS2xTechnique),
+          .createdBy(createSmaaS2xTechnique)
+          .alsoReads(kResolveKeys)
+          .alsoReads({"smaa_quality", "smaa_edge_detection"}),
       Row::named(Method::PerSample, "per-sample", "every sample lit through slices: the quality reference at rate N")
           .needsMultisampling()
           .uses(kSliced)
-          .createdBy(createEdgeTechnique),
+          .createdBy(createEdgeTechnique)
+          .alsoReads(kResolveKeys),
       // per-sample's technique in Bayer order (edge.cpp).
       Row::named(Method::Ssaa, "ssaa",
                  "ordered-grid supersampling: an m x m supersampled G-buffer (supersample=m), every sub-position lit")
           .needsSupersampling(2)
           .uses(kSliced)
-          .createdBy(createEdgeTechnique),
+          .createdBy(createEdgeTechnique)
+          .alsoReads(kResolveKeys),
   };
   return table;
 }

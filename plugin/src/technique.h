@@ -139,6 +139,9 @@ struct TechniqueRow {
   int minSupersample = 0;  // a supersampled G-buffer of at least this factor (a smaller `supersample` is raised)
   bool postLast = false;   // its post pass runs after every other active technique's
   std::vector<Key> (*keys)() = nullptr;  // its config keys, declared beside it (config_keys.h)
+  // Keys declared elsewhere (another technique's, or shared) that this method reads too: every MSAA
+  // G-buffer method runs the resolve and reads its keys; smaa-s2x runs SMAA 1x. ConfigKey::methods lists them.
+  std::vector<const char*> otherKeys;
   // A method with a history: the frames a still view takes to converge under a config (historyFrames()).
   int (*convergence)(const Config&) = nullptr;
 
@@ -162,6 +165,10 @@ struct TechniqueRow {
   TechniqueRow& postPassLast() { return postLast = true, *this; }
   TechniqueRow& configuredBy(std::vector<Key> (*techniqueKeys)()) { return keys = techniqueKeys, *this; }
   TechniqueRow& convergesIn(int (*frames)(const Config&)) { return convergence = frames, *this; }
+  TechniqueRow& alsoReads(const std::vector<const char*>& keyNames) {
+    otherKeys.insert(otherKeys.end(), keyNames.begin(), keyNames.end());
+    return *this;
+  }
 };
 
 // Every method, in the order listings use.

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -16,18 +17,28 @@ TEST(Config, DefaultsAreDocumentedOnce) {
   EXPECT_EQ(toConfigText(parsed), toConfigText(defaults));
 }
 
-// A technique's keys say whose they are (the viewer shows a method's own keys); shared keys say "".
-TEST(Config, EachKeyNamesTheMethodThatDeclaresIt) {
-  std::map<std::string, std::string> owner;
-  for (const ConfigKey& key : configKeys()) owner[key.name] = key.method;
-  EXPECT_EQ(owner.at("samples"), "");
-  EXPECT_EQ(owner.at("budget_ms"), "");
-  EXPECT_EQ(owner.at("closeness"), "resolve");
-  EXPECT_EQ(owner.at("adaptive_min_samples"), "adaptive");
-  EXPECT_EQ(owner.at("edge_detector"), "edge");
+// A key names the methods that read it (the viewer shows it for each): the technique that declares it
+// and those that read it too; a shared key names none.
+TEST(Config, EachKeyNamesTheMethodsThatReadIt) {
+  std::map<std::string, std::vector<std::string>> readers;
+  for (const ConfigKey& key : configKeys()) readers[key.name].assign(key.methods.begin(), key.methods.end());
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(readers.at("samples"), Names{});
+  EXPECT_EQ(readers.at("budget_ms"), Names{});
+  EXPECT_EQ(readers.at("adaptive_min_samples"), Names{"adaptive"});
+  EXPECT_EQ(readers.at("edge_detector"), Names{"edge"});
+  // Every method on the MSAA G-buffer runs the resolve: the G-buffer's source and the resolve's keys.
+  for (const char* key : {"closeness", "supersample", "resolve_weighting"}) {
+    const Names& methods = readers.at(key);
+    for (const MethodInfo& row : methodTable()) {
+      const bool reads = std::find(methods.begin(), methods.end(), row.name) != methods.end();
+      EXPECT_EQ(reads, usesMsaa(row.method)) << key << " and " << row.name;
+    }
+  }
+  EXPECT_EQ(readers.at("smaa_quality"), (Names{"smaa", "smaa-s2x"}));  // SMAA S2x runs SMAA 1x
   for (const MethodInfo& row : methodTable()) {  // a stacking switch belongs to the method it stacks
     if (*row.stackKey) {
-      EXPECT_EQ(owner.at(row.stackKey), row.name);
+      EXPECT_EQ(readers.at(row.stackKey), Names{row.name});
     }
   }
 }

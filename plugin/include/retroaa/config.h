@@ -74,123 +74,66 @@ enum class SmaaEdgeDetection : uint8_t {
   Depth,   // relative steps in the host's view depth: geometry edges only, no texture or shading edges
 };
 
-// Every field is a config key (configKeys(), docs/config.md): the comments here say what a field means;
-// its key, allowed values and one-line effect are written once where its technique lives (each method's
-// file under plugin/src/methods/ declares its own keys; plugin/src/config.cpp the shared ones), and its
-// default is the initialiser below.
+// Every field is one config key, named beside it. What a key does, its range and what changing it costs are
+// written once, where the key is declared (a technique's keys in its own file under plugin/src/methods/ or
+// pipeline/, the shared ones in plugin/src/config_table.cpp), and read from there by configKeys(),
+// `retroaa config`, docs/config.md and the viewer; the default is the initialiser here.
 struct Config {
-  // Which method runs. Changing it reallocates only what the new method needs.
-  Method method = Method::Off;
-  // MSAA samples of the G-buffer for multi-sample methods. Clamped to the
-  // context's GL_MAX_SAMPLES with a warning naming both counts. Changing it reallocates.
-  int samples = 4;
-  // The G-buffer's source: 0 multisampled (`samples`); m = 2, 3 or 4 supersampled — an m·W × m·H
-  // G-buffer, each pixel's m×m window of sub-positions lit like samples (Holländer et al. 2013). The
-  // host's model pass then renders at Plugin::geometryScale() × its viewport. Changing it reallocates.
-  int supersample = 0;
-  // The fraction of each pixel's samples the host's model pass shades where it draws multisampled
-  // (Plugin::sampleShading: glMinSampleShading around the model pass). 0: once per pixel, the MSAA
-  // default; 1: once per sample, so the host's `discard` (alpha-tested foliage, fences, grates) decides
-  // each sample and cut-out edges are anti-aliased like silhouettes, at up to `samples` times the model
-  // pass's fragment work. Free to change every frame.
-  float sampleShading = 0.0f;
-  // How `resolve` weights a pixel's samples. Free to change every frame.
-  ResolveWeighting resolveWeighting = ResolveWeighting::Median;
-  // Run the resolve (every MSAA method's) as a compute pass: the host's attachments through image stores,
-  // its depth through a one-fetch full-screen pass (a depth buffer takes no image stores). The same
-  // G-buffer. For GPUs whose pixel shaders run on a small graphics partition (NVIDIA's H100). Where an
-  // attachment's format takes no image stores (three-channel, sRGB), the full-screen pass, with a warning.
-  bool resolveCompute = false;
-  // c of Eq. 1: samples within min(d1,d2)·tan(hfov/width)·c of the reference depth count as one
-  // surface. 0 keeps only the reference sample's depth, larger merges more (and,
-  // past ~20, blends across real depth steps). Free to change every frame.
-  float closeness = 5.0f;
-  // Edge detector of `edge`. Free to change every frame (recompiles one small shader).
-  EdgeDetector edgeDetector = EdgeDetector::Coverage;
-  // c of the `depth` detector: smaller marks more pixels (slower, closer to per-sample).
-  float edgeDepthCloseness = 1.0f;
-  // Angle of the `normal` detector in degrees: smaller marks more pixels.
-  float edgeNormalAngleDegrees = 25.0f;
+  Method method = Method::Off;  // `method`
+  // The G-buffer: its samples, its source, and how the host's model pass shades it.
+  int samples = 4;             // `samples`
+  int supersample = 0;         // `supersample` (the host's model pass renders at Plugin::geometryScale())
+  float sampleShading = 0.0f;  // `sample_shading` (the host applies Plugin::sampleShading())
+  // The resolve, which every MSAA G-buffer method runs.
+  ResolveWeighting resolveWeighting = ResolveWeighting::Median;  // `resolve_weighting`
+  bool resolveCompute = false;                                   // `resolve_compute`
+  float closeness = 5.0f;                                        // `closeness`
+  // `edge`.
+  EdgeDetector edgeDetector = EdgeDetector::Coverage;  // `edge_detector`
+  float edgeDepthCloseness = 1.0f;                     // `edge_depth_closeness`
+  float edgeNormalAngleDegrees = 25.0f;                // `edge_normal_angle_deg`
   // `adaptive` (Holländer et al. 2013): k = clamp(max(k_d, k_n, k_s, k_t), adaptive_min_samples, N).
-  // Each scale multiplies its metric; larger refines more pixels (slower, closer to per-sample).
-  float adaptiveDepthScale = 0.5f;       // k_d = scale · variance of depth in pixel footprints
-  float adaptiveNormalScale = 8.0f;      // k_n = scale · sqrt(1 − min |n̄·n_i|)
-  float adaptiveShadingScale = 2.0f;     // k_s = scale · N · luma range of the first lit sample
-  float adaptiveTextureScale = 16.0f;    // k_t = scale · N · that range scaled by the albedo's over the pixel
-  float adaptiveThresholdMin = 0.0312f;  // k_s = 0 below this luma range (FXAA's)
-  float adaptiveThresholdEdge = 0.125f;  // … or below this fraction of the local max luma
-  int adaptiveMinSamples = 1;            // floor of k; N forces every sample (equals per-sample)
-  // `aggregate` (Crassin et al. 2016): at most c aggregates per pixel (plus one for background).
-  int aggregateCount = 2;           // c; more aggregates: closer to per-sample, more evaluations
-  float aggregateThreshold = 0.1f;  // t: a new aggregate only beyond this distance; 0 splits all distinct samples
-  float aggregateLength = 4.0f;     // k in pixel footprints: depth gaps beyond ~k·sqrt(t) split
-  // The coverage filter after tonemapping, stacked on `resolve` (which supplies its MSAA depth, so no
-  // prepass): intra-model smoothing plus silhouette blending at one lighting evaluation per pixel.
-  bool coverageFilter = false;
-  // c of the coverage filter's depth test (Eq. 1 style): a sample whose depth differs from
-  // the pixel's by more than min(d)·tan(hfov/width)·c lies across an edge. Smaller finds more (and,
-  // on grazing surfaces, false) edges.
-  float coverageTolerance = 2.0f;
-  // Sub-pixel reconstruction stacked on a G-buffer method (`resolve+reconstruct`: its MSAA depth and
-  // normals feed it, so no prepass).
-  bool reconstructFilter = false;
-  // c of the reconstruction's depth test (Eq. 1 style): a sub-sample belongs to a shaded pixel
-  // whose depth is within min(d)·tan(hfov/width)·c of its own (and whose normal agrees).
-  float reconstructTolerance = 2.0f;
-  // How far, in rings of pixels around its own, a sub-sample that no neighbour matches searches for a
-  // shaded pixel on its surface. 1 is the 3×3 neighbourhood of the SRAA paper; a wire thinner
-  // than a pixel is hit by a pixel centre only every few pixels along it, so larger radii rebuild it.
-  // The search costs only at such sub-samples.
-  int reconstructSearchRadius = 6;
-  // Reconstruct on the host's HDR light target between lighting and tonemapping (radiance mixes as the
-  // ground truth's supersamples do; +8 B/px for a copy) instead of on the display after tonemapping.
-  bool reconstructBeforeTonemap = false;
-  // Run the reconstruction as a compute pass: each 8×8 tile lists its pixels that need rebuilding, then
-  // its invocations search for them one each, on adjacent lanes, instead of a full-screen pass where
-  // every searching pixel holds up its neighbours' lanes. The same image. Where the target's format
-  // takes no image stores (a three-channel or sRGB target), the full-screen pass, with a warning.
-  bool reconstructCompute = false;
-  // Temporal accumulation stacked on another method (`resolve+temporal`, `reconstruct+temporal`): the
-  // host jitters its projection by Plugin::jitter() and the plugin blends each frame into a history.
-  bool temporalFilter = false;
-  // The weight of the current frame in the history: smaller converges to a smoother image
-  // over more frames (≈ 2/weight) and ghosts longer; 1 keeps no history. Free to change every frame.
-  float temporalBlend = 0.1f;
-  // Frames in the jitter sequence (Halton 2, 3): the sub-pixel positions a static pixel is
-  // sampled at. 1: no jitter (history only smooths flicker). Changing it resets the history.
-  int temporalJitterLength = 8;
-  // The mip bias the host adds to its material samplers (Plugin::textureLodBias): the history
-  // averages the sharper mips' detail over the jitter. FSR 2 advises -1 at native resolution.
-  float temporalLodBias = -1.0f;
-  // Accumulate on the host's HDR light target between lighting and tonemapping (radiance, as the ground
-  // truth averages; 0.5 dB closer to it than after tonemapping on the demo frame) rather than on the
-  // display. Where the layout has no single float light target (several light outputs, lighting
-  // straight into the display), after tonemapping with a warning. Resets the history.
-  bool temporalBeforeTonemap = true;
-  // After a slice method's shade(), resolve the MSAA G-buffer into the host's G-buffer again, so passes
-  // after lighting that read it (SSAO, fog, debug views) see the resolved surface, not the last slice's
-  // samples. Off saves one resolve pass per frame where nothing reads the G-buffer after lighting.
-  bool restoreGBufferAfterShade = true;
-  // A GPU-time budget for the plugin's passes in ms; 0 is off. With `adaptive` (or `edge`
-  // with the depth detector) a damped controller scales the refinement frame to frame to stay near it;
-  // it times the passes itself (timer queries). Free to change every frame.
-  float budgetMs = 0.0f;
-  // FXAA after tonemapping, stacked on any method (FreeSpace Open users combine -msaa and FXAA).
-  bool fxaa = false;
-  FxaaQuality fxaaQuality = FxaaQuality::High;
-  // FXAA edge threshold relative to local contrast; lower finds more edges.
-  float fxaaEdgeThreshold = 0.125f;
-  // SMAA 1x after tonemapping, stacked on any lighting-stage method (`resolve+smaa`, `edge+smaa`).
-  bool smaa = false;
-  // Preset of `smaa`, `+smaa` and `smaa-s2x` (FreeSpace Open's -aa_preset 3..6 are low..ultra).
-  SmaaQuality smaaQuality = SmaaQuality::High;
-  SmaaEdgeDetection smaaEdgeDetection = SmaaEdgeDetection::Luma;
-  // A folder whose files replace the built-in shaders of the same relative path (for modders);
-  // a file that does not compile falls back to the built-in one with a warning naming file and line.
-  std::string shaderOverrideDirectory;
-  // Wrap every plugin pass in timer and pipeline-statistics queries, read back frames later without
-  // waiting (Plugin::stats(); Plugin::waitForStats() waits): for benchmarks and the viewer overlay.
-  bool measureGpuTime = false;
+  float adaptiveDepthScale = 0.5f;       // `adaptive_depth_scale`
+  float adaptiveNormalScale = 8.0f;      // `adaptive_normal_scale`
+  float adaptiveShadingScale = 2.0f;     // `adaptive_shading_scale`
+  float adaptiveTextureScale = 16.0f;    // `adaptive_texture_scale`
+  float adaptiveThresholdMin = 0.0312f;  // `adaptive_threshold_min`
+  float adaptiveThresholdEdge = 0.125f;  // `adaptive_threshold_edge`
+  int adaptiveMinSamples = 1;            // `adaptive_min_samples`
+  // `aggregate` (Crassin et al. 2016).
+  int aggregateCount = 2;           // `aggregate_count`
+  float aggregateThreshold = 0.1f;  // `aggregate_threshold`
+  float aggregateLength = 4.0f;     // `aggregate_length`
+  // `coverage`, and its filter stacked on a G-buffer method (`resolve+coverage`).
+  bool coverageFilter = false;     // `coverage_filter`
+  float coverageTolerance = 2.0f;  // `coverage_tolerance`
+  // `reconstruct`, and its filter stacked on a G-buffer method (`resolve+reconstruct`).
+  bool reconstructFilter = false;         // `reconstruct_filter`
+  float reconstructTolerance = 2.0f;      // `reconstruct_tolerance`
+  int reconstructSearchRadius = 6;        // `reconstruct_search_radius`
+  bool reconstructBeforeTonemap = false;  // `reconstruct_before_tonemap`
+  bool reconstructCompute = false;        // `reconstruct_compute`
+  // `temporal`, and its accumulation stacked on another method (`resolve+temporal`): the host jitters its
+  // projection by Plugin::jitter() and biases its material samplers by Plugin::textureLodBias().
+  bool temporalFilter = false;        // `temporal_filter`
+  float temporalBlend = 0.1f;         // `temporal_blend`
+  int temporalJitterLength = 8;       // `temporal_jitter_length`
+  float temporalLodBias = -1.0f;      // `temporal_lod_bias`
+  bool temporalBeforeTonemap = true;  // `temporal_before_tonemap`
+  // Shared by every method.
+  bool restoreGBufferAfterShade = true;  // `restore_gbuffer_after_shade`
+  float budgetMs = 0.0f;                 // `budget_ms`
+  // `fxaa`, and FXAA stacked on any method (`resolve+fxaa`; FreeSpace Open users combine -msaa and FXAA).
+  bool fxaa = false;                            // `fxaa`
+  FxaaQuality fxaaQuality = FxaaQuality::High;  // `fxaa_quality`
+  float fxaaEdgeThreshold = 0.125f;             // `fxaa_edge_threshold`
+  // `smaa`, SMAA 1x stacked on any lighting-stage method (`resolve+smaa`), and `smaa-s2x`.
+  bool smaa = false;                                              // `smaa`
+  SmaaQuality smaaQuality = SmaaQuality::High;                    // `smaa_quality`
+  SmaaEdgeDetection smaaEdgeDetection = SmaaEdgeDetection::Luma;  // `smaa_edge_detection`
+  // For modders and measurements.
+  std::string shaderOverrideDirectory;  // `shader_override_dir`
+  bool measureGpuTime = false;          // `measure_gpu_time` (Plugin::stats(), Plugin::waitForStats())
 };
 
 // One settable key, for documentation, parsers and UIs: name, default, allowed values, effect.
@@ -207,8 +150,10 @@ struct ConfigKey {
   const char* allowed;       // as text: "0 .. 100", "on, off", "median, front, back, …"
   const char* effect;        // one line: what it changes and what changing it costs
   Kind kind;
-  float minimum, maximum;   // Number and Integer
-  const char* method = "";  // the method whose registry row declares it; "" for keys every method shares
+  float minimum, maximum;  // Number and Integer
+  // The methods that read it, by name (registry order): the one that declares it and those that read it
+  // too (every MSAA G-buffer method reads the resolve's keys); empty for a key every method reads.
+  std::vector<const char*> methods;
 };
 RETROAA_API const std::vector<ConfigKey>& configKeys();
 

@@ -159,20 +159,20 @@ Result<std::unique_ptr<Technique>> createAdaptiveTechnique(PluginContext& contex
 std::vector<Key> adaptiveKeys() {
   return {
       number("adaptive_depth_scale", &Config::adaptiveDepthScale, 0, 1000,
-             "adaptive: k_d per unit of depth variance (in pixel footprints²); larger refines more"),
+             "k_d per unit of depth variance (in pixel footprints²); larger refines more"),
       number("adaptive_normal_scale", &Config::adaptiveNormalScale, 0, 1000,
-             "adaptive: k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"),
+             "k_n per unit of normal-cone width sqrt(1 - min|n·n_i|); larger refines more"),
       number("adaptive_shading_scale", &Config::adaptiveShadingScale, 0, 1000,
-             "adaptive: k_s = scale * N * luma range of the first lit sample; larger refines more"),
+             "k_s = scale * N * luma range of the first lit sample; larger refines more"),
       number("adaptive_texture_scale", &Config::adaptiveTextureScale, 0, 1000,
-             "adaptive: k_t = scale * N * luma range of the first lit sample scaled by the albedo over the pixel "
+             "k_t = scale * N * luma range of the first lit sample scaled by the albedo over the pixel "
              "(texture detail inside it); larger refines more"),
       number("adaptive_threshold_min", &Config::adaptiveThresholdMin, 0, 1,
-             "adaptive: luma ranges below this never refine (FXAA's absolute threshold)"),
+             "luma ranges below this never refine (FXAA's absolute threshold)"),
       number("adaptive_threshold_edge", &Config::adaptiveThresholdEdge, 0, 1,
-             "adaptive: luma ranges below this fraction of the local maximum never refine"),
+             "luma ranges below this fraction of the local maximum never refine"),
       integer("adaptive_min_samples", &Config::adaptiveMinSamples, 1, 16,
-              "adaptive: floor of the per-pixel sample count; N lights every sample"),
+              "floor of the per-pixel sample count; N lights every sample"),
   };
 }
 

@@ -114,11 +114,11 @@ Result<std::unique_ptr<Technique>> createAggregateTechnique(PluginContext& conte
 std::vector<Key> aggregateKeys() {
   return {
       integer("aggregate_count", &Config::aggregateCount, 1, 4,
-              "aggregate: at most this many aggregates per pixel (plus background); more is closer to per-sample"),
+              "at most this many aggregates per pixel (plus background); more is closer to per-sample"),
       number("aggregate_threshold", &Config::aggregateThreshold, 0, 10,
-             "aggregate: t, the distance beyond which a sample seeds a new aggregate; 0 splits every distinct sample"),
+             "t, the distance beyond which a sample seeds a new aggregate; 0 splits every distinct sample"),
       number("aggregate_length", &Config::aggregateLength, 0.01f, 1000,
-             "aggregate: k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"),
+             "k, the characteristic length in pixel footprints; smaller splits at smaller depth gaps"),
   };
 }
 

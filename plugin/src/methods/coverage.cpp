@@ -65,7 +65,7 @@ std::vector<Key> coverageKeys() {
       onOff("coverage_filter", &Config::coverageFilter,
             "the coverage filter on top of resolve (reuses its MSAA depth; no prepass)"),
       number("coverage_tolerance", &Config::coverageTolerance, 0, 100,
-             "coverage: c of the depth test; smaller finds more edges, false ones on grazing surfaces"),
+             "c of the depth test; smaller finds more edges, false ones on grazing surfaces"),
   };
 }
 

@@ -138,9 +138,9 @@ std::vector<Key> reconstructKeys() {
       onOff("reconstruct_filter", &Config::reconstructFilter,
             "sub-pixel reconstruction on top of resolve (reuses its MSAA depth and normals; no prepass)"),
       number("reconstruct_tolerance", &Config::reconstructTolerance, 0, 100,
-             "reconstruct: c of the depth test that ties a sub-sample to a shaded pixel"),
+             "c of the depth test that ties a sub-sample to a shaded pixel"),
       integer("reconstruct_search_radius", &Config::reconstructSearchRadius, 1, 8,
-              "reconstruct: how many rings of pixels a sub-sample searches for its surface when no neighbour holds "
+              "how many rings of pixels a sub-sample searches for its surface when no neighbour holds "
               "it (sub-pixel wires: a pixel centre on the same wire lies a few pixels along it)"),
       onOff("reconstruct_before_tonemap", &Config::reconstructBeforeTonemap,
             "reconstruct on the HDR light target before tonemapping (+8 B/px) instead of on the display"),

@@ -224,14 +224,20 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
 // The config keys of every MSAA G-buffer method's resolve (its registry row lists them: registry.cpp).
 std::vector<Key> resolveKeys() {
   return {
+      choice("supersample", &Config::supersample, {0, 2, 3, 4},
+             "G-buffer methods' source: 0 multisampled (samples); m an m x m supersampled G-buffer (the host's model "
+             "pass renders at m x its viewport, Plugin::geometryScale), its m^2 sub-positions lit like samples; "
+             "reallocates"),
       named("resolve_weighting", &Config::resolveWeighting, kWeightings,
             "how resolve weights a pixel's samples; free per frame"),
       onOff("resolve_compute", &Config::resolveCompute,
             "the resolve as a compute pass, the depth through a one-fetch full-screen pass (the same G-buffer; for "
             "GPUs whose pixel shaders run on a small partition; where an attachment's format takes no image stores, "
             "the full-screen pass with a warning)"),
-      number("closeness", &Config::closeness, 0, 100,
-             "c of Eq. 1; larger merges more samples into one surface (past ~20 it blends across depth steps)"),
+      number(
+          "closeness", &Config::closeness, 0, 100,
+          "c of Eq. 1: samples within min(d1, d2) tan(hfov/width) c of the reference depth are one surface; 0 "
+          "keeps the reference sample's alone, larger merges more (past ~20 across real depth steps); free per frame"),
   };
 }
 
