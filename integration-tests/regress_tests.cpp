@@ -71,10 +71,12 @@ TEST(Regress, CheckFailsNamingTheFigureWhenAMethodIsDegraded) {
 }
 
 // An object that moves on its own (the scene's "velocity"): the lag figure is the error on the pixels
-// whose ground truth changed since the previous frame. A history that follows the camera alone keeps the
-// crate where it was and lags far behind off; with the host's velocity attachment it follows the crate,
-// and so it does with a box around the crate now and a frame ago (FrameInfo::movingObjects: an engine
-// without a velocity output). A scene where nothing moves on its own has no such figure.
+// whose ground truth changed since the previous frame. A history that follows the camera alone looks for
+// the crate where it was, finds another surface there and starts again from this frame, far behind off;
+// with the host's velocity attachment it follows the crate and keeps its history, and so it does with a box
+// around the crate now and a frame ago (FrameInfo::movingObjects: an engine without a velocity output). (The
+// gap was 5.6 dB while a restarted pixel showed the frame as sampled, off its centre by the jitter; shown at
+// its centre, 1.0.) A scene where nothing moves on its own has no such figure.
 TEST(Regress, AMovingObjectGivesALagFigureThatVelocityOrABoxCloses) {
   const fs::path out = tempDir("lag");
   const std::string scene = std::string(RETROAA_SOURCE_DIR) + "/integration-tests/scenes/moving_object.json";
@@ -108,8 +110,8 @@ TEST(Regress, AMovingObjectGivesALagFigureThatVelocityOrABoxCloses) {
       "with the camera alone\n",
       off, followed, boxes, cameraOnly);
   EXPECT_LT(cameraOnly, off - 3.0);
-  EXPECT_GT(followed, cameraOnly + 5.0);
-  EXPECT_GT(boxes, cameraOnly + 5.0);
+  EXPECT_GT(followed, cameraOnly + 0.5);
+  EXPECT_NEAR(boxes, followed, 0.05);
   EXPECT_TRUE(lag["default/off"].is_null()) << lag["default/off"];
 }
 

@@ -188,9 +188,9 @@ void main() {
   vec3 boxLow = max(lowest, mean - gamma * sigma), boxHigh = min(highest, mean + gamma * sigma);
 
   // This frame at its pixels' centres, resampled from its jittered samples (Karis): what a pixel shows where
-  // its history is gone and what it blends in where it moves. As sampled, with the weight it has there, it
-  // would shift those pixels by the jitter each frame: in a race −0.5 dB, and the PSNR swinging 1.6 dB
-  // with the jitter's phase (retroaa score over STK's driven race, docs/results.md).
+  // its history is gone, and half of what it blends in where it moves. As sampled, with the weight it has
+  // there, it shifts those pixels by the jitter each frame: in STK's driven race 0.4 dB lower, and the
+  // PSNR swinging 1.6 dB with the jitter's phase against 0.75 (retroaa score, docs/results.md).
   // A new history, or none kept (blend 1), starts from or shows the frame as rendered.
   bool accumulating = uHistoryValid > 0.5 && uBlend < 1.0;
   vec3 centred = accumulating ? lanczos(uInput, (vec2(pixel) + 0.5 - uSampleOffset) / vec2(last + 1)) : current;
@@ -223,8 +223,12 @@ void main() {
       // to the pixel's mean (this weighting biases it dark: -0.4 dB edge on the demo frame). Recorded
       // paths: +0.1-0.6 dB interior, flicker down on all five, the still frame unchanged.
       vec3 clipped = expand(fromYCoCg(h));
-      // Still, the frame as sampled (the jitter is how the history gathers the pixel's area); moving, centred.
-      vec3 arriving = mix(current, centred, clamp(motion / kMotionForFullBlend, 0.0, 1.0));
+      // Still, the frame as sampled (the jitter is how the history gathers the pixel's area); moving, half
+      // centred: centring moves edges back where they are, but resampling blurs texture. Against the frame
+      // as sampled, on the space-battle and engine paths (retroaa regress): fully centred +1.5 and +2.0 dB
+      // edge, -2.7 and -0.4 interior; half +1.3 and +1.7 edge, -1.4 and -0.2 interior; in STK's race half
+      // or full alike (edge 24.3, 24.5 against 23.8).
+      vec3 arriving = mix(current, centred, 0.5 * clamp(motion / kMotionForFullBlend, 0.0, 1.0));
       float weighting = clamp(motion, 0.0, 1.0);
       float currentWeight = blend / (1.0 + weighting * lumaOf(arriving));
       float historyWeight = (1.0 - blend) / (1.0 + weighting * lumaOf(clipped));

@@ -393,13 +393,13 @@ std::vector<Key> temporalKeys() {
             "temporal accumulation on top of another method (resolve+temporal): the host "
             "jitters its projection by Plugin::jitter()"),
       number("temporal_blend", &Config::temporalBlend, 0.02f, 1,
-             "temporal: the current frame's weight in the history; smaller is smoother and converges over more "
+             "the current frame's weight in the history; smaller is smoother and converges over more "
              "frames (about 2/weight), ghosting longer; 1 keeps no history; free per frame"),
       integer("temporal_jitter_length", &Config::temporalJitterLength, 1, 64,
-              "temporal: frames in the Halton (2, 3) jitter sequence, the sub-pixel positions a still pixel is "
+              "frames in the Halton (2, 3) jitter sequence, the sub-pixel positions a still pixel is "
               "sampled at; 1 is no jitter; resets the history"),
       number("temporal_lod_bias", &Config::temporalLodBias, -3, 0,
-             "temporal: the mip bias the host adds to its material samplers (Plugin::textureLodBias): sharper mips "
+             "the mip bias the host adds to its material samplers (Plugin::textureLodBias): sharper mips "
              "whose detail the history averages over the jitter; FSR 2 advises -1 at native resolution"),
       onOff("temporal_before_tonemap", &Config::temporalBeforeTonemap,
             "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather "
