@@ -144,10 +144,10 @@ test: build
 PRESET_RUN = $(RETROAA) tune --scenes default,integration-tests/scenes/fence.json --frames 3 --width 160 --height 120 \
   --gt-samples 4 --cost evals_per_pixel --cache out/tune/presets-cache.json
 presets: build
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=16.0 --out presets/low.cfg
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=17.5 --out presets/medium.cfg
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=18.0 --out presets/high.cfg
-	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=18.16 --out presets/ultra.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=17.5 --out presets/low.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=19.0 --out presets/medium.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=19.4 --out presets/high.cfg
+	LP_NUM_THREADS=2 $(PRESET_RUN) --target edge_psnr_db=19.5 --out presets/ultra.cfg
 	rm -f presets/*.cfg.json
 	cmake --build $(BUILD) -j$(JOBS)
 

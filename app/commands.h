@@ -39,7 +39,7 @@ std::vector<MethodSpec> parseMethodList(const std::string& list, const retroaa::
 
 struct RenderOptions {
   std::string scene = "default";
-  std::string host = "fso";  // the host engine (Session's kHostNames)
+  std::string host = "fso";  // the host engine (app::hostNames())
   std::string method;        // a MethodSpec, "ground-truth", or empty: the config's own method
   retroaa::Config base;      // from --config / --set / FSO flags
   int width = 320, height = 240;

@@ -9,6 +9,7 @@
 #endif
 #include "headless_context.h"
 #include "scene.h"
+#include "session.h"
 
 #include <CLI/CLI.hpp>
 
@@ -85,7 +86,7 @@ const char* kMethodsHelp = "comma-separated method specs; 'all' (every method an
 
 void addHostOption(CLI::App* sub, std::string& host) {
   sub->add_option("--host", host, "host engine: fso (FreeSpace Open-shaped) or second (docs/integration.md)")
-      ->check(CLI::IsMember({"fso", "second"}));
+      ->check(CLI::IsMember(app::hostNames()));
 }
 void addGroundTruthOption(CLI::App* sub, int& samplesPerAxis) {
   sub->add_option("--gt-samples", samplesPerAxis, "ground truth supersamples per axis")->check(CLI::Range(1, 32));

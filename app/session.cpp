@@ -38,27 +38,52 @@ void requireGBufferWithinBudget(uint64_t bytesPerSample, int width, int height, 
                               ", over its budget of " + std::to_string(budget >> 20) +
                               " MiB: ask for fewer samples or a smaller size");
 }
+
+// The hosts a session renders through, by the name `--host` takes: what one sample of each one's G-buffer
+// takes, and how its engine is built with its patch attached.
+struct HostRow {
+  const char* name;
+  uint64_t (*gbufferBytesPerSample)(const host::Scene&);
+  void (*build)(Session&, int width, int height);
+};
+const HostRow kHosts[] = {
+    {"fso", [](const host::Scene& scene) { return host::Renderer::gbufferBytesPerSample(scene); },
+     [](Session& session, int width, int height) {
+       auto engine = std::make_unique<host::Renderer>(session.scene, width, height);
+       session.fsoHooks = attach<patch::RetroaaHooks>(patch::RetroaaHooks::create(engine->targets(), {}));
+       engine->setHooks(session.fsoHooks.get());
+       session.renderer = std::move(engine);
+     }},
+    {"second", [](const host::Scene&) { return host::SecondRenderer::gbufferBytesPerSample(); },
+     [](Session& session, int width, int height) {
+       auto engine = std::make_unique<host::SecondRenderer>(session.scene, width, height);
+       session.secondHooks = attach<patch::SecondHostHooks>(patch::SecondHostHooks::create(engine->targets(), {}));
+       engine->setSeams(session.secondHooks.get());
+       session.renderer = std::move(engine);
+     }},
+};
+
 }  // namespace
+
+std::vector<std::string> hostNames() {
+  std::vector<std::string> names;
+  for (const HostRow& row : kHosts) names.push_back(row.name);
+  return names;
+}
 
 Session::Session(const std::string& scenePath, int width, int height, std::string contextSummary,
                  const std::string& hostName, const std::vector<retroaa::Config>& configsToRun)
     : scene(host::loadScene(scenePath)), hostName(hostName), contextSummary(std::move(contextSummary)) {
-  const uint64_t bytesPerSample = hostName == "second" ? host::SecondRenderer::gbufferBytesPerSample()
-                                                       : host::Renderer::gbufferBytesPerSample(scene);
-  for (const retroaa::Config& config : configsToRun) requireGBufferWithinBudget(bytesPerSample, width, height, config);
-  if (hostName == "fso") {
-    auto fso = std::make_unique<host::Renderer>(scene, width, height);
-    fsoHooks = attach<patch::RetroaaHooks>(patch::RetroaaHooks::create(fso->targets(), retroaa::Config{}));
-    fso->setHooks(fsoHooks.get());
-    renderer = std::move(fso);
-  } else if (hostName == "second") {
-    auto second = std::make_unique<host::SecondRenderer>(scene, width, height);
-    secondHooks = attach<patch::SecondHostHooks>(patch::SecondHostHooks::create(second->targets(), retroaa::Config{}));
-    second->setSeams(secondHooks.get());
-    renderer = std::move(second);
-  } else {
-    throw std::invalid_argument("unknown host '" + hostName + "' (allowed: fso, second)");
+  const auto row =
+      std::find_if(std::begin(kHosts), std::end(kHosts), [&hostName](const HostRow& r) { return hostName == r.name; });
+  if (row == std::end(kHosts)) {
+    std::string allowed;
+    for (const std::string& name : hostNames()) allowed += (allowed.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("unknown host '" + hostName + "' (allowed: " + allowed + ")");
   }
+  for (const retroaa::Config& config : configsToRun)
+    requireGBufferWithinBudget(row->gbufferBytesPerSample(scene), width, height, config);
+  row->build(*this, width, height);
 }
 
 void Session::configure(const retroaa::Config& requested, const std::string& methodName) {

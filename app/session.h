@@ -11,15 +11,16 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace app {
 
 // The hosts a session can render through (`--host`): the FreeSpace Open-shaped one and the second host.
-inline const char* const kHostNames[] = {"fso", "second"};
+std::vector<std::string> hostNames();
 
 struct Session {
   host::Scene scene;
-  std::string hostName;  // one of kHostNames
+  std::string hostName;  // one of hostNames()
   std::unique_ptr<host::Engine> renderer;
   std::unique_ptr<patch::RetroaaHooks> fsoHooks;  // the patch of the host in use: one of these two
   std::unique_ptr<patch::SecondHostHooks> secondHooks;
@@ -28,7 +29,7 @@ struct Session {
   retroaa::Config config;      // the config of the last configure(), as requested
 
   // Needs a current GL 4.5 core context; throws what loading the scene or creating the plugin throws, and
-  // std::invalid_argument for a host not in kHostNames or, before any target exists, for one of
+  // std::invalid_argument for a host not in hostNames() or, before any target exists, for one of
   // `configsToRun` whose multisampled G-buffer would exceed the plugin's budget at this size.
   Session(const std::string& scenePath, int width, int height, std::string contextSummary,
           const std::string& hostName = "fso", const std::vector<retroaa::Config>& configsToRun = {});
