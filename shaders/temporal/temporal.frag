@@ -191,14 +191,17 @@ void main() {
   // its history is gone, and half of what it blends in where it moves. As sampled, with the weight it has
   // there, it shifts those pixels by the jitter each frame: in STK's driven race 0.4 dB lower, and the
   // PSNR swinging 1.6 dB with the jitter's phase against 0.75 (retroaa score, docs/results.md).
-  // A new history, or none kept (blend 1), starts from or shows the frame as rendered.
+  // Resampled only where it is used: a still pixel's neighbours then cost nothing and cannot spread a
+  // non-finite light into it. A new history, or none kept (blend 1), starts from or shows the frame as
+  // rendered.
+  vec2 centreUv = (vec2(pixel) + 0.5 - uSampleOffset) / vec2(last + 1);
   bool accumulating = uHistoryValid > 0.5 && uBlend < 1.0;
-  vec3 centred = accumulating ? lanczos(uInput, (vec2(pixel) + 0.5 - uSampleOffset) / vec2(last + 1)) : current;
-  vec3 result = centred;
+  vec3 result = current;
   bool currentFinite = finite3(current);
   bool finite = currentFinite;  // false: this pixel shows what it can and its history restarts
   bool usable = uHistoryValid > 0.5 && previousClip.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0))) &&
                 all(lessThanEqual(previousUv, vec2(1.0))) && !disoccluded(previousUv, expectedDepth);
+  if (!usable && accumulating) result = lanczos(uInput, centreUv);
   if (usable) {
     vec3 history = lanczos(uHistory, previousUv);
     if (finite3(history)) {
@@ -228,7 +231,9 @@ void main() {
       // as sampled, on the space-battle and engine paths (retroaa regress): fully centred +1.5 and +2.0 dB
       // edge, -2.7 and -0.4 interior; half +1.3 and +1.7 edge, -1.4 and -0.2 interior; in STK's race half
       // or full alike (edge 24.3, 24.5 against 23.8).
-      vec3 arriving = mix(current, centred, 0.5 * clamp(motion / kMotionForFullBlend, 0.0, 1.0));
+      float centring = 0.5 * clamp(motion / kMotionForFullBlend, 0.0, 1.0);
+      // (A still view reprojects to within rounding of the pixel: no resampling below a hundredth of a pixel.)
+      vec3 arriving = centring > 0.01 && accumulating ? mix(current, lanczos(uInput, centreUv), centring) : current;
       float weighting = clamp(motion, 0.0, 1.0);
       float currentWeight = blend / (1.0 + weighting * lumaOf(arriving));
       float historyWeight = (1.0 - blend) / (1.0 + weighting * lumaOf(clipped));
