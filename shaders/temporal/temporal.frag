@@ -189,7 +189,7 @@ void main() {
 
   // This frame at its pixels' centres, resampled from its jittered samples (Karis): what a pixel shows where
   // its history is gone, and half of what it blends in where it moves. As sampled, with the weight it has
-  // there, it shifts those pixels by the jitter each frame: in STK's driven race 0.4 dB lower, and the
+  // there, it shifts those pixels by the jitter each frame: in STK's driven race 0.8 dB lower, and the
   // PSNR swinging 1.6 dB with the jitter's phase against 0.75 (retroaa score, docs/results.md).
   // Resampled only where it is used: a still pixel's neighbours then cost nothing and cannot spread a
   // non-finite light into it. A new history, or none kept (blend 1), starts from or shows the frame as
