@@ -3,11 +3,12 @@
 # llvmpipe): the race starts at once with one kart and no opponents, the world advances by a fixed step
 # to frame FRAME, then holds still while each method renders it (2 frames to settle, TIMED frames timed,
 # the last one written). Writes OUT/<method>.png and OUT/capture.jsonl.
-#   usage: capture.sh STK_BINARY TRACK WIDTHxHEIGHT FRAME "METHODS" OUT [TIMED] [--race=K] [--effects]
+#   usage: capture.sh STK_BINARY TRACK WIDTHxHEIGHT FRAME "METHODS" OUT [TIMED] [--race=K [--karts=N]] [--effects]
 # METHODS: retroaa method specs (off, fxaa, edge, resolve/fso+fxaa, ...), `stk-mlaa` (STK's own MLAA) and
 # `chosen` (the choice saved in STK's config.xml; see RETROAA_STK_HOME).
 # --race=K: a race in motion instead: STK's AI drives (its profile mode), the world never holds, the one
 #   method renders from the start, and frames FRAME-K+1 .. FRAME are written (<method>.<frame>.png).
+#   --karts=N: N karts in the race, the player's and N-1 AI opponents (default 1).
 # --effects: the effects STK's high preset turns on (shadows, SSAO, glow, bloom, light shafts, image-based
 #   lighting, particles) instead of off. --no-ssao then leaves SSAO off: its sample pattern and depth mips are
 #   in pixels, so a 4x reference does not match it (olivermath at 320x240, SSAO alone: interior PSNR 21.5 dB
@@ -15,11 +16,12 @@
 set -euo pipefail
 binary=$1 track=$2 size=$3 frame=$4 methods=$5 out=$6
 shift 6
-timed=3 mode=(--race-now --numkarts=1 --laps=1) race=0 no_ssao=0
+timed=3 mode=(--race-now --numkarts=1 --laps=1) race=0 karts=1 no_ssao=0
 effects=(--disable-light-shaft --disable-ssao --disable-glow --disable-bloom --disable-ibl --disable-particles --shadows=0)
 for option in "$@"; do
   case $option in
-    --race=*) race=${option#--race=} mode=(--numkarts=1 --profile-time=100000 "--aa-race=$race") ;;
+    --race=*) race=${option#--race=} ;;
+    --karts=*) karts=${option#--karts=} ;;
     --effects) effects=(--enable-light-shaft --enable-ssao --enable-glow --enable-bloom --enable-ibl --enable-particles
                         --shadows=1024) ;;
     --no-ssao) no_ssao=1 ;;
@@ -28,6 +30,8 @@ for option in "$@"; do
   esac
 done
 [ "$no_ssao" = 0 ] || effects=("${effects[@]/--enable-ssao/--disable-ssao}")   # STK: --enable-ssao wins
+case $karts in '' | *[!0-9]* | 0) echo "capture: --karts needs a count of at least 1, got '$karts'" >&2; exit 2 ;; esac
+[ "$race" = 0 ] || mode=("--numkarts=$karts" --profile-time=100000 "--aa-race=$race")
 width=${size%x*} height=${size#*x}
 data=/usr/share/games/supertuxkart
 [ -d "$data/data/tracks/$track" ] || { echo "capture: no track '$track' in $data/data/tracks" >&2; exit 2; }
