@@ -81,8 +81,8 @@ Session::Session(const std::string& scenePath, int width, int height, std::strin
     for (const std::string& name : hostNames()) allowed += (allowed.empty() ? "" : ", ") + name;
     throw std::invalid_argument("unknown host '" + hostName + "' (allowed: " + allowed + ")");
   }
-  for (const retroaa::Config& config : configsToRun)
-    requireGBufferWithinBudget(row->gbufferBytesPerSample(scene), width, height, config);
+  const uint64_t bytesPerSample = row->gbufferBytesPerSample(scene);
+  for (const retroaa::Config& config : configsToRun) requireGBufferWithinBudget(bytesPerSample, width, height, config);
   row->build(*this, width, height);
 }
 

@@ -338,7 +338,8 @@ class TemporalTechnique : public Technique {
     program_.set("uClipWPerViewZ", projection[11]);    // P[2][3]
     // Where this frame's samples lie from their pixels' centres: the jitter the host shifted its projection
     // by moves the image against it under a right-handed view (clip w = -z) and with it under a left-handed one.
-    const Jitter shift = haltonJitter(context.statistics->framesStarted() - jitterOrigin_, jitterLength_);
+    // (The frame drawn now is the one jitter() answered for before it began, one frame fewer started.)
+    const Jitter shift = *jitter(context.config, context.statistics->framesStarted() - 1);
     program_.set("uSampleOffset", -projection[11] * shift.x, -projection[11] * shift.y);
     // A new history averages its first frames evenly (1/n) until temporal_blend takes over: a cut or a
     // reset converges in a few frames instead of fading in over ~2/blend.
