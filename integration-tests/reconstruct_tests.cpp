@@ -151,6 +151,37 @@ TEST(Reconstruct, ADepthStepBelowTheToleranceIsNoEdge) {
   EXPECT_NE(strict.run(body), input) << "with no tolerance the same step is an edge";
 }
 
+TEST(Reconstruct, AFloorAtAGrazingAngleKeepsItsTextureAndASilhouetteOnItIsStillRebuilt) {
+  // A floor at a grazing angle: 1 / depth (affine in the screen across a plane) falls up the rows, from
+  // 1.18 m at row 0's centre to 6.7 m at row 7's. A sub-sample 3/8 px from its pixel's centre lies up to a
+  // quarter deeper or nearer than the centre, beyond Eq. 1's two footprints (about 18 % here); on the
+  // plane its neighbours continue it is the pixel's own surface, and the texture comes back bit for bit
+  // (rebuilt from the rows around it, a start line's checks smeared: STK's black_forest). A wall 0.5 m
+  // away standing on it left of x = 7.6 still makes column 7 an edge.
+  const auto toBuffer = [](float metres) { return std::log2(metres / 0.1f) / std::log2(1000.0f); };  // log depth
+  std::vector<float> floorDepth(kWidth * kHeight), withWall(kWidth * kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      floorDepth[size_t(y * kWidth + x)] = toBuffer(1.0f / (0.9f - 0.1f * (float(y) + 0.5f)));
+      withWall[size_t(y * kWidth + x)] = x < 8 ? toBuffer(0.5f) : floorDepth[size_t(y * kWidth + x)];
+    }
+  const std::string floorBody =
+      "float floorDepth = log2(1.0 / (0.9 - 0.1 * (float(y) + position.y)) / 0.1) / log2(1000.0);"
+      " outNormal = vec4(0.0, 0.0, 1.0, 0.5);";
+  const std::vector<uint8_t> input = noise();
+  ReconstructFixture floor(input, floorDepth);
+  EXPECT_EQ(floor.run(floorBody + " gl_FragDepth = floorDepth;"), input);
+  ReconstructFixture wall(input, withWall);
+  const std::vector<uint8_t> out = wall.run(floorBody + " gl_FragDepth = float(x) + position.x < 7.6 ? " +
+                                            std::to_string(toBuffer(0.5f)) + " : floorDepth;");
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const size_t i = size_t(y * kWidth + x) * 4;
+      const bool same = std::equal(out.begin() + long(i), out.begin() + long(i) + 3, input.begin() + long(i));
+      EXPECT_EQ(same, x != 7) << "row " << y << ", column " << x << (x == 7 ? ": the wall's silhouette" : "");
+    }
+}
+
 TEST(Reconstruct, AHalfCoveredSilhouettePixelMixesItsNeighboursByCoverage) {
   // Left of x = 7.6 a surface (display 200), right of it background (display 30). Column 7's centre is on
   // the surface; its sub-samples right of 0.6 see the background: half of them at 4× (llvmpipe's and
