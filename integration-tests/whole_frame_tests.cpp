@@ -384,6 +384,37 @@ TEST(WholeFrame, SampleShadingSharpensTheMipsByTheSamplesShaded) {
   }
 }
 
+TEST(WholeFrame, CutOutDrawsAreShadedPerSampleByDefaultAndTheRestAsAsked) {
+  // A host that tells its cut-out draws apart shades them per sample where the method draws multisampled (the
+  // default cutout_sample_shading=1), with the mip bias that goes with it; its other draws keep
+  // sample_shading's; nothing draws multisampled under fxaa.
+  SyntheticFrame frame(kWidth, kHeight);
+  auto hooks = frame.attach(retroaa::Method::PerSample);
+  ASSERT_TRUE(hooks);
+  retroaa::Plugin& plugin = hooks->plugin();
+  struct Case {
+    const char* spec;
+    float cutOutShading, cutOutBias, otherShading;
+  };
+  const Case cases[] = {{"per-sample", 1.0f, -1.0f, 0.0f},
+                        {"edge", 1.0f, -1.0f, 0.0f},
+                        {"per-sample@cutout_sample_shading=0", 0.0f, 0.0f, 0.0f},
+                        {"per-sample@cutout_sample_shading=0.5", 0.5f, -0.5f, 0.0f},
+                        {"per-sample@cutout_sample_shading=0@sample_shading=1", 1.0f, -1.0f, 1.0f},
+                        {"reconstruct", 1.0f, -1.0f, 0.0f},  // its prepass draws multisampled
+                        {"temporal@temporal_lod_bias=-0.5", 0.0f, -0.5f, 0.0f},
+                        {"fxaa", 0.0f, 0.0f, 0.0f}};
+  for (const Case& c : cases) {
+    retroaa::Config config;
+    ASSERT_TRUE(retroaa::applyMethodSpec(config, c.spec));
+    ASSERT_TRUE(plugin.reconfigure(config));
+    const retroaa::DrawSettings cutOut = plugin.cutOutDrawSettings();
+    EXPECT_FLOAT_EQ(cutOut.sampleShading, c.cutOutShading) << c.spec;
+    EXPECT_FLOAT_EQ(cutOut.textureLodBias, c.cutOutBias) << c.spec;
+    EXPECT_FLOAT_EQ(plugin.sampleShading(), c.otherShading) << c.spec;
+  }
+}
+
 }  // namespace
 
 // The post filters that rebuild a pixel from its neighbours' colours know the opaque surfaces' depth alone.

@@ -63,6 +63,10 @@ std::vector<Key> buildKeys() {
       number("sample_shading", &Config::sampleShading, 0, 1,
              "fraction of samples the host's model pass shades where it draws multisampled (glMinSampleShading): 1 "
              "runs its discard per sample, anti-aliasing cut-out edges, at up to samples x the model pass's cost"));
+  keys.push_back(number("cutout_sample_shading", &Config::cutOutSampleShading, 0, 1,
+                        "the same for the model pass's cut-out draws alone (their fragment shader discards: foliage, "
+                        "fences), where the host tells them apart (Plugin::cutOutDrawSettings): 1 anti-aliases cut-out "
+                        "edges for the cost of those draws; at least sample_shading"));
   for (const TechniqueRow& row : techniqueRegistry())
     if (row.keys)
       for (Key& key : row.keys()) {

@@ -230,6 +230,23 @@ struct Plugin::Impl {
   }
   uint64_t budgetFrame = 0;  // the measured frame the budget last saw
 
+  // Whether the host's model pass (or its prepass) draws multisampled, where sample shading means anything.
+  bool drawsMultisampled() const {
+    if (msaa && msaa->rasterisesPerSample()) return true;
+    return std::any_of(techniques.begin(), techniques.end(),
+                       [](const ActiveTechnique& active) { return active.technique->prepassFramebuffer() != 0; });
+  }
+  // The materials' mip bias for draws shaded at `shading` (a fraction of the samples): a method with a history's
+  // own, or, shaded per sample, -0.5 log2(k): each pixel averages k = shading × samples texture reads at the
+  // pixel's mip, and the mip of a render at √k times the width and height is log2(√k) finer (at 4×, shaded
+  // fully: -1); the more negative.
+  float textureLodBiasShading(float shading) const {
+    float history = 0.0f;  // a method with a history's own (the others' are 0)
+    for (const ActiveTechnique& active : techniques) history += active.technique->textureLodBias(context.config);
+    const int samples = msaa ? msaa->samples() : context.config.samples;
+    return std::min(history, -0.5f * std::log2(std::max(1.0f, shading * float(samples))));
+  }
+
   SharedTargets shared() { return {msaa.get(), slices.get(), postTarget.get(), forwardMask.get()}; }
   Technique* methodTechnique() {
     return !techniques.empty() && techniques.front().row->info.method == context.config.method
@@ -504,20 +521,14 @@ Jitter Plugin::jitter() const {
   return {};
 }
 
-float Plugin::sampleShading() const {
-  const bool drawsMultisampled = (impl_->msaa && impl_->msaa->rasterisesPerSample()) || prepassFramebuffer() != 0;
-  return drawsMultisampled ? impl_->context.config.sampleShading : 0.0f;
-}
+float Plugin::sampleShading() const { return impl_->drawsMultisampled() ? impl_->context.config.sampleShading : 0.0f; }
 
-float Plugin::textureLodBias() const {
+float Plugin::textureLodBias() const { return impl_->textureLodBiasShading(sampleShading()); }
+
+DrawSettings Plugin::cutOutDrawSettings() const {
   const Config& config = impl_->context.config;
-  float history = 0.0f;  // a method with a history's own (the others' are 0)
-  for (const ActiveTechnique& active : impl_->techniques) history += active.technique->textureLodBias(config);
-  // Sample shading averages k = shaded fraction × samples texture reads a pixel, each at the pixel's mip: the mip
-  // of a render at √k times the width and height is log2(√k) finer (at 4×, shaded fully: -1).
-  const int samples = impl_->msaa ? impl_->msaa->samples() : impl_->context.config.samples;
-  const float shaded = std::max(1.0f, sampleShading() * float(samples));
-  return std::min(history, -0.5f * std::log2(shaded));
+  const float shading = impl_->drawsMultisampled() ? std::max(config.sampleShading, config.cutOutSampleShading) : 0.0f;
+  return {shading, impl_->textureLodBiasShading(shading)};
 }
 
 Status Plugin::resolve(const FrameInfo& frame) {

@@ -83,7 +83,8 @@ struct Config {
   // The G-buffer: its samples, its source, and how the host's model pass shades it.
   int samples = 4;             // `samples`
   int supersample = 0;         // `supersample` (the host's model pass renders at Plugin::geometryScale())
-  float sampleShading = 0.0f;  // `sample_shading` (the host applies Plugin::sampleShading())
+  float sampleShading = 0.0f;        // `sample_shading` (the host applies Plugin::sampleShading())
+  float cutOutSampleShading = 1.0f;  // `cutout_sample_shading` (the host applies Plugin::cutOutDrawSettings())
   // The resolve, which every MSAA G-buffer method runs.
   ResolveWeighting resolveWeighting = ResolveWeighting::Median;  // `resolve_weighting`
   bool resolveCompute = false;                                   // `resolve_compute`

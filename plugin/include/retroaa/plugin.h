@@ -84,6 +84,11 @@ class RETROAA_API Plugin {
   // host's `discard` then runs per sample, so cut-out (alpha-tested) edges are anti-aliased, at up to
   // `samples` times the model pass's fragment work.
   float sampleShading() const;
+  // What to set around the model pass's cut-out draws instead (a fragment shader that discards: alpha-tested
+  // foliage, fences, grates), for a host that can tell them apart: sample shading at
+  // max(sample_shading, cutout_sample_shading) where the method draws multisampled, and the mip bias that goes
+  // with it (as textureLodBias()). The cut-outs' edges are then anti-aliased for the cost of those draws alone.
+  DrawSettings cutOutDrawSettings() const;
   // After the model pass, every frame and for every method (it also begins the frame). Returns the
   // first error of a pass (none are expected once create succeeded).
   Status resolve(const FrameInfo& frame);

@@ -227,6 +227,12 @@ struct Jitter {
   float x = 0, y = 0;
 };
 
+// What the host sets around a kind of model draw (Plugin::cutOutDrawSettings).
+struct DrawSettings {
+  float sampleShading = 0;   // enable GL_SAMPLE_SHADING with glMinSampleShading(it) where above 0
+  float textureLodBias = 0;  // added to the material samplers' mip bias
+};
+
 // One plugin pass of a measured frame (Config::measureGpuTime).
 struct PassStats {
   std::string name;                  // e.g. "resolve", "lighting"
