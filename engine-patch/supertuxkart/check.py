@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The SuperTuxKart check's assertions, on `retroaa score`'s report.json and the capture log.
 
-usage: check.py CAPTURE_DIR PATCH_DIR [--edges] [--sky] [--whole-frame] [--race]
+usage: check.py CAPTURE_DIR PATCH_DIR [--edges] [--sky] [--whole-frame] [--race] [--forward]
   --edges  every multi-sample method, and temporal converged on the still frame, beats off's edge PSNR;
            edge within 0.5 dB of per-sample's at <= 1.5 evaluations per pixel (a track whose
            silhouettes stand against geometry)
@@ -13,13 +13,16 @@ usage: check.py CAPTURE_DIR PATCH_DIR [--edges] [--sky] [--whole-frame] [--race]
   --race   a driven race (race.sh): every method scored over the same frames; temporal's edge PSNR at
            least fxaa's, its interior PSNR at least off's - 1 dB, its kart (the score's "kart" region) at
            least off's (the swing target is not met: docs/results.md)
+  --forward  every method's interior PSNR at least off's - 1 dB: nothing STK's forward passes drew
+           (transparents, the karts' exhaust smoke) is lost (a capture with its effects on)
 Exit 1 naming every failed assertion; prints 'N passed, N failed'."""
 import json
 import pathlib
 import sys
 
 captures, patches = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
-edges, sky, whole_frame, race = ("--" + flag in sys.argv[3:] for flag in ("edges", "sky", "whole-frame", "race"))
+edges, sky, whole_frame, race, forward = ("--" + flag in sys.argv[3:]
+                                         for flag in ("edges", "sky", "whole-frame", "race", "forward"))
 rows = {row["spec"]: row for row in json.loads((captures / "report.json").read_text())}
 log = [json.loads(line) for line in (captures / "capture.jsonl").read_text().splitlines() if line.strip()]
 results = []
@@ -84,6 +87,10 @@ if race:
         kart, off_kart = temporal["regions"]["kart"]["psnr_db"], off["regions"]["kart"]["psnr_db"]
         check("temporal's kart PSNR at least off's in the race", kart >= off_kart,
               f"{kart:.2f} dB against {off_kart:.2f} dB")
+for spec, row in rows.items() if forward else []:
+    check(f"{spec} keeps what the forward passes drew (interior PSNR at least off's - 1 dB)",
+          row["interior_psnr_db"] >= off["interior_psnr_db"] - 1,
+          f"{row['interior_psnr_db']:.2f} dB against {off['interior_psnr_db']:.2f} dB")
 # FXAA, SMAA and temporal accumulation filter every pixel of the display, sky included: they are not
 # held to it.
 for spec, row in rows.items() if sky else []:

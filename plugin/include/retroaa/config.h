@@ -81,8 +81,8 @@ enum class SmaaEdgeDetection : uint8_t {
 struct Config {
   Method method = Method::Off;  // `method`
   // The G-buffer: its samples, its source, and how the host's model pass shades it.
-  int samples = 4;             // `samples`
-  int supersample = 0;         // `supersample` (the host's model pass renders at Plugin::geometryScale())
+  int samples = 4;                   // `samples`
+  int supersample = 0;               // `supersample` (the host's model pass renders at Plugin::geometryScale())
   float sampleShading = 0.0f;        // `sample_shading` (the host applies Plugin::sampleShading())
   float cutOutSampleShading = 1.0f;  // `cutout_sample_shading` (the host applies Plugin::cutOutDrawSettings())
   // The resolve, which every MSAA G-buffer method runs.
