@@ -230,12 +230,14 @@ struct Plugin::Impl {
   }
   uint64_t budgetFrame = 0;  // the measured frame the budget last saw
 
-  // Whether the host's model pass (or its prepass) draws multisampled, where sample shading means anything.
-  bool drawsMultisampled() const {
-    if (msaa && msaa->rasterisesPerSample()) return true;
-    return std::any_of(techniques.begin(), techniques.end(),
-                       [](const ActiveTechnique& active) { return active.technique->prepassFramebuffer() != 0; });
+  // The first active technique's prepass framebuffer (0: no method draws the models a second time).
+  GLuint prepassFramebuffer() const {
+    for (const ActiveTechnique& active : techniques)
+      if (const GLuint framebuffer = active.technique->prepassFramebuffer()) return framebuffer;
+    return 0;
   }
+  // Whether the host's model pass (or its prepass) draws multisampled, where sample shading means anything.
+  bool drawsMultisampled() const { return (msaa && msaa->rasterisesPerSample()) || prepassFramebuffer() != 0; }
   // The materials' mip bias for draws shaded at `shading` (a fraction of the samples): a method with a history's
   // own, or, shaded per sample, -0.5 log2(k): each pixel averages k = shading × samples texture reads at the
   // pixel's mip, and the mip of a render at √k times the width and height is log2(√k) finer (at 4×, shaded
@@ -497,11 +499,7 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
 
 int Plugin::geometryScale() const { return impl_->msaa ? impl_->msaa->supersample() : 1; }
 
-GLuintHandle Plugin::prepassFramebuffer() const {
-  for (const ActiveTechnique& active : impl_->techniques)
-    if (const GLuint framebuffer = active.technique->prepassFramebuffer()) return framebuffer;
-  return 0;
-}
+GLuintHandle Plugin::prepassFramebuffer() const { return impl_->prepassFramebuffer(); }
 
 GLuintHandle Plugin::multisampledAttachment(AttachmentRole role) const {
   const int index = findRole(impl_->context.layout, role);
