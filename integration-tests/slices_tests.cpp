@@ -56,7 +56,9 @@ TEST(Slices, EdgeMatchesPerSampleAndCountsEvaluationsExactly) {
     EXPECT_NEAR(stats.evaluationsPerPixel(), 1.0 + (n - 1) * edgeFraction, 1e-9);
     EXPECT_GT(edgeFraction, 0.01);
     EXPECT_LT(edgeFraction, 0.5);
-    EXPECT_GE(psnr, detector == retroaa::EdgeDetector::Coverage ? 60.0 : 38.0);
+    // Coverage and plane leave unmarked only samples of one plane with one normal, whose averaged
+    // attributes light as their samples do; depth's fixed tolerance misses more.
+    EXPECT_GE(psnr, detector == retroaa::EdgeDetector::Depth ? 38.0 : 58.0);
   }
 }
 

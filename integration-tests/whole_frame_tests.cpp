@@ -75,17 +75,17 @@ void main() { outColor = vec4(uSky, 0.0); })",
   glDisable(GL_DEPTH_TEST);
 }
 
-SyntheticSample litSurface(glm::vec3 albedo, float irradiance) {
-  SyntheticSample sample = surfaceSample(2.0f, {0, 0, 1}, albedo);
+SyntheticSample litSurface(glm::vec3 albedo, float irradiance, float depth = 2.0f) {
+  SyntheticSample sample = surfaceSample(depth, {0, 0, 1}, albedo);
   sample.attachments[3] = glm::vec4(irradiance, 0, 0, 1);
   return sample;
 }
 
-// Pixel 1: half red surface lit at 1, half sky. Pixel 2: red lit at 1 beside green lit at 0.2 (no sky).
-// Pixel 0 and the rest: a grey surface lit at 0.5, one sample for all.
+// Pixel 1: half red surface lit at 1, half sky. Pixel 2: red lit at 1 beside a green surface behind it lit
+// at 0.2 (no sky). Pixel 0 and the rest: a grey surface lit at 0.5, one sample for all.
 std::vector<std::vector<SyntheticSample>> composedScene() {
   std::vector<std::vector<SyntheticSample>> pixels(size_t(kWidth) * kHeight, {litSurface(glm::vec3(0.5f), 0.5f)});
-  const SyntheticSample red = litSurface({1, 0, 0}, 1.0f), green = litSurface({0, 1, 0}, 0.2f);
+  const SyntheticSample red = litSurface({1, 0, 0}, 1.0f), green = litSurface({0, 1, 0}, 0.2f, 3.0f);
   pixels[1] = {red, red, backgroundSample(), backgroundSample()};
   pixels[2] = {red, red, green, green};
   return pixels;
@@ -277,11 +277,13 @@ TEST(WholeFrame, ForwardCallsOutOfOrderAreRefused) {
 }
 
 // A cut-out drawn by a model shader that discards: the edge x = 3.5 + 0.25 y crosses pixels at a quarter of
-// their width. Per-pixel shading decides each pixel at its centre; per-sample shading each sample.
-std::vector<glm::vec4> cutOutLight(float sampleShading) {
+// their width. Per-pixel shading decides each pixel at its centre; per-sample shading each sample. Its red
+// channel is a texture that varies within a pixel; green and blue are 1. `counts` gets the slice counts.
+std::vector<glm::vec4> cutOutLight(float sampleShading, retroaa::Method method = retroaa::Method::PerSample,
+                                   std::vector<uint8_t>* counts = nullptr) {
   SyntheticFrame frame(kWidth, kHeight);
   retroaa::Config config;
-  config.method = retroaa::Method::PerSample;
+  config.method = method;
   config.samples = 4;
   config.sampleShading = sampleShading;
   auto hooks = frame.attach(config);
@@ -308,7 +310,8 @@ layout(location = 4) out vec4 outEmissive;
 in vec2 vScreen;
 void main() {
   if (vScreen.x > 3.5 + 0.25 * vScreen.y) discard;
-  outAlbedo = vec4(1.0); outPosition = vec4(0.0, 0.0, 2.0, 1.0); outNormal = vec4(0.0, 0.0, 1.0, 0.5);
+  outAlbedo = vec4(0.5 + 0.4 * sin(2.0 * vScreen.x + vScreen.y), 1.0, 1.0, 1.0);
+  outPosition = vec4(0.0, 0.0, 2.0, 1.0); outNormal = vec4(0.0, 0.0, 1.0, 0.5);
   outSpecular = vec4(0.0); outEmissive = vec4(0.0, 0.0, 0.0, 1.0);
   gl_FragDepth = 0.5;
 })";
@@ -330,6 +333,7 @@ void main() {
   const GLuint color = frame.renderer->targets().color;
   EXPECT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(color, target, kWidth, kHeight); }));
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  if (counts) *counts = plugin.readSliceCounts();
   return frame.read(frame.renderer->targets().lightTexture);
 }
 
@@ -349,6 +353,31 @@ TEST(WholeFrame, SampleShadingAntiAliasesCutOutEdges) {
   // Away from the edge both agree: covered on the left, background on the right.
   EXPECT_NEAR(perSample[0].g, 1.0f, 1e-3f);
   EXPECT_NEAR(perSample[kWidth - 1].g, perPixel[kWidth - 1].g, 1e-3f);
+}
+
+// Shaded per sample, one surface's samples differ bit for bit; `edge`'s default detector must still light
+// only the pixels its discard cuts, not every pixel its texture varies in.
+TEST(WholeFrame, EdgeLightsACutOutsEdgeNotItsTextureShadedPerSample) {
+  std::vector<uint8_t> counts;
+  const std::vector<glm::vec4> edge = cutOutLight(1.0f, retroaa::Method::Edge, &counts);
+  const std::vector<glm::vec4> perSample = cutOutLight(1.0f);
+  ASSERT_EQ(counts.size(), size_t(kWidth) * kHeight);
+  ASSERT_EQ(edge.size(), perSample.size());
+  int edgePixels = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const bool marked = counts[size_t(y) * kWidth + x] > 1;
+      edgePixels += marked;
+      // The discard's edge x = 3.5 + 0.25 (y + 0.5) lies in column 3 or 4; the cut-out's textured inside
+      // (columns 0-2) and the background (5-7) are one surface each.
+      if (x <= 2 || x >= 5) {
+        EXPECT_FALSE(marked) << x << "," << y;
+      }
+    }
+  EXPECT_GE(edgePixels, kHeight);
+  // Unmarked pixels light their averaged albedo once; this light is linear in it, so they match.
+  for (size_t i = 0; i < edge.size(); ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(edge[i][c], perSample[i][c], 2.0f / 255) << i;
 }
 
 TEST(WholeFrame, SampleShadingIsZeroWhereNothingDrawsMultisampled) {

@@ -1,38 +1,77 @@
 #version 450 core
-// Edge detection for `edge` (Thibieroz): a pixel whose samples see more than one surface gets all N
-// samples lit (slice count N), any other pixel one (count 1). Writes the count into an R8UI target and,
-// where ARB_shader_stencil_export exists, into the stencil buffer in the same pass.
+// Edge detection for `edge` (Thibieroz): a pixel whose samples see more than one surface (by the chosen
+// EDGE_DETECTOR) gets all N samples lit (slice count N), any other pixel one (count 1). Writes the count into an R8UI
+// target and, where ARB_shader_stencil_export exists, into the stencil buffer in the same pass.
 #if STENCIL_EXPORT
 #extension GL_ARB_shader_stencil_export : require
 #endif
 #include "common/gbuffer.glsl"
 
 // EDGE_DETECTOR is one of the DETECTOR_* values the plugin injects (shared_constants.h).
-uniform float uFootprintTan;     // tan(hfov / width)
-uniform float uDepthCloseness;   // c of the depth detector
-uniform float uNormalCosine;     // cos(angle) of the normal detector
+uniform float uFootprintTan;    // tan(hfov / width)
+uniform float uDepthCloseness;  // c of the depth detector
+uniform float uNormalCosine;    // cos(angle) of the normal detector
 layout(location = 0) out uint outCount;
+
+// The G-buffer's size in pixels (a supersampled one holds SUPERSAMPLE² texels a pixel).
+ivec2 pixelCount() {
+#if SUPERSAMPLE > 1
+  return textureSize(uDepthBuffer, 0) / SUPERSAMPLE;
+#elif MULTISAMPLED
+  return textureSize(uDepthBuffer);
+#else
+  return textureSize(uDepthBuffer, 0);
+#endif
+}
+
+// The depth slope of the pixel's own surface along one axis, from sample 0 of its two neighbours: the
+// smaller one-sided difference, since the side that crosses a silhouette has the larger one (Lauritzen's
+// dFdx takes whichever side the quad pairs, and a silhouette's then hides every sample behind it). Where
+// the two sides slope opposite ways the pixel is a ridge or a thin feature, and no slope is trusted.
+float surfaceSlope(float before, float centre, float after) {
+  float toBefore = centre - before, toAfter = after - centre;  // NaN or inf beside background
+  bool beforeOk = !isnan(toBefore) && !isinf(toBefore), afterOk = !isnan(toAfter) && !isinf(toAfter);
+  if (beforeOk && afterOk) return toBefore * toAfter > 0.0 ? min(abs(toBefore), abs(toAfter)) : 0.0;
+  return beforeOk ? abs(toBefore) : afterOk ? abs(toAfter) : 0.0;
+}
+
+// Whether every sample lies on sample 0's plane, with its normal: depth within the surface's slope across
+// one pixel (sample offsets are under a pixel), normals within 8 degrees. Samples of one surface shaded per
+// sample (a cut-out's texture read at each sample, interpolated normals) pass; a second surface does not.
+bool samplesShareOnePlane(ivec2 pixel) {
+  float d0 = sampleDistance(pixel, 0);
+  vec3 n0 = sampleNormal(pixel, 0);
+  ivec2 last = pixelCount() - 1;
+  float slope = 0.0;
+  if (!isinf(d0)) {
+    slope = surfaceSlope(sampleDistance(ivec2(max(pixel.x - 1, 0), pixel.y), 0), d0,
+                         sampleDistance(ivec2(min(pixel.x + 1, last.x), pixel.y), 0)) +
+            surfaceSlope(sampleDistance(ivec2(pixel.x, max(pixel.y - 1, 0)), 0), d0,
+                         sampleDistance(ivec2(pixel.x, min(pixel.y + 1, last.y)), 0));
+  }
+  for (int s = 1; s < SAMPLES; ++s) {
+    float d = sampleDistance(pixel, s);
+    if (isinf(d) != isinf(d0)) return false;  // geometry beside background
+    if (isinf(d)) continue;                   // background beside background
+    if (abs(d - d0) > slope + 1e-5 * d0 || dot(sampleNormal(pixel, s), n0) < 0.99) return false;
+  }
+  return true;
+}
 
 bool isEdge(ivec2 pixel) {
 #if EDGE_DETECTOR == DETECTOR_EVERY_PIXEL
   return true;
+#elif EDGE_DETECTOR == DETECTOR_PLANE
+  return !samplesShareOnePlane(pixel);
 #else
   float d0 = sampleDistance(pixel, 0);
   vec3 n0 = sampleNormal(pixel, 0);
-#if EDGE_DETECTOR == DETECTOR_PLANE
-  // Lauritzen's tiled-deferred test: the depth slope across the pixel bounds how far its own samples
-  // may stray from sample 0's depth.
-  float maxDelta = isinf(d0) ? 0.0 : abs(dFdx(d0)) + abs(dFdy(d0));
-  if (isnan(maxDelta) || isinf(maxDelta)) maxDelta = 0.0;
-#endif
   for (int s = 1; s < SAMPLES; ++s) {
     float d = sampleDistance(pixel, s);
     if (isinf(d) != isinf(d0)) return true;  // geometry beside background
     if (isinf(d)) continue;                  // background beside background
 #if EDGE_DETECTOR == DETECTOR_DEPTH
     if (abs(d - d0) > min(d, d0) * uFootprintTan * uDepthCloseness) return true;
-#elif EDGE_DETECTOR == DETECTOR_PLANE
-    if (abs(d - d0) > maxDelta + 1e-5 * d0 || dot(sampleNormal(pixel, s), n0) < 0.99) return true;
 #elif EDGE_DETECTOR == DETECTOR_NORMAL
     if (dot(normalize(sampleNormal(pixel, s)), normalize(n0)) < uNormalCosine) return true;
 #elif EDGE_DETECTOR == DETECTOR_MATERIAL
@@ -40,11 +79,13 @@ bool isEdge(ivec2 pixel) {
     bool differs = false;
 #if ALBEDO_ATTACHMENT >= 0
     differs = differs || any(greaterThan(abs(FETCH(uAttachments[ALBEDO_ATTACHMENT], pixel, s) -
-                                             FETCH(uAttachments[ALBEDO_ATTACHMENT], pixel, 0)), vec4(1.0 / 512.0)));
+                                             FETCH(uAttachments[ALBEDO_ATTACHMENT], pixel, 0)),
+                                         vec4(1.0 / 512.0)));
 #endif
 #if SPECULAR_ATTACHMENT >= 0
     differs = differs || any(greaterThan(abs(FETCH(uAttachments[SPECULAR_ATTACHMENT], pixel, s) -
-                                             FETCH(uAttachments[SPECULAR_ATTACHMENT], pixel, 0)), vec4(1.0 / 512.0)));
+                                             FETCH(uAttachments[SPECULAR_ATTACHMENT], pixel, 0)),
+                                         vec4(1.0 / 512.0)));
 #endif
 #if NORMAL_ATTACHMENT >= 0 && NORMAL_ENCODING == NORMAL_XYZ
     differs = differs || abs(FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).w -
@@ -52,14 +93,17 @@ bool isEdge(ivec2 pixel) {
 #endif
 #if NORMAL_ATTACHMENT >= 0 && NORMAL_ENCODING == NORMAL_SPHEREMAP  // zw: the host's material (STK: roughness, metallic)
     differs = differs || any(greaterThan(abs(FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, s).zw -
-                                             FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, 0).zw), vec2(1.0 / 512.0)));
+                                             FETCH(uAttachments[NORMAL_ATTACHMENT], pixel, 0).zw),
+                                         vec2(1.0 / 512.0)));
 #endif
     if (differs) return true;
 #elif EDGE_DETECTOR == DETECTOR_COVERAGE
-    // The host's model shader runs once per pixel and primitive; every sample one primitive covers
-    // holds its outputs bit for bit. Any difference means a second primitive.
+    // A model shader run once per pixel and primitive writes the same outputs into every sample the
+    // primitive covers, so bit-identical samples are one surface. Different ones are a second primitive,
+    // or one surface shaded per sample (cut-out draws, `sample_shading`, a driver's 16x mode): the plane
+    // test tells them apart.
     for (int a = 0; a < ATTACHMENT_COUNT; ++a)
-      if (FETCH(uAttachments[a], pixel, s) != FETCH(uAttachments[a], pixel, 0)) return true;
+      if (FETCH(uAttachments[a], pixel, s) != FETCH(uAttachments[a], pixel, 0)) return !samplesShareOnePlane(pixel);
 #endif
   }
   return false;
