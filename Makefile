@@ -43,8 +43,9 @@ stk: build stk-deps
 	bash $(STK_DIR)/build.sh $(BUILD)
 
 # Every method in SuperTuxKart on three of its tracks (sky and power lines; indoor; conifers and a start line)
-# at 640x480 4x against its stock render at 2560x1920 box-filtered: out/stk/<track>/report.md (+ .json, the
-# images and a crop where the frame model matters: the sky's edge, the kart against the wall, a conifer).
+# at 640x480 4x against its stock render at 2560x1920 box-filtered, with STK's particles on (forward passes):
+# out/stk/<track>/report.md (+ .json, the images and a crop where the frame model matters: the sky's edge,
+# the kart against the wall, a conifer).
 STK_TRACKS ?= cornfield_crossing olivermath black_forest
 STK_FRAME ?= 40
 STK_REPORT_METHODS = off stk-mlaa fxaa smaa resolve resolve/front resolve/back resolve/fso coverage reconstruct \
@@ -57,9 +58,9 @@ STK_REPORT_METHODS = off stk-mlaa fxaa smaa resolve resolve/front resolve/back r
 STK_RACE_METHODS = off fxaa smaa reconstruct resolve edge per-sample temporal reconstruct+temporal
 STK_RACE_SCORE = --region kart=120,110,80,75 --region wires=160,0,160,70 --crop 128,112,64 --crop 200,20,64
 stk-report: stk
-	for effects in "" "--effects --no-ssao"; do for track in $(STK_TRACKS); do \
+	for effects in "--particles" "--effects --no-ssao"; do for track in $(STK_TRACKS); do \
 	  case $$track in black_forest) crop=210,130,64 ;; *) crop=300,200,64 ;; esac; \
-	  dir=out/stk/$${effects:+effects/}$$track; \
+	  case $$effects in --effects*) dir=out/stk/effects/$$track ;; *) dir=out/stk/$$track ;; esac; \
 	  bash $(STK_DIR)/capture.sh $(STK) $$track 640x480 $(STK_FRAME) "$(STK_REPORT_METHODS)" $$dir 1 $$effects && \
 	  bash $(STK_DIR)/capture.sh $(STK) $$track 2560x1920 $(STK_FRAME) "off" $$dir/reference 1 $$effects && \
 	  $(RETROAA) score $$dir --reference $$dir/reference/off.png --factor 4 --crop $$crop || exit 1; done; done

@@ -452,8 +452,9 @@ TEST(WholeFrame, CutOutDrawsAreShadedPerSampleByDefaultAndTheRestAsAsked) {
 constexpr int kFilterWidth = 16, kFilterHeight = 8;
 bool drawnByTheForwardPass(int x, int y) { return x == 8 && y >= 2 && y <= 5; }
 
-// The display after post(); `drawsForwardPasses`: what the layout says (the pass is drawn either way).
-std::vector<uint8_t> filteredBesideAForwardPass(const char* spec, bool drawsForwardPasses) {
+// The display after post(); `drawsForwardPasses`: what the layout says (the pass is drawn either way);
+// `film`: the forward pass is a white film of a tenth's opacity over the whole frame instead of the particle.
+std::vector<uint8_t> filteredBesideAForwardPass(const char* spec, bool drawsForwardPasses, bool film = false) {
   SyntheticFrame frame(kFilterWidth, kFilterHeight);
   const host::HostTargets& t = frame.renderer->targets();
   retroaa::Description description;
@@ -504,9 +505,18 @@ std::vector<uint8_t> filteredBesideAForwardPass(const char* spec, bool drawsForw
     if (framebuffer) {
       glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.value());
       glViewport(0, 0, kFilterWidth, kFilterHeight);
-      const glm::vec2 size(kFilterWidth, kFilterHeight);  // the particle: pixel column 8, rows 2 to 5
-      drawForwardTriangle({{8, 2}, {9, 2}, {8, 6}}, 0.0f, {0, 0, 8}, size);
-      drawForwardTriangle({{9, 2}, {9, 6}, {8, 6}}, 0.0f, {0, 0, 8}, size);
+      const glm::vec2 size(kFilterWidth, kFilterHeight);
+      if (film) {
+        glEnable(GL_BLEND);
+        glBlendColor(0, 0, 0, 0.1f);
+        glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+        drawForwardTriangle({{0, 0}, {16, 0}, {0, 8}}, 0.0f, {1, 1, 1}, size);
+        drawForwardTriangle({{16, 0}, {16, 8}, {0, 8}}, 0.0f, {1, 1, 1}, size);
+        glDisable(GL_BLEND);
+      } else {  // the particle: pixel column 8, rows 2 to 5
+        drawForwardTriangle({{8, 2}, {9, 2}, {8, 6}}, 0.0f, {0, 0, 8}, size);
+        drawForwardTriangle({{9, 2}, {9, 6}, {8, 6}}, 0.0f, {0, 0, 8}, size);
+      }
     }
     EXPECT_TRUE(plugin.endForward());
   }
@@ -549,5 +559,19 @@ TEST(WholeFrame, PostFiltersSpreadNoColourAForwardPassDrew) {
     for (int y = 2; y <= 5; ++y)
       tinted += out[size_t(y * kFilterWidth + 7) * 4 + 2] > out[size_t(y * kFilterWidth + 7) * 4] + 20;
     EXPECT_GE(tinted, 2) << spec;
+  }
+}
+
+TEST(WholeFrame, PostFiltersRebuildEdgesUnderAFilmAForwardPassDrew) {
+  // A faint particle's smoke or a haze over a silhouette changes every pixel alike: the filters still rebuild
+  // the silhouette under it (when any change froze a pixel, STK's exhaust smoke over the kart kept its
+  // outline jagged under reconstruct: olivermath 26.20 -> 24.95 dB edge PSNR with particles on).
+  for (const char* spec : {"reconstruct", "coverage", "resolve+reconstruct", "resolve+coverage"}) {
+    const std::vector<uint8_t> out = filteredBesideAForwardPass(spec, true, true);
+    ASSERT_EQ(out.size(), size_t(kFilterWidth) * kFilterHeight * 4) << spec;
+    int blended = 0;
+    for (int y = 0; y < kFilterHeight; ++y)
+      blended += out[size_t(y * kFilterWidth + 7) * 4] > 40 && out[size_t(y * kFilterWidth + 7) * 4] < 190;
+    EXPECT_GE(blended, 6) << spec << ": the silhouette column under the film is filtered";
   }
 }

@@ -4,6 +4,7 @@
 # to frame FRAME, then holds still while each method renders it (2 frames to settle, TIMED frames timed,
 # the last one written). Writes OUT/<method>.png and OUT/capture.jsonl.
 #   usage: capture.sh STK_BINARY TRACK WIDTHxHEIGHT FRAME "METHODS" OUT [TIMED] [--race=K [--karts=N]] [--effects]
+#          [--no-ssao] [--particles]
 # METHODS: retroaa method specs (off, fxaa, edge, resolve/fso+fxaa, ...), `stk-mlaa` (STK's own MLAA) and
 # `chosen` (the choice saved in STK's config.xml; see RETROAA_STK_HOME).
 # --race=K: a race in motion instead: STK's AI drives (its profile mode), the world never holds, the one
@@ -13,10 +14,12 @@
 #   lighting, particles) instead of off. --no-ssao then leaves SSAO off: its sample pattern and depth mips are
 #   in pixels, so a 4x reference does not match it (olivermath at 320x240, SSAO alone: interior PSNR 21.5 dB
 #   against 40.1 without; each other effect alone within 0.2 dB): scored tables use it.
+# --particles: STK's particles (exhaust smoke, the track's emitters) on without the other effects: forward
+#   passes drawn between beginForward() and endForward().
 set -euo pipefail
 binary=$1 track=$2 size=$3 frame=$4 methods=$5 out=$6
 shift 6
-timed=3 mode=(--race-now --numkarts=1 --laps=1) race=0 karts=1 no_ssao=0
+timed=3 mode=(--race-now --numkarts=1 --laps=1) race=0 karts=1 no_ssao=0 particles=0
 effects=(--disable-light-shaft --disable-ssao --disable-glow --disable-bloom --disable-ibl --disable-particles --shadows=0)
 for option in "$@"; do
   case $option in
@@ -25,11 +28,13 @@ for option in "$@"; do
     --effects) effects=(--enable-light-shaft --enable-ssao --enable-glow --enable-bloom --enable-ibl --enable-particles
                         --shadows=1024) ;;
     --no-ssao) no_ssao=1 ;;
+    --particles) particles=1 ;;
     *[!0-9]* | '') echo "capture: unknown option '$option'" >&2; exit 2 ;;
     *) timed=$option ;;
   esac
 done
 [ "$no_ssao" = 0 ] || effects=("${effects[@]/--enable-ssao/--disable-ssao}")   # STK: --enable-ssao wins
+[ "$particles" = 0 ] || effects=("${effects[@]/--disable-particles/--enable-particles}")
 case $karts in '' | *[!0-9]* | 0) echo "capture: --karts needs a count of at least 1, got '$karts'" >&2; exit 2 ;; esac
 [ "$race" = 0 ] || mode=("--numkarts=$karts" --profile-time=100000 "--aa-race=$race")
 width=${size%x*} height=${size#*x}

@@ -6,20 +6,14 @@
 // pixel is how much of it the other surface covers. One bilinear tap, f texels towards that side,
 // blends (1 − f) of this pixel with f of its neighbour there.
 // The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING and FORWARD_MASK (the host draws forward passes: a
-// pixel they drew, or one whose tap would read one they drew, keeps its colour; the depth here is the
-// opaque surfaces' alone).
+// pixel on an edge of what they drew, or one whose tap would read a colour they changed otherwise than
+// this pixel's, keeps its colour; the depth here is the opaque surfaces' alone).
 #include "common/depth_buffer.glsl"
 layout(binding = 0) uniform sampler2D uInput;        // the display image (linear filtering)
 layout(binding = 1) uniform sampler2D uPixelDepth;   // the host's single-sample depth buffer
 layout(binding = 2) uniform sampler2DMS uSampleDepth;  // multisampled depth of the same frame
-#if FORWARD_MASK
-layout(binding = 3) uniform sampler2D uForwardDrawn;  // 1 where a forward pass drew (ForwardMask)
-bool drawnForward(ivec2 pixel) {
-  return texelFetch(uForwardDrawn, clamp(pixel, ivec2(0), textureSize(uForwardDrawn, 0) - 1), 0).r > 0.5;
-}
-#else
-bool drawnForward(ivec2 pixel) { return false; }
-#endif
+#define FORWARD_MASK_BINDING 3
+#include "common/forward_mask.glsl"
 uniform vec2 uSamplePositions[SAMPLES];
 uniform vec2 uTexelSize;
 uniform float uFootprintTan;  // tan(hfov / width)
@@ -48,8 +42,9 @@ void main() {
   vec2 offset = differing > 0 ? offsetSum / float(differing) : vec2(0.0);
   float longest = max(abs(offset.x), abs(offset.y));
   ivec2 side = ivec2(sign(offset));  // the neighbours the tap below reads besides this pixel
-  bool forward = drawnForward(pixel) || drawnForward(pixel + ivec2(side.x, 0)) ||
-                 drawnForward(pixel + ivec2(0, side.y)) || drawnForward(pixel + side);
+  bool underFilm = underForwardFilm(pixel);
+  bool forward = forwardEdge(pixel) || !lendsColour(pixel + ivec2(side.x, 0), underFilm) ||
+                 !lendsColour(pixel + ivec2(0, side.y), underFilm) || !lendsColour(pixel + side, underFilm);
   if (differing == 0 || longest < 1e-6 || forward) {
     outColour = centre;  // interior, a symmetric crossing with no side to blend towards, or a forward pass's
     return;

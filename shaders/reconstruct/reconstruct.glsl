@@ -25,12 +25,8 @@ layout(binding = 1) uniform sampler2D uPixelDepth;      // the host's single-sam
 layout(binding = 2) uniform sampler2D uPixelNormal;     // the host's single-sample normal (as encoded)
 layout(binding = 3) uniform sampler2DMS uSampleDepth;   // multisampled depth of the same frame
 layout(binding = 4) uniform sampler2DMS uSampleNormal;  // its normals (xy only when packed)
-#if FORWARD_MASK
-layout(binding = 5) uniform sampler2D uForwardDrawn;  // 1 where a forward pass drew (ForwardMask)
-bool drawnForward(ivec2 pixel) { return texelFetch(uForwardDrawn, pixel, 0).r > 0.5; }
-#else
-bool drawnForward(ivec2 pixel) { return false; }
-#endif
+#define FORWARD_MASK_BINDING 5
+#include "common/forward_mask.glsl"
 uniform vec2 uSamplePositions[SAMPLES];
 uniform float uFootprintTan;  // tan(hfov / width)
 uniform float uTolerance;     // c of the Eq. 1 style depth test
@@ -184,7 +180,7 @@ float inverseDepthSlope(ivec2 pixel, Geometry own, ivec2 step) {
 int subSamplesOffOwnSurface(ivec2 pixel, out Geometry own, out Geometry samples[SAMPLES]) {
   own = pixelGeometry(pixel);
   int open = 0;
-  if (drawnForward(pixel)) return open;  // what covers it is nothing the sub-samples know
+  if (forwardEdge(pixel)) return open;  // what covers it is nothing the sub-samples know
   for (int s = 0; s < SAMPLES; ++s) {
     samples[s] = sampleGeometry(pixel, s);
     if (similarity(samples[s], own, uTolerance) < 0.5) open |= 1 << s;
@@ -219,6 +215,7 @@ vec4 reconstructPixel(ivec2 pixel, out bool changed) {
   if (!changed) return vec4(0.0);
   vec3 colour[SAMPLES];
   float weightSum[SAMPLES];
+  bool underFilm = underForwardFilm(pixel);
   // Only now the pixel's own colour: most pixels never need it.
   vec4 centre = texelFetch(uInput, pixel, 0);
   vec3 centreLinear = toLinear(centre.rgb);
@@ -256,7 +253,7 @@ vec4 reconstructPixel(ivec2 pixel, out bool changed) {
       int depthMatch = 0;  // bit s: open sub-sample s lies at the candidate's depth
       for (int s = 0; s < SAMPLES; ++s)
         if (((open >> s) & 1) != 0 && sameDepth(samples[s], candidate, tolerance)) depthMatch |= 1 << s;
-      if (depthMatch == 0 || drawnForward(q)) continue;  // a forward pass's colour is no surface's here
+      if (depthMatch == 0 || !lendsColour(q, underFilm)) continue;  // a forward pass's colour is no surface's
       candidate = withNormal(candidate, q);
       // Read once for every sub-sample that takes it. The per-sample loop below chooses with selects
       // rather than branches: a SIMD rasteriser runs both sides of a branch its lanes disagree on, and

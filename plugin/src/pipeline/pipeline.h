@@ -251,7 +251,7 @@ class ForwardMask {
   void clear() const;                                       // at shade(): nothing drawn this frame yet
   void keepSceneColour(const GBufferLayout& layout) const;  // at beginForward()
   void markChanges(PluginContext& context) const;           // at endForward(), the forward colour in the scene colour
-  GLuint drawn() const { return drawn_.get(); }             // R8: 1 where a forward pass changed the pixel
+  GLuint drawn() const { return drawn_.get(); }  // R8: 0 untouched, 0.5 under a film, 1 an edge of what was drawn
   uint64_t bytes() const { return bytes_; }
 
  private:
