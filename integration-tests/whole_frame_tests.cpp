@@ -99,7 +99,9 @@ struct ComposedRun {
 // A host's forward pass: draws between beginForward() and endForward() into the framebuffer it returned.
 using ForwardPass = std::function<void()>;
 
-ComposedRun runComposed(const std::string& spec, const ForwardPass& forward = nullptr) {
+// `afterShade`: what the host draws into its scene colour between shade() and beginForward() (a glow).
+ComposedRun runComposed(const std::string& spec, const ForwardPass& forward = nullptr,
+                        const ForwardPass& afterShade = nullptr) {
   SyntheticFrame frame(kWidth, kHeight);
   const host::HostTargets& host = frame.renderer->targets();
   ComposedTarget target(host.depthStencil);
@@ -121,6 +123,11 @@ ComposedRun runComposed(const std::string& spec, const ForwardPass& forward = nu
   glDisable(GL_MULTISAMPLE);  // as Irrlicht leaves it on a window without MSAA: the plugin's passes must not care
   EXPECT_TRUE(plugin.shade([&](const retroaa::ShadeTargets& targets) { composeFrame(targets, host); }));
   glEnable(GL_MULTISAMPLE);
+  if (afterShade) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    glViewport(0, 0, kWidth, kHeight);
+    afterShade();
+  }
   if (forward) {
     const retroaa::Result<retroaa::GLuintHandle> framebuffer = plugin.beginForward();
     EXPECT_TRUE(framebuffer) << (framebuffer ? "" : framebuffer.error().message);
@@ -253,6 +260,26 @@ TEST(WholeFrame, ForwardGeometryBehindASilhouetteIsDepthTestedPerSample) {
   ASSERT_EQ(run.composed.size(), size_t(kWidth) * kHeight);
   expectNear(run.composed[1], 0.5f * glm::vec3(1, 0, 0) + 0.5f * kForward, 0.01f, "red beside a forward sky");
   expectNear(run.composed[2], glm::vec3(0.5f, 0.1f, 0), 0.01f, "red beside green");
+}
+
+TEST(WholeFrame, WhatTheHostDrawsBeforeItsForwardPassesReachesEverySample) {
+  // A glow composited over the lit image after shade() (SuperTuxKart's: its halo vanished wherever the
+  // slices had kept their samples for the forward passes, every pixel under per-sample).
+  const ForwardPass glow = [] {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    drawForwardTriangle({{-10, -10}, {30, -10}, {-10, 30}}, 0.0f, {0, 0.2f, 0});
+    glDisable(GL_BLEND);
+  };
+  const ForwardPass nothing = [] {};
+  for (const char* spec : {"per-sample", "edge", "aggregate", "resolve"}) {
+    const ComposedRun plain = runComposed(spec, nothing), glowing = runComposed(spec, nothing, glow);
+    ASSERT_EQ(plain.composed.size(), size_t(kWidth) * kHeight) << spec;
+    ASSERT_EQ(glowing.composed.size(), plain.composed.size()) << spec;
+    for (size_t i = 0; i < plain.composed.size(); ++i)
+      expectNear(glowing.composed[i], glm::vec3(plain.composed[i]) + glm::vec3(0, 0.2f, 0), 0.01f,
+                 std::string(spec) + ": pixel " + std::to_string(i));
+  }
 }
 
 TEST(WholeFrame, ForwardCallsOutOfOrderAreRefused) {

@@ -586,6 +586,7 @@ Status Plugin::shade(const ComposingFunction& compose) {
     Status status = impl_->slices->shade(context, *impl_->msaa, compose, plan, impl_->forward.get());
     if (status && context.config.restoreGBufferAfterShade)
       status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->context.frame, *impl_->slices);
+    if (status && impl_->forward) impl_->forward->keepShadedColour(context.layout);
     return status;
   }
   // Single-slice methods light once, every pixel, in the host's own target.

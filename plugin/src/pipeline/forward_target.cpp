@@ -26,6 +26,11 @@ Result<std::unique_ptr<ForwardTarget>> ForwardTarget::create(PluginContext& cont
   auto fill = context.shaders->program("common/fullscreen.vert", "forward/fill.frag", "", {"uSceneColour"});
   if (!fill) return fill.error();
   target->fill_ = std::move(fill.value());
+  target->shadedColour_ = makeLightTargetCopy(context, "forward.shaded_colour", target->bytes_);
+  auto carry = context.shaders->program("common/fullscreen.vert", "forward/carry_change.frag", "",
+                                        {"uSceneColour", "uShadedColour"});
+  if (!carry) return carry.error();
+  target->carry_ = std::move(carry.value());
   auto keep = context.shaders->program("common/fullscreen.vert", "forward/keep_sample.frag", "",
                                        {"uSliceColour", "uSliceCounts", "uMinCount", "uSample"});
   if (!keep) return keep.error();
@@ -38,6 +43,7 @@ Result<std::unique_ptr<ForwardTarget>> ForwardTarget::create(PluginContext& cont
 }
 
 void ForwardTarget::beginFrame(const PluginContext& context) const {
+  shadedColourKept_ = false;
   context.beginFullscreenPass(framebuffer_.get());  // a clear obeys the colour mask and scissor
   const float nothingKept[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(framebuffer_.get(), GL_COLOR, 0, nothingKept);
@@ -58,12 +64,25 @@ void ForwardTarget::keepSample(PluginContext& context, GLuint sliceColour, GLuin
   context.drawFullscreen();
 }
 
+void ForwardTarget::keepShadedColour(const GBufferLayout& layout) const {
+  copyLightTarget(layout, shadedColour_.get());
+  shadedColourKept_ = true;
+}
+
 void ForwardTarget::fill(PluginContext& context) const {
   ScopedPass timed(context, "forward.fill");
   context.beginFullscreenPass(framebuffer_.get());
   glEnable(GL_MULTISAMPLE);        // blended against each sample's own alpha
   glDisable(GL_FRAMEBUFFER_SRGB);  // the values as the scene colour's texture unit returns them (linear)
-  glEnable(GL_BLEND);              // colour where nothing was kept (alpha 0); alpha the scene colour's
+  glEnable(GL_BLEND);
+  if (shadedColourKept_) {
+    glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE);  // the change into kept samples (alpha 1)
+    carry_.use();
+    carry_.bindTexture("uSceneColour", sceneColourTexture(context.layout));
+    carry_.bindTexture("uShadedColour", shadedColour_.get());
+    context.drawFullscreen();
+  }
+  // colour where nothing was kept (alpha 0); alpha the scene colour's
   glBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA, GL_ONE, GL_ZERO);
   fill_.use();
   fill_.bindTexture("uSceneColour", sceneColourTexture(context.layout));

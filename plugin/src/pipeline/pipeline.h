@@ -225,14 +225,18 @@ class ForwardTarget {
   void beginFrame(const PluginContext& context) const;  // at shade(): no sample kept yet
   // During the slices: the colour of the slice that lit `sample` where the pixel's count is at least minCount.
   void keepSample(PluginContext& context, GLuint sliceColour, GLuint counts, int minCount, int sample) const;
-  void fill(PluginContext& context) const;     // the pixel's scene colour into every sample not kept
+  void keepShadedColour(const GBufferLayout& layout) const;  // at shade()'s end: the scene colour it composed
+  // What the host drew into the scene colour since shade() into every sample kept, then the pixel's scene
+  // colour into every sample not kept.
+  void fill(PluginContext& context) const;
   void resolve(PluginContext& context) const;  // each pixel's mean into the scene colour
   uint64_t bytes() const { return bytes_; }
 
  private:
-  GlTexture colour_;
+  GlTexture colour_, shadedColour_;
   GlFramebuffer framebuffer_, sceneColour_;
-  ShaderProgram fill_, keep_, resolve_;
+  ShaderProgram fill_, carry_, keep_, resolve_;
+  mutable bool shadedColourKept_ = false;  // this frame's slices kept samples and the colour they composed
   uint64_t bytes_ = 0;
 };
 
