@@ -10,15 +10,18 @@ float forwardMark(ivec2 pixel) {
 float forwardMark(ivec2 pixel) { return 0.0; }
 #endif
 
+bool isForwardEdge(float mark) { return mark > 0.75; }
+bool isForwardFilm(float mark) { return mark > 0.25 && mark < 0.75; }
+
 // An edge of what the forward passes drew: the pixel keeps its colour and lends it to no neighbour.
-bool forwardEdge(ivec2 pixel) { return forwardMark(pixel) > 0.75; }
+bool forwardEdge(ivec2 pixel) { return isForwardEdge(forwardMark(pixel)); }
 
 // Under a forward film (a faint particle's smoke): its neighbours under the same film may stand in.
-bool underForwardFilm(ivec2 pixel) {
-  float mark = forwardMark(pixel);
-  return mark > 0.25 && mark < 0.75;
-}
+bool underForwardFilm(ivec2 pixel) { return isForwardFilm(forwardMark(pixel)); }
 
 // Whether neighbour q's colour may stand in for a surface of a pixel (`pixelUnderFilm`: the pixel's own
-// underForwardFilm): no forward edge at q, and a film over both or over neither.
-bool lendsColour(ivec2 q, bool pixelUnderFilm) { return !forwardEdge(q) && underForwardFilm(q) == pixelUnderFilm; }
+// underForwardFilm): no forward edge at q, and a film over both or over neither. One read of q's mark.
+bool lendsColour(ivec2 q, bool pixelUnderFilm) {
+  float mark = forwardMark(q);
+  return !isForwardEdge(mark) && isForwardFilm(mark) == pixelUnderFilm;
+}
