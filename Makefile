@@ -80,7 +80,7 @@ test-stk: stk
 	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) olivermath $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/effects --effects
 	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) cornfield_crossing $(STK_FRAME) "off fxaa resolve reconstruct edge per-sample" \
 	  out/test-stk/effects-forward --effects --no-ssao --forward
-	bash $(STK_DIR)/race.sh $(STK) $(RETROAA) cornfield_crossing 320x240 404 4 "fxaa reconstruct temporal" out/test-stk/race \
+	bash $(STK_DIR)/race.sh $(STK) $(RETROAA) cornfield_crossing 320x240 607 8 "fxaa reconstruct temporal" out/test-stk/race \
 	  $(STK_RACE_SCORE)
 	python3 $(STK_DIR)/check.py out/test-stk/race $(STK_DIR)/patches --race
 

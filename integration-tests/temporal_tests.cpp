@@ -108,6 +108,36 @@ TEST(Temporal, JitterIsHaltonTwoThreeOverItsLengthAndZeroForOtherMethods) {
   EXPECT_FLOAT_EQ(plugin.jitter().y, radicalInverse(1, 3) - 0.5f);
 }
 
+// The mip bias follows how much of the frame keeps a long history: temporal_lod_bias while the view is
+// still, temporal_moving_lod_bias once every pixel moves half a pixel a frame or more (counted by the pass,
+// read frames later), and back when the view stops.
+TEST(Temporal, TheMipBiasFollowsTheViewsMotion) {
+  retroaa::Config config;
+  config.temporalLodBias = -1.0f;
+  config.temporalMovingLodBias = -0.25f;
+  HandWrittenFrames frames(config);
+  retroaa::Plugin& plugin = frames.hooks->plugin();
+  const auto red = wall(10, kRed);
+  for (int i = 0; i < 12; ++i) frames.run(red);
+  EXPECT_FLOAT_EQ(plugin.textureLodBias(), -1.0f) << "a still view";
+  // A pixel is 2·10·tan(0.5)/8 = 1.37 m wide at the wall: the camera steps 1 m a frame, 0.73 pixel.
+  for (int i = 0; i < 12; ++i) {
+    frames.info.viewMatrix[12] -= 1.0f;
+    frames.run(red);
+  }
+  EXPECT_NEAR(plugin.textureLodBias(), -0.25f, 0.01f) << "every pixel moving";
+  for (int i = 0; i < 12; ++i) frames.run(red);
+  EXPECT_FLOAT_EQ(plugin.textureLodBias(), -1.0f) << "still again";
+  // A slow pan (a tenth of a pixel a frame) keeps the still bias: its history accumulates.
+  for (int i = 0; i < 12; ++i) {
+    frames.info.viewMatrix[12] -= 0.137f;
+    frames.run(red);
+  }
+  EXPECT_GT(plugin.textureLodBias(), -1.0f - 1e-6f);
+  EXPECT_LT(plugin.textureLodBias(), -0.85f) << "a slow pan";
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST(Temporal, AStillWallConvergesAndACutStartsAgainFromTheCurrentFrame) {
   HandWrittenFrames frames;
   std::vector<glm::vec4> light;

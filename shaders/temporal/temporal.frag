@@ -32,6 +32,11 @@ uniform mat4 uObjectViewToPreviousClip[MAX_MOVING_OBJECTS];
 // Pixels whose light, history or blend was not finite (NaN, infinite): the plugin reads the count
 // frames later and tells the host once.
 layout(binding = 0, offset = 0) uniform atomic_uint uNonFinite;
+// Pixels whose history is shorter than the jitter sequence (their blend weight at least
+// uShortHistoryBlend, or their history rejected), on frames that continue a history: the plugin sets the
+// mip bias by their share.
+layout(binding = 0, offset = 4) uniform atomic_uint uShortHistory;
+uniform float uShortHistoryBlend;
 
 layout(location = 0) out vec4 outColour;
 layout(location = 1) out vec4 outHistory;
@@ -201,6 +206,7 @@ void main() {
   bool finite = currentFinite;  // false: this pixel shows what it can and its history restarts
   bool usable = uHistoryValid > 0.5 && previousClip.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0))) &&
                 all(lessThanEqual(previousUv, vec2(1.0))) && !disoccluded(previousUv, expectedDepth);
+  if (uHistoryValid > 0.5 && !usable) atomicCounterIncrement(uShortHistory);
   if (!usable && accumulating) result = lanczos(uInput, centreUv);
   if (usable) {
     vec3 history = lanczos(uHistory, previousUv);
@@ -221,6 +227,7 @@ void main() {
       vec2 offCentre = abs(fract(previousUv * vec2(last + 1)) - 0.5);  // 0 on a texel's centre
       float resampled = 2.0 * max(offCentre.x, offCentre.y);
       float blend = max(mix(uBlend, max(uBlend, 0.3), resampled), mix(uBlend, 0.5, clamp(motion / kMotionForFullBlend, 0.0, 1.0)));
+      if (blend >= uShortHistoryBlend) atomicCounterIncrement(uShortHistory);
       // Moving, each side also weighs 1 / (1 + luma) (Karis): a bright history the clip let through (the
       // halo a resampled star leaves around itself) fades faster. Still, the plain blend, which converges
       // to the pixel's mean (this weighting biases it dark: -0.4 dB edge on the demo frame). Recorded

@@ -73,8 +73,10 @@ class RETROAA_API Plugin {
   // (column-major; width and height of the layout). FrameInfo::projectionMatrix stays unshifted.
   Jitter jitter() const;
   // The mip bias to add to the host's material texture samplers while this method runs: where
-  // a method with a history runs, temporal_lod_bias (the history averages the sharper mips' detail over the jitter, as
-  // FSR 2 advises for native-resolution AA); where the model pass is shaded per sample (sampleShading() > 0),
+  // a method with a history runs, temporal_lod_bias while the view is still (the history averages the sharper mips'
+  // detail over the jitter, as FSR 2 advises for native-resolution AA), moving to temporal_moving_lod_bias with the
+  // share of pixels whose history is shorter than the jitter sequence (counted by the pass, read frames later: ask
+  // every frame); where the model pass is shaded per sample (sampleShading() > 0),
   // -0.5 log2(the samples shaded a pixel), since each pixel averages that many reads of the pixel's own mip
   // (-1 at 4×); the more negative of the two; 0 otherwise.
   float textureLodBias() const;

@@ -145,28 +145,29 @@ class TemporalTechnique : public Technique {
       glNamedFramebufferDrawBuffers(t.framebuffers_[i].get(), 2, drawBuffers);
       if (Status status = checkFramebuffer(t.framebuffers_[i].get(), "temporal.output"); !status) return status.error();
     }
-    // The pass counts its non-finite pixels here; the count is copied into a buffer mapped once, here
-    // (persistent and coherent), and read through the mapping frames later, once a fence says it landed.
+    // The pass counts its non-finite pixels and its pixels with a short history here; the counts are copied
+    // into a buffer mapped once, here (persistent and coherent), and read through the mapping frames later,
+    // once a fence says they landed.
     GLuint buffers[2] = {};
     glCreateBuffers(2, buffers);
-    const GLuint zeroCount = 0;
+    const GLuint zeroCounts[kCounters] = {};
     const GLbitfield mapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
-    glNamedBufferStorage(buffers[0], sizeof zeroCount, &zeroCount, GL_DYNAMIC_STORAGE_BIT);
-    glNamedBufferStorage(buffers[1], sizeof zeroCount, &zeroCount, mapping);
-    t.nonFiniteCounter_ = GlBuffer(context.objects, buffers[0]);
-    t.nonFiniteReadback_ = GlBuffer(context.objects, buffers[1]);
-    t.nonFiniteMapped_ = static_cast<const GLuint*>(glMapNamedBufferRange(buffers[1], 0, sizeof zeroCount, mapping));
-    if (!t.nonFiniteMapped_)
-      return Error{ErrorCode::UnsupportedContext, "temporal: the context could not map its 4-byte readback buffer"};
-    t.bytes_ += 2 * sizeof zeroCount;
-    auto program =
-        context.shaders->program("common/fullscreen.vert", "temporal/temporal.frag",
-                                 depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_) +
-                                     defineLine("HAS_VELOCITY", layout.velocityAttachment >= 0) +
-                                     "#define MAX_MOVING_OBJECTS " + std::to_string(kMaxMovingObjects) + "\n",
-                                 {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ",
-                                  "uBlend", "uHistoryValid", "uSampleOffset", "uInput", "uHistory", "uDepth",
-                                  "uVelocity", "uMovingObjects", "uViewToBox", "uObjectViewToPreviousClip"});
+    glNamedBufferStorage(buffers[0], sizeof zeroCounts, zeroCounts, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(buffers[1], sizeof zeroCounts, zeroCounts, mapping);
+    t.counters_ = GlBuffer(context.objects, buffers[0]);
+    t.countsReadback_ = GlBuffer(context.objects, buffers[1]);
+    t.countsMapped_ = static_cast<const GLuint*>(glMapNamedBufferRange(buffers[1], 0, sizeof zeroCounts, mapping));
+    if (!t.countsMapped_)
+      return Error{ErrorCode::UnsupportedContext, "temporal: the context could not map its 8-byte readback buffer"};
+    t.bytes_ += 2 * sizeof zeroCounts;
+    auto program = context.shaders->program(
+        "common/fullscreen.vert", "temporal/temporal.frag",
+        depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_) +
+            defineLine("HAS_VELOCITY", layout.velocityAttachment >= 0) + "#define MAX_MOVING_OBJECTS " +
+            std::to_string(kMaxMovingObjects) + "\n",
+        {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ", "uBlend",
+         "uHistoryValid", "uShortHistoryBlend", "uSampleOffset", "uInput", "uHistory", "uDepth", "uVelocity",
+         "uMovingObjects", "uViewToBox", "uObjectViewToPreviousClip"});
     if (!program) return program.error();
     t.program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -201,7 +202,12 @@ class TemporalTechnique : public Technique {
   std::optional<Jitter> jitter(const Config&, uint64_t framesStarted) const override {
     return haltonJitter(framesStarted + 1 - jitterOrigin_, jitterLength_);
   }
-  float textureLodBias(const Config& config) const override { return config.temporalLodBias; }
+  // temporal_lod_bias where the history spans the jitter sequence, temporal_moving_lod_bias where it is
+  // shorter (a pixel moving, its history blended at up to 0.5, or rejected), by the share of such pixels
+  // the pass counted (read frames later: the bias follows the view's motion a few frames behind it).
+  float textureLodBias(const Config& config) const override {
+    return config.temporalLodBias + (config.temporalMovingLodBias - config.temporalLodBias) * shortHistoryShare_;
+  }
   bool keepsObjectsFor(const Config& config) const override {
     return config.temporalBeforeTonemap == beforeTonemapRequested_ && config.temporalJitterLength == jitterLength_;
   }
@@ -237,27 +243,34 @@ class TemporalTechnique : public Technique {
     return continues;
   }
 
-  // The count of non-finite pixels the passes since the last copy made (NaN or infinite light, history
-  // or blend: the shader showed this frame's light there, or 0, and restarted their history), read once
-  // the GPU has copied it aside; until then the counter keeps counting. No wait in the frame path.
-  void reportNonFinite(PluginContext& context) {
-    if (nonFiniteCopied_.pending()) {
-      if (!nonFiniteCopied_.signaled()) return;
-      nonFiniteCopied_.reset();
-      const GLuint count = *nonFiniteMapped_;
-      if (count > 0)
+  // The counts the passes since the last copy made, read once the GPU has copied them aside; until then
+  // the counters keep counting. No wait in the frame path. Non-finite pixels (NaN or infinite light, history
+  // or blend: the shader showed this frame's light there, or 0, and restarted their history) are warned
+  // of; the share of pixels with a short history sets the mip bias (textureLodBias).
+  void readCounts(PluginContext& context, bool historyContinued) {
+    const GLuint pixels = GLuint(context.layout.width) * GLuint(context.layout.height);
+    if (historyContinued) framesCountedSinceCopy_ += 1;
+    if (countsCopied_.pending()) {
+      if (!countsCopied_.signaled()) return;
+      countsCopied_.reset();
+      const GLuint nonFinite = countsMapped_[kNonFiniteCounter];
+      if (nonFinite > 0)
         warnOnce(context, warnedNonFinite_,
-                 "temporal: " + std::to_string(count) +
+                 "temporal: " + std::to_string(nonFinite) +
                      " pixels were not finite (NaN or infinite light, history or blend); they showed the frame's "
                      "light (0 where it was not finite) and their history restarted");
+      if (framesCountedInCopy_ > 0)
+        shortHistoryShare_ =
+            std::min(1.0f, float(countsMapped_[kShortHistoryCounter]) / (float(framesCountedInCopy_) * float(pixels)));
     }
     glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    glCopyNamedBufferSubData(nonFiniteCounter_.get(), nonFiniteReadback_.get(), 0, 0, sizeof(GLuint));
+    glCopyNamedBufferSubData(counters_.get(), countsReadback_.get(), 0, 0, kCounters * sizeof(GLuint));
     glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
     const GLuint zero = 0;
-    glClearNamedBufferSubData(nonFiniteCounter_.get(), GL_R32UI, 0, sizeof zero, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                              &zero);
-    nonFiniteCopied_.insert();
+    glClearNamedBufferData(counters_.get(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    countsCopied_.insert();
+    framesCountedInCopy_ = framesCountedSinceCopy_;
+    framesCountedSinceCopy_ = 0;
   }
 
   // The frame's moving objects as the shader takes them, the nearest kMaxMovingObjects: this view to each
@@ -345,10 +358,13 @@ class TemporalTechnique : public Technique {
     // reset converges in a few frames instead of fading in over ~2/blend.
     program_.set("uBlend", valid ? std::max(context.config.temporalBlend, 1.0f / float(framesAccumulated_ + 1)) : 1.0f);
     program_.set("uHistoryValid", valid ? 1.0f : 0.0f);
+    // An exponential history of weight w holds about 2 / w - 1 frames: shorter than the jitter sequence
+    // from 2 / (length + 1) on, too short to average the sharper mips over it.
+    program_.set("uShortHistoryBlend", 2.0f / float(jitterLength_ + 1));
     program_.setDepthPlanes(context);
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, nonFiniteCounter_.get());
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, counters_.get());
     context.drawFullscreen();  // post()'s state guard gives the host its atomic-counter binding back
-    reportNonFinite(context);
+    readCounts(context, valid);
     historyIndex_ = next;
     framesAccumulated_ = valid ? framesAccumulated_ + 1 : 1;
   }
@@ -366,9 +382,14 @@ class TemporalTechnique : public Technique {
   bool historyValid_ = false;  // false: the next frame starts a new history (reset, or unusable matrices)
   int framesAccumulated_ = 0;  // frames in the history since it started
   Matrix4 previousView_{}, previousProjection_{};
-  GlBuffer nonFiniteCounter_, nonFiniteReadback_;  // the pass's count of non-finite pixels, and its copy
-  const GLuint* nonFiniteMapped_ = nullptr;        // the readback buffer, mapped for the technique's life
-  GlFence nonFiniteCopied_;                        // pending: the copy is not yet read
+  // The pass's counts (temporal.frag's atomic counters, in this order) and their copy.
+  static constexpr int kNonFiniteCounter = 0, kShortHistoryCounter = 1, kCounters = 2;
+  GlBuffer counters_, countsReadback_;
+  const GLuint* countsMapped_ = nullptr;  // the readback buffer, mapped for the technique's life
+  GlFence countsCopied_;                  // pending: the copy is not yet read
+  int framesCountedSinceCopy_ = 0;        // frames with a history counted since the last copy
+  int framesCountedInCopy_ = 0;           // … in the copy pending
+  float shortHistoryShare_ = 0.0f;        // of the pixels counted in the last copy read
   bool warnedNoProjection_ = false, warnedBadMatrices_ = false, warnedNonFinite_ = false;
   bool warnedTooManyObjects_ = false, warnedBadObject_ = false;
   uint64_t bytes_ = 0;
@@ -400,8 +421,13 @@ std::vector<Key> temporalKeys() {
               "frames in the Halton (2, 3) jitter sequence, the sub-pixel positions a still pixel is "
               "sampled at; 1 is no jitter; resets the history"),
       number("temporal_lod_bias", &Config::temporalLodBias, -3, 0,
-             "the mip bias the host adds to its material samplers (Plugin::textureLodBias): sharper mips "
-             "whose detail the history averages over the jitter; FSR 2 advises -1 at native resolution"),
+             "the mip bias the host adds to its material samplers (Plugin::textureLodBias) where the view is "
+             "still: sharper mips whose detail the history averages over the jitter; FSR 2 advises -1 at "
+             "native resolution"),
+      number("temporal_moving_lod_bias", &Config::temporalMovingLodBias, -3, 0,
+             "the mip bias where the view moves: a moving pixel's history is shorter than the jitter sequence, "
+             "too short to average sharper mips, whose aliasing then pulses with the jitter; the bias goes "
+             "from temporal_lod_bias to this with the share of such pixels, counted frames later"),
       onOff("temporal_before_tonemap", &Config::temporalBeforeTonemap,
             "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather "
             "than on the display (where the layout has no single float light target, after tonemapping with a "
