@@ -109,8 +109,8 @@ TEST(Temporal, JitterIsHaltonTwoThreeOverItsLengthAndZeroForOtherMethods) {
 }
 
 // The mip bias follows how much of the frame keeps a long history: temporal_lod_bias while the view is
-// still, temporal_moving_lod_bias once every pixel moves half a pixel a frame or more (counted by the pass,
-// read frames later), and back when the view stops.
+// still, temporal_moving_lod_bias once every pixel's history is shorter than the jitter sequence (its blend
+// weight raised by the motion; counted by the pass, read frames later), and back when the view stops.
 TEST(Temporal, TheMipBiasFollowsTheViewsMotion) {
   retroaa::Config config;
   config.temporalLodBias = -1.0f;
