@@ -233,6 +233,49 @@ std::string benchTable(const json& rows) {
   return table.str();
 }
 
+// Each method's plugin passes against their floors (measure_pass_floors), and the plugin's own share of off's
+// frame: what a pass costs beyond the bytes it must move on this device.
+std::string floorTable(const json& rows) {
+  std::ostringstream table;
+  table << "Plugin passes against their floors (a pass of the same shape that only moves the same bytes, timed in "
+           "the same run; the host's lighting has none):\n\n"
+        << "| method | own passes ms | own vs off's frame | pass | ms | floor ms | x floor | floor MB | fragments |\n"
+        << "|---|---|---|---|---|---|---|---|---|\n"
+        << std::fixed;
+  for (const auto& row : rows) {
+    const json& passes = row["passes_ms"];
+    bool first = true;
+    for (const auto& [pass, ms] : passes.items()) {
+      if (pass.rfind("plugin.", 0) != 0) continue;
+      table << "| ";
+      if (first) {
+        table << row["method"].get<std::string>() << " | " << std::setprecision(2) << row["plugin_own_ms"].get<double>()
+              << " | "
+              << (row["plugin_own_vs_off_frame"].is_null()
+                      ? std::string("-")
+                      : std::to_string(row["plugin_own_vs_off_frame"].get<double>()).substr(0, 4))
+              << " | ";
+      } else {
+        table << " | | ";
+      }
+      first = false;
+      table << pass.substr(7) << " | " << std::setprecision(2) << ms.get<double>() << " | ";
+      const json& floorMs = row["passes_floor_ms"];
+      const json& unmeasured = row["passes_floor_unmeasured"];
+      if (floorMs.contains(pass)) {
+        table << floorMs[pass].get<double>() << " | " << row["passes_floor_ratio"].value(pass, 0.0) << " | "
+              << std::setprecision(3) << row["passes_floor_bytes"].value(pass, uint64_t(0)) / 1e6 << " | ";
+      } else {
+        table << "unmeasured: "
+              << (unmeasured.contains(pass) ? unmeasured[pass].get<std::string>() : std::string("not asked for"))
+              << " | - | - | ";
+      }
+      table << row["passes_fragment_invocations"].value(pass, uint64_t(0)) << " |\n";
+    }
+  }
+  return table.str();
+}
+
 void writeBenchCsv(const std::string& path, const json& rows) {
   ensureParent(path);
   std::ofstream csv(path);
@@ -323,7 +366,8 @@ int runBench(const BenchOptions& options) {
     std::optional<Convergence> convergence;
     if (const int frames = retroaa::historyFrames(spec.config); frames > 0)
       convergence = measureConvergence(session, camera, reference, 2 * frames, spec.config.temporalJitterLength);
-    const Measurement m = measure(session, camera, reference, options.repeats, 1, options.wallFrames);
+    const Measurement m = measure(session, camera, reference, options.repeats, 1, options.wallFrames,
+                                  options.floorFrames < 0 ? options.repeats : options.floorFrames);
     json row = figures(m);
     row["method"] = spec.name;
     if (convergence) {
@@ -343,6 +387,7 @@ int runBench(const BenchOptions& options) {
     progress.step(spec.name);
   }
   addTimeRatios(rows);
+  addFloorRatios(rows);
   const double copyGigabytesPerSecond = measureCopyGigabytesPerSecond();
   for (json& row : rows)  // the floor is the base sample count's; a row at another count is compared all the same
     row["evals_vs_shading_floor"] = row["evals_per_pixel"].get<double>() / shadingFloor;
@@ -364,7 +409,7 @@ int runBench(const BenchOptions& options) {
                          {"shading_floor_samples", options.base.samples},
                          {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
                          {"rows", rows}};
-  const std::string table = benchTable(rows);
+  const std::string table = benchTable(rows) + "\n" + floorTable(rows);
   std::printf("%s", table.c_str());
   std::printf("renderer: %s\n", info.summary().c_str());
   if (!options.json.empty()) {

@@ -67,6 +67,7 @@ struct BenchOptions {
   int groundTruthSamples = 8;
   int repeats = 3;                // timed frames per method; the median is reported
   int wallFrames = 60;            // back-to-back frames per method for wall_ms (0: not measured)
+  int floorFrames = -1;           // frames timing each pass's floor (-1: as repeats; 0: not measured)
   std::string json, csv, report;  // outputs (any may be empty)
   std::string imagesDirectory;    // per-method PNGs and heat maps (optional)
 };

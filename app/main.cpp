@@ -129,6 +129,10 @@ void addBench(CommandLine& line) {
   addMeasureOptions(line, sub, *options);
   sub->add_option("--frame", options->frame, "camera path frame (default: the scene camera)");
   sub->add_option("--repeats", options->repeats, "timed frames per method (median)")->check(CLI::Range(1, 100));
+  sub->add_option("--floor-frames", options->floorFrames,
+                  "frames per method timing each plugin pass's floor, apart from the timed ones (median; -1: as "
+                  "--repeats, 0: skip)")
+      ->check(CLI::Range(-1, 100));
   addWallFramesOption(sub, options->wallFrames, "the one frame");
   sub->add_option("--json", options->json, "write the rows as JSON");
   sub->add_option("--csv", options->csv, "write the rows as CSV");

@@ -165,8 +165,45 @@ Convergence measureConvergence(Session& session, const host::Camera& camera, con
   return result;
 }
 
+namespace {
+// The floors of `measured`'s passes into `m`: a warm-up frame (the floors' programs and targets), then
+// `frames` frames, each pass's floor summed per frame (a pass may run once per slice), medians kept.
+void measureFloors(Session& session, const host::Camera& camera, const retroaa::Config& measured, int frames,
+                   Measurement& m) {
+  retroaa::Config floored = measured;
+  floored.measurePassFloors = true;
+  session.configure(floored, session.method);
+  session.renderer->renderFrame(camera);
+  std::map<std::string, std::vector<double>> floorMs;
+  const std::string suffix = ".floor";
+  for (int i = 0; i < frames; ++i) {
+    session.renderer->renderFrame(camera);
+    const retroaa::Stats stats = session.plugin().waitForStats();
+    std::map<std::string, double> frameMs;
+    m.passFloorBytes.clear();
+    for (const retroaa::PassStats& pass : stats.passes) {
+      if (pass.name.size() <= suffix.size() || pass.name.compare(pass.name.size() - suffix.size(), suffix.size(), suffix))
+        continue;
+      const std::string name = "plugin." + pass.name.substr(0, pass.name.size() - suffix.size());
+      if (!pass.unmeasured.empty()) {
+        m.passFloorUnmeasured[name] = pass.unmeasured;
+        continue;
+      }
+      frameMs[name] += pass.ms;
+      m.passFloorBytes[name] += pass.minimumBytes;
+    }
+    for (const auto& [name, ms] : frameMs) floorMs[name].push_back(ms);
+  }
+  // A pass with any draw the floor cannot reproduce has no floor: a part of it would understate it.
+  for (const auto& [name, values] : floorMs)
+    if (!m.passFloorUnmeasured.count(name)) m.passFloorMs[name] = median(values);
+  for (const auto& [name, reason] : m.passFloorUnmeasured) m.passFloorBytes.erase(name);
+  session.configure(measured, session.method);
+}
+}  // namespace
+
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
-                    int warmUpFrames, int wallFrames) {
+                    int warmUpFrames, int wallFrames, int floorFrames) {
   host::Engine& renderer = *session.renderer;
   Measurement m;
   if (wallFrames > 0) m.wallMs = measureWallMs(session, camera, wallFrames);
@@ -198,6 +235,7 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
     }
     for (const auto& [name, ms] : frameTotals) passMs[name].push_back(ms);
   }
+  if (floorFrames > 0) measureFloors(session, camera, measured, floorFrames, m);
   renderer.measureTime = false;
   m.display = renderer.readDisplay();
   m.image = DisplayImage::fromRgba8(renderer.width(), renderer.height(), m.display);
@@ -222,6 +260,9 @@ nlohmann::json figures(const Measurement& m) {
       {"passes_fragment_invocations", m.passInvocations},
       {"passes_compute_invocations", m.passComputeInvocations},
       {"passes_minimum_bytes", m.passMinimumBytes},
+      {"passes_floor_ms", m.passFloorMs},
+      {"passes_floor_bytes", m.passFloorBytes},
+      {"passes_floor_unmeasured", m.passFloorUnmeasured},
       {"plugin_bytes", m.stats.bytesHeld},
       {"plugin_bytes_per_pixel", m.stats.pixels ? double(m.stats.bytesHeld) / double(m.stats.pixels) : 0.0},
       {"budget_scale", m.stats.budgetScale},
@@ -266,6 +307,28 @@ void addTimeRatios(nlohmann::json& rows) {
                    row["evals_per_pixel"].get<double>() * (*off)["passes_ms"]["lighting"].get<double>() -
                    (*off)["passes_ms"]["tonemap_post"].get<double>())
             : json(nullptr);
+  }
+}
+
+void addFloorRatios(nlohmann::json& rows) {
+  using nlohmann::json;
+  double offFrameMs = 0;
+  for (const json& row : rows)
+    if (row["method"] == "off") offFrameMs = row["gpu_ms"].get<double>();
+  for (json& row : rows) {
+    json ratios = json::object();
+    double ownMs = 0;
+    for (const auto& [pass, ms] : row["passes_ms"].items()) {
+      if (pass.rfind("plugin.", 0) != 0) continue;
+      // The host's lighting runs inside slices.lighting (with the plugin's clears of its targets): a
+      // slice method must pay it; every other plugin pass is the plugin's own.
+      if (pass != "plugin.slices.lighting" && pass != "plugin.lighting") ownMs += ms.get<double>();
+      const json& floor = row.value("passes_floor_ms", json::object());
+      if (floor.contains(pass) && floor[pass].get<double>() > 0) ratios[pass] = ms.get<double>() / floor[pass].get<double>();
+    }
+    row["passes_floor_ratio"] = ratios;
+    row["plugin_own_ms"] = ownMs;
+    row["plugin_own_vs_off_frame"] = offFrameMs > 0 ? json(ownMs / offFrameMs) : json(nullptr);
   }
 }
 

@@ -44,6 +44,11 @@ struct Measurement {
   std::map<std::string, uint64_t> passInvocations;         // plugin.<pass>: fragment-shader invocations, last frame
   std::map<std::string, uint64_t> passComputeInvocations;  // … compute-shader invocations (passes with any)
   std::map<std::string, uint64_t> passMinimumBytes;        // plugin.<pass>: its least traffic, where stated
+  // Each plugin pass's floor (measure_pass_floors, frames of their own after the timed ones): medians of
+  // its ms, the bytes it moved, and for a floor that could not be measured, why (no ms then).
+  std::map<std::string, double> passFloorMs;
+  std::map<std::string, uint64_t> passFloorBytes;
+  std::map<std::string, std::string> passFloorUnmeasured;
   ErrorMetrics error;                                      // against the ground truth, edge figures on its edges
   std::optional<double> psnrVsPerSampleDb;
 };
@@ -59,9 +64,10 @@ Convergence measureConvergence(Session& session, const host::Camera& camera, con
 // Renders `camera` with the session's config: `wallFrames` back-to-back frames with every statistic
 // off and no wait until the last (wall_ms: the time an engine sees), then `warmUpFrames` frames
 // (shader compilation, first-touch allocation), then `timedFrames` with GPU timers and the plugin's
-// pass statistics; compares the last.
+// pass statistics; compares the last. Then, with `floorFrames`, one warm-up and that many frames with
+// each pass's floor (measure_pass_floors), which add their own GPU work and so are timed apart.
 Measurement measure(Session& session, const host::Camera& camera, const FrameReference& reference, int timedFrames,
-                    int warmUpFrames, int wallFrames = 0);
+                    int warmUpFrames, int wallFrames = 0, int floorFrames = 0);
 // The shading floor of the frame: per pixel, the distinct surfaces among its samples (bit-identical
 // attributes: one primitive), averaged — the fewest lighting evaluations per pixel a method can do and
 // still light every surface a pixel shows. Renders `camera` once with `resolve` at the session's
@@ -86,6 +92,11 @@ nlohmann::json figures(const Measurement& measurement);
 // evals_per_pixel × off's lighting − off's tonemap_post. Null where the baseline was not run or the
 // time not measured.
 void addTimeRatios(nlohmann::json& rows);
+
+// Adds passes_floor_ratio (each pass's ms over its floor's, where both were measured), plugin_own_ms (every
+// plugin pass but the host's lighting inside the slices) and plugin_own_vs_off_frame (that over off's
+// gpu_ms in the same run; null without off).
+void addFloorRatios(nlohmann::json& rows);
 
 // Adds passes_traffic_bound_ms: each pass's minimum bytes at the copy bandwidth (ms).
 void addTrafficBounds(nlohmann::json& rows, double copyGigabytesPerSecond);

@@ -18,6 +18,7 @@ float PluginContext::footprintTan(const FrameInfo& frame) const {
 }
 
 void PluginContext::drawFullscreen() const {
+  if (floors) floors->recordDraw(layout.width, layout.height);
   glBindVertexArray(emptyVertexArray.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -35,6 +36,7 @@ void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
 }
 
 void PluginContext::dispatchOverScreen(const std::vector<ImageOutput>& outputs, int tileSize) const {
+  if (floors) floors->recordDispatch(outputs, layout.width, layout.height, tileSize);
   for (size_t unit = 0; unit < outputs.size(); ++unit)
     glBindImageTexture(GLuint(unit), outputs[unit].texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, outputs[unit].format);
   glDispatchCompute(GLuint((layout.width + tileSize - 1) / tileSize), GLuint((layout.height + tileSize - 1) / tileSize),
@@ -56,10 +58,12 @@ ScopedPass::ScopedPass(PluginContext& context, const char* name, uint64_t minimu
   const std::string label = std::string("retroaa.") + name;
   glPushDebugGroup(GL_DEBUG_SOURCE_THIRD_PARTY, 0, -1, label.c_str());
   context_.statistics->beginPass(name, context_.timePasses, minimumBytes);
+  if (context_.floors) context_.floors->open(name);
 }
 
 ScopedPass::~ScopedPass() {
   context_.statistics->endPass();
+  if (context_.floors) context_.floors->close(*context_.statistics, context_.emptyVertexArray.get());
   glPopDebugGroup();
 }
 

@@ -4,6 +4,7 @@
 
 #include "frame_statistics.h"
 #include "gl_resources.h"
+#include "pass_floor.h"
 #include "retroaa/types.h"
 #include "shader_library.h"
 
@@ -35,6 +36,7 @@ struct PluginContext {
   Stats frameStats;                             // of the frame in flight: what the CPU knows of it (slice count)
   std::unique_ptr<FrameStatistics> statistics;  // what the GPU counts of it, read back frames later
   bool timePasses = false;                      // measure_gpu_time, or a budget that needs the times
+  std::unique_ptr<PassFloors> floors;           // measure_pass_floors: each measured pass's floor (null: off)
   double budgetScale = 1.0;                     // multiplies the refinement of Technique::followsBudget (budget mode)
 
   void warn(const std::string& message);
@@ -50,10 +52,7 @@ struct PluginContext {
   void beginDepthWritingPass(GLuint framebuffer) const;
   // Runs the current compute program over the layout's pixels in tileSize × tileSize work groups, with
   // `outputs` (level 0 of each, in a format that takesImageStores) bound write-only as image units 0, 1, …
-  struct ImageOutput {
-    GLuint texture;
-    GLenum format;
-  };
+  using ImageOutput = retroaa::ImageOutput;
   void dispatchOverScreen(const std::vector<ImageOutput>& outputs, int tileSize) const;
 };
 
@@ -64,6 +63,10 @@ class ScopedPass {
   // `minimumBytes`: PassStats::minimumBytes, where the pass's traffic is fixed.
   ScopedPass(PluginContext& context, const char* name, uint64_t minimumBytes = 0);
   ~ScopedPass();
+  // The samples per pixel the pass reads of each multisampled input, for its floor (default: every one).
+  void floorReadsSamples(int samples) {
+    if (context_.floors) context_.floors->setSamplesRead(samples);
+  }
   ScopedPass(const ScopedPass&) = delete;
   ScopedPass& operator=(const ScopedPass&) = delete;
 

@@ -38,10 +38,10 @@ void FrameStatistics::beginFrame() {
   passDepth_ = 0;
 }
 
-void FrameStatistics::beginPass(const char* name, bool measured, uint64_t minimumBytes) {
+void FrameStatistics::beginPass(const char* name, bool measured, uint64_t minimumBytes, uint64_t bytesPerInvocation) {
   Slot* slot = openSlot();
   if (!slot || !measured || passDepth_++ > 0) return;
-  PassQueries pass{name, 0, 0, 0, minimumBytes};
+  PassQueries pass{name, 0, 0, 0, minimumBytes, bytesPerInvocation, {}};
   if (timerQueries_) {
     pass.time = slot->timePool.next(queries_);
     glBeginQuery(GL_TIME_ELAPSED, pass.time);
@@ -61,6 +61,10 @@ void FrameStatistics::endPass() {
   if (pass.time) glEndQuery(GL_TIME_ELAPSED);
   if (pass.fragments) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
   if (pass.computes) glEndQuery(GL_COMPUTE_SHADER_INVOCATIONS);
+}
+
+void FrameStatistics::addUnmeasuredPass(const std::string& name, const std::string& reason) {
+  if (Slot* slot = openSlot()) slot->passes.push_back({name, 0, 0, 0, 0, 0, reason});
 }
 
 GLuint FrameStatistics::beginEvaluationCount() {
@@ -103,9 +107,13 @@ void FrameStatistics::read(Slot& slot, GLenum resultMode) {
   figures.frame = slot.frame;
   figures.lightingEvaluations = slot.knownEvaluations;
   for (GLuint query : slot.evaluationQueries) figures.lightingEvaluations += result(query);
-  for (const PassQueries& pass : slot.passes)
-    figures.passes.push_back({pass.name, double(result(pass.time)) * 1e-6, result(pass.fragments),
-                              result(pass.computes), pass.minimumBytes});
+  for (const PassQueries& pass : slot.passes) {
+    const uint64_t fragments = result(pass.fragments), computes = result(pass.computes);
+    // Without pipeline statistics a floor's invocations, so its bytes, are unknown: 0, not a guess.
+    const uint64_t bytes = pass.minimumBytes ? pass.minimumBytes : pass.bytesPerInvocation * (fragments + computes);
+    figures.passes.push_back(
+        {pass.name, double(result(pass.time)) * 1e-6, fragments, computes, bytes, pass.unmeasured});
+  }
   slot.state = Slot::State::Empty;
   if (figures.frame > latest_.frame) latest_ = std::move(figures);
 }

@@ -33,8 +33,11 @@ class FrameStatistics {
   void beginFrame();
   // Pass queries, when `measured`: a timer and, where the context has pipeline statistics, a
   // fragment-invocation count. A pass inside another pass is not measured on its own.
-  void beginPass(const char* name, bool measured, uint64_t minimumBytes = 0);
+  // `bytesPerInvocation`: the pass's minimum bytes are that times its invocations (a floor's).
+  void beginPass(const char* name, bool measured, uint64_t minimumBytes = 0, uint64_t bytesPerInvocation = 0);
   void endPass();
+  // A pass of the frame that could not be measured, and why (PassStats::unmeasured).
+  void addUnmeasuredPass(const std::string& name, const std::string& reason);
   // Pixels lit: counted on the GPU by an occlusion query around a draw that passes exactly where the
   // lighting will run, or added directly where the CPU knows the number. beginEvaluationCount returns
   // the query (0 outside a frame), which may serve as a conditional-rendering predicate.
@@ -65,7 +68,8 @@ class FrameStatistics {
   struct PassQueries {
     std::string name;
     GLuint time = 0, fragments = 0, computes = 0;
-    uint64_t minimumBytes = 0;
+    uint64_t minimumBytes = 0, bytesPerInvocation = 0;
+    std::string unmeasured;
   };
   struct Slot {
     uint64_t frame = 0;

@@ -208,6 +208,7 @@ struct Plugin::Impl {
   std::vector<ActiveTechnique> techniques;
   std::unique_ptr<BudgetController> budget;
   bool warnedMultisampleOff = false;      // once per plugin: GL_MULTISAMPLE was off at resolve()
+  bool warnedFloorsUntimed = false;       // once per plugin: measure_pass_floors without measure_gpu_time
   bool warnedProjectionEncoding = false;  // once per plugin: the projection's clip z disagrees with the layout
 
   // A perspective projection's depth term P[3][2] is -2fn/(f-n) where clip z runs -w … w (GL's) and -fn/(f-n)
@@ -249,7 +250,7 @@ struct Plugin::Impl {
     return std::min(history, -0.5f * std::log2(std::max(1.0f, shading * float(samples))));
   }
 
-  SharedTargets shared() { return {msaa.get(), slices.get(), postTarget.get(), forwardMask.get()}; }
+  SharedTargets shared() { return {msaa.get(), resolvePass.get(), slices.get(), postTarget.get(), forwardMask.get()}; }
   Technique* methodTechnique() {
     return !techniques.empty() && techniques.front().row->info.method == context.config.method
                ? techniques.front().technique.get()
@@ -292,6 +293,19 @@ struct Plugin::Impl {
       context.budgetScale = budget->scale();
     }
     context.timePasses = config.measureGpuTime || budget != nullptr;
+  }
+
+  // Each measured pass's floor (measure_pass_floors, with measure_gpu_time): the recorder, on a new one
+  // whenever the shader library is new.
+  void configureFloors(bool newShaders) {
+    const Config& config = context.config;
+    if (newShaders || !(config.measurePassFloors && config.measureGpuTime)) context.floors.reset();
+    if (config.measurePassFloors && !config.measureGpuTime && !warnedFloorsUntimed) {
+      warnedFloorsUntimed = true;
+      context.warn("measure_pass_floors=on needs measure_gpu_time=on (and timer queries): floors are not measured");
+    }
+    if (config.measurePassFloors && config.measureGpuTime && !context.floors)
+      context.floors = std::make_unique<PassFloors>(context.objects, *context.shaders);
   }
 
   // Grants a requested (valid) config against the context: falls back from methods it cannot run and
@@ -343,6 +357,7 @@ struct Plugin::Impl {
   // Holds exactly what the active rows need: frees the rest, creates what is missing.
   Status allocate(bool rebuildAll) {
     const Config& config = context.config;
+    if (context.floors) context.floors->release();  // their scratch targets follow the passes allocated here
     const std::vector<const TechniqueRow*> rows = activeTechniqueRows(config);
     const uint32_t storage = storageOf(config, rows);
     const bool needMsaa = storage & kStorageMsaaGBuffer;
@@ -494,6 +509,7 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
   context.emptyVertexArray = GlVertexArray(context.objects, vao);
   if (Status status = impl->allocate(true); !status) return status.error();
   impl->configureBudget(Config{});
+  impl->configureFloors(false);
   return std::unique_ptr<Plugin>(new Plugin(std::move(impl)));
 }
 
@@ -547,9 +563,12 @@ Status Plugin::resolve(const FrameInfo& frame) {
         "geometryFramebuffer() (docs/integration.md)");
   }
   GlStateGuard guard;
-  if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame); !status) return status;
-  if (impl_->depthMirror) impl_->depthMirror->copy(true);  // the resolved depth into the host's renderbuffer
   SharedTargets shared = impl_->shared();
+  Technique* method = impl_->methodTechnique();
+  const std::optional<ResolveCounts> counts = method ? method->resolveCounts(context, shared) : std::nullopt;
+  if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame, counts ? &*counts : nullptr); !status)
+    return status;
+  if (impl_->depthMirror) impl_->depthMirror->copy(true);  // the resolved depth into the host's renderbuffer
   for (ActiveTechnique& active : impl_->techniques)
     if (Status status = active.technique->afterResolve(context, shared, frame); !status) return status;
   return Status::ok();
@@ -666,6 +685,7 @@ Status Plugin::reconfigure(const Config& config) {
     }
   }
   impl_->configureBudget(previous);
+  impl_->configureFloors(newShaders);
   for (ActiveTechnique& active : impl_->techniques) active.technique->reconfigured(context, previous);
   // Figures measured under another config would be reported as this one's.
   if (toConfigText(context.config) != toConfigText(previous)) context.statistics->release();

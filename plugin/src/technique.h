@@ -18,6 +18,7 @@ namespace retroaa {
 // The shared pieces of the running config; null where no active row asks for them.
 struct SharedTargets {
   MsaaGBuffer* msaa = nullptr;
+  ResolvePass* resolve = nullptr;
   SliceRenderer* slices = nullptr;
   PostTarget* post = nullptr;
   const ForwardMask* forwardMask = nullptr;  // held while a technique readsForwardMask()
@@ -26,6 +27,8 @@ struct SharedTargets {
 class Technique {
  public:
   virtual ~Technique() = default;
+  // Slice counts the resolve can write from the samples it reads anyway (`edge`'s detectors); none by default.
+  virtual std::optional<ResolveCounts> resolveCounts(PluginContext&, SharedTargets&) { return std::nullopt; }
   // After the resolve into the host's G-buffer, before lighting (e.g. writing the slice mask).
   virtual Status afterResolve(PluginContext&, SharedTargets&, const FrameInfo&) { return Status::ok(); }
   // How the slices light this method (techniques whose row asks for slices). Default: 1 / count

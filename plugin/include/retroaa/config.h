@@ -136,6 +136,7 @@ struct Config {
   // For modders and measurements.
   std::string shaderOverrideDirectory;  // `shader_override_dir`
   bool measureGpuTime = false;          // `measure_gpu_time` (Plugin::stats(), Plugin::waitForStats())
+  bool measurePassFloors = false;       // `measure_pass_floors`: each measured pass's floor (adds GPU work)
 };
 
 // One settable key, for documentation, parsers and UIs: name, default, allowed values, effect.

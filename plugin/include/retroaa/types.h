@@ -243,6 +243,9 @@ struct PassStats {
   // it is fixed: divided by the machine's copy bandwidth, the time no implementation can beat. 0: not
   // stated (the traffic depends on the frame).
   uint64_t minimumBytes = 0;
+  // Where the pass cannot be measured (a floor the device cannot reproduce: measure_pass_floors), why;
+  // its figures are then 0 and mean nothing.
+  std::string unmeasured;
 };
 
 struct Stats {

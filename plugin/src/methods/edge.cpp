@@ -37,12 +37,24 @@ class EdgeTechnique : public Technique {
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
+  // The detectors run inside the resolve, on the samples it fetches anyway; per-sample's and ssaa's count
+  // is every sample everywhere, which needs no pass at all.
+  std::optional<ResolveCounts> resolveCounts(PluginContext& context, SharedTargets& shared) override {
+    if (detector_ == EdgeDetector::EveryPixel) return std::nullopt;
+    return ResolveCounts{detector_, depthCloseness(context), normalCosine(context), shared.slices->counts()};
+  }
+
   Status afterResolve(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     ScopedPass timed(context, "edge_mask");
+    if (detector_ == EdgeDetector::EveryPixel) {
+      shared.slices->writeUniformMask(context, shared.msaa->samples());
+      return Status::ok();
+    }
+    if (shared.resolve->wroteCounts()) return shared.slices->writeStencilFromCounts(context);
+    // The compute resolve writes no counts: the detector's own pass.
     shared.msaa->beginPass(program_, context, frame);
-    // A budget scale above 1 marks more pixels: a smaller closeness.
-    program_.set("uDepthCloseness", context.config.edgeDepthCloseness / float(context.budgetScale));
-    program_.set("uNormalCosine", std::cos(context.config.edgeNormalAngleDegrees * 3.14159265f / 180.0f));
+    program_.set("uDepthCloseness", depthCloseness(context));
+    program_.set("uNormalCosine", normalCosine(context));
     return shared.slices->writeMask(context, program_.get(), stencilExport_);
   }
 
@@ -60,6 +72,14 @@ class EdgeTechnique : public Technique {
   bool keepsObjectsFor(const Config& config) const override { return detectorFor(config) == detector_; }
 
  private:
+  // A budget scale above 1 marks more pixels: a smaller closeness.
+  static float depthCloseness(const PluginContext& context) {
+    return context.config.edgeDepthCloseness / float(context.budgetScale);
+  }
+  static float normalCosine(const PluginContext& context) {
+    return std::cos(context.config.edgeNormalAngleDegrees * 3.14159265f / 180.0f);
+  }
+
   ShaderProgram program_;
   EdgeDetector detector_ = EdgeDetector::Coverage;
   std::vector<int> order_;  // ssaa's Bayer order; empty: samples in index order

@@ -68,10 +68,23 @@ class MsaaGBuffer {
 // `resolve`: the depth-aware resolve of Magnussen (and FreeSpace Open's variant) from the MSAA
 // G-buffer into the host's single-sample G-buffer and depth.
 class SliceRenderer;
+// Slice counts the resolve writes from the samples it has fetched anyway: `edge`'s detector
+// (shaders/edge/detector.glsl) into `counts` (R8UI), N where the pixel's samples see more than one
+// surface, else 1. Saves the edge mask a pass that reads every sample again.
+struct ResolveCounts {
+  EdgeDetector detector = EdgeDetector::Coverage;
+  float depthCloseness = 0, normalCosine = 0;  // the depth and normal detectors' thresholds
+  GLuint counts = 0;
+};
+
 class ResolvePass {
  public:
   static Result<std::unique_ptr<ResolvePass>> create(PluginContext& context, const MsaaGBuffer& source);
-  Status run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame);
+  // With `counts` (and the full-screen resolve: the compute one does not count), the counts as well
+  // (wroteCounts() says whether this frame's did).
+  Status run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
+             const ResolveCounts* counts = nullptr);
+  bool wroteCounts() const { return wroteCounts_; }
   // The same resolve into the host's attachments only (its depth holds the resolved depth already),
   // where `slices` overwrote them: after the slices, so that the host's G-buffer holds the resolved
   // surface again. Where the slices wrote the host's depth too (writesHostDepth), the whole resolve again.
@@ -90,8 +103,17 @@ class ResolvePass {
   // with geometry at view depth <= 0; a later frame reads them once available (never waiting) and warns,
   // naming the layout fields, when the data looks unlike the layout's description.
   void checkLayout(PluginContext& context, const MsaaGBuffer& source);
+  // The counting resolve's program for a detector (built when first asked) and its target: the host's
+  // attachments, the counts after them, the host's depth.
+  Result<const ShaderProgram*> countingProgram(PluginContext& context, const MsaaGBuffer& source,
+                                               EdgeDetector detector);
+  Result<GLuint> countingTarget(PluginContext& context, GLuint counts);
   ShaderProgram program_, restoreProgram_, layoutCheck_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
+  std::map<EdgeDetector, ShaderProgram> countingPrograms_;
+  GlFramebuffer countingTarget_;
+  GLuint countingTargetCounts_ = 0;  // the counts texture countingTarget_ holds
+  bool wroteCounts_ = false;
   ShaderProgram computeProgram_, writeDepthProgram_;
   GlTexture resolvedDepth_;    // R32F: the compute resolve's depth, for writeDepthProgram_
   GlFramebuffer depthTarget_;  // the host's depth alone
@@ -113,6 +135,10 @@ class SliceRenderer {
   // gl_FragStencilRefARB when `stencilExport`) to fill the counts and the stencil mask.
   // `target` (0: the plugin's own) must hold the counts at location 0 and this renderer's mask as stencil.
   Status writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport, GLuint target = 0);
+  // The stencil mask from counts already written (ResolvePass::run's): one pass reading a byte a pixel.
+  Status writeStencilFromCounts(PluginContext& context);
+  // Every pixel's count `count` (per-sample: every sample lit): two clears, no pass.
+  void writeUniformMask(PluginContext& context, int count);
   GLuint counts() const { return counts_.get(); }
   // Whether each slice writes the host's depth texture too (DepthSource::DepthBuffer: the host's
   // lighting rebuilds positions from it), and the #defines of a slice writer's depth variant.
@@ -174,6 +200,12 @@ class SliceRenderer {
   // then, once every slice is in, the half-float sum into the host's light target.
   Status createTargets(PluginContext& context);  // create()'s framebuffers (and the half-float sum's pass)
   Status createPrograms(PluginContext& context, const MsaaGBuffer& source);
+  // Binds `target` (counts at location 0, the mask as depth-stencil) and clears the counts and the stencil
+  // to `count`, the mask's depth to the far plane.
+  void clearMask(PluginContext& context, GLuint target, int count);
+  // The counts texture's values into the stencil, with colour writes off: through stencil export where
+  // the context has it, else a bit at a time.
+  void stencilFromCounts(PluginContext& context);
   GLuint writeSlice(PluginContext& context, const MsaaGBuffer& source, const Plan& plan, int slice);
   void lightSlice(PluginContext& context, const ComposingFunction& compose, int slice);
   void copyResolvedDepthIntoMask(PluginContext& context);  // a composing layout's depth for slice 0
@@ -196,6 +228,7 @@ class SliceRenderer {
   GlTexture accumulation_;
   GlFramebuffer presentTarget_;
   ShaderProgram writeSlice_, writeSliceDepth_, composite_, markPixels_, presentLight_;
+  ShaderProgram stencilFromCounts_;  // with stencil export: the counts into the stencil in one pass
   int maxCount_ = 1;
   bool lastWriteEverywhere_ = true;
   uint64_t bytes_ = 0;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "../config_keys.h"
+#include "../shared_constants.h"
 #include "pipeline.h"
 
 namespace retroaa {
@@ -13,6 +14,9 @@ namespace {
 // The uniforms resolve.glsl declares, for each of its three programs.
 constexpr std::initializer_list<const char*> kResolveUniforms = {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting",
                                                                  "uFsoFootprintTan", "uCloseness"};
+// … and of the counting resolve, which adds edge/detector.glsl's.
+constexpr std::initializer_list<const char*> kCountingResolveUniforms = {
+    RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness", "uDepthCloseness", "uNormalCosine"};
 }  // namespace
 
 Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context, const MsaaGBuffer& source) {
@@ -107,13 +111,59 @@ void drawResolve(PluginContext& context, const ShaderProgram& program, const Msa
 }
 }  // namespace
 
-Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame) {
+Result<const ShaderProgram*> ResolvePass::countingProgram(PluginContext& context, const MsaaGBuffer& source,
+                                                         EdgeDetector detector) {
+  auto found = countingPrograms_.find(detector);
+  if (found != countingPrograms_.end()) return &found->second;
+  Result<ShaderProgram> program =
+      context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag",
+                               "#define RESOLVE_COUNTS 1\n" + defineLine("EDGE_DETECTOR", int(detector)) +
+                                   source.shaderDefines(context.layout),
+                               kCountingResolveUniforms);
+  if (!program) return program.error();
+  return &countingPrograms_.emplace(detector, std::move(program.value())).first->second;
+}
+
+Result<GLuint> ResolvePass::countingTarget(PluginContext& context, GLuint counts) {
+  if (countingTarget_ && countingTargetCounts_ == counts) return countingTarget_.get();
+  const GBufferLayout& layout = context.layout;
+  countingTarget_ = makeFramebuffer(context, "resolve.counting_target");
+  std::vector<GLenum> drawBuffers;
+  for (size_t i = 0; i <= layout.attachments.size(); ++i) {
+    const GLuint texture = i < layout.attachments.size() ? layout.attachments[i].texture : counts;
+    glNamedFramebufferTexture(countingTarget_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i), texture, 0);
+    drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+  }
+  glNamedFramebufferDrawBuffers(countingTarget_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
+  glNamedFramebufferTexture(countingTarget_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
+  if (Status status = checkFramebuffer(countingTarget_.get(), "resolve.counting_target"); !status)
+    return status.error();
+  countingTargetCounts_ = counts;
+  return countingTarget_.get();
+}
+
+Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
+                        const ResolveCounts* counts) {
+  wroteCounts_ = false;
   {
-    // Every sample of every attachment and of the depth read once, one value of each written.
+    // Every sample of every attachment and of the depth read once, one value of each written (and a count).
     uint64_t written = bytesPerTexel(sizedDepthFormat(context.layout.depthStencilTexture));
     for (const Attachment& attachment : context.layout.attachments) written += bytesPerTexel(attachment.internalFormat);
+    if (counts && !computes()) written += 1;
     ScopedPass timed(context, "resolve", source.bytes() + written * context.pixelCount());
-    if (computes()) {
+    if (counts && !computes()) {
+      Result<const ShaderProgram*> program = countingProgram(context, source, counts->detector);
+      if (!program) return program.error();
+      Result<GLuint> target = countingTarget(context, counts->counts);
+      if (!target) return target.error();
+      context.beginDepthWritingPass(target.value());
+      const ShaderProgram& counting = *program.value();
+      setResolveInputs(context, counting, source, frame);
+      counting.set("uDepthCloseness", counts->depthCloseness);
+      counting.set("uNormalCosine", counts->normalCosine);
+      context.drawFullscreen();
+      wroteCounts_ = true;
+    } else if (computes()) {
       const GBufferLayout& layout = context.layout;
       setResolveInputs(context, computeProgram_, source, frame);
       std::vector<PluginContext::ImageOutput> outputs;

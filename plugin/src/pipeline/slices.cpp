@@ -147,6 +147,12 @@ Status SliceRenderer::createPrograms(PluginContext& context, const MsaaGBuffer& 
       context.shaders->program("common/fullscreen.vert", "slices/mark_pixels.frag", "", {"uBit", "uSliceCounts"});
   if (!mark) return mark.error();
   markPixels_ = std::move(mark.value());
+  if (context.capabilities.stencilExport) {
+    auto fromCounts =
+        context.shaders->program("common/fullscreen.vert", "slices/stencil_from_counts.frag", "", {"uSliceCounts"});
+    if (!fromCounts) return fromCounts.error();
+    stencilFromCounts_ = std::move(fromCounts.value());
+  }
   if (keepsSliceDepth()) {
     auto copyDepth = context.shaders->program("common/fullscreen.vert", "slices/copy_depth.frag", "", {"uDepth"});
     if (!copyDepth) return copyDepth.error();
@@ -155,33 +161,65 @@ Status SliceRenderer::createPrograms(PluginContext& context, const MsaaGBuffer& 
   return Status::ok();
 }
 
+void SliceRenderer::clearMask(PluginContext& context, GLuint target, int count) {
+  context.beginFullscreenPass(target);
+  const GLuint counts[4] = {GLuint(count), 0, 0, 0};
+  glClearNamedFramebufferuiv(target, GL_COLOR, 0, counts);
+  glDepthMask(GL_TRUE);  // a depth clear obeys the depth write mask
+  glStencilMask(0xFF);
+  glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, count);
+  glDepthMask(GL_FALSE);
+}
+
+void SliceRenderer::stencilFromCounts(PluginContext& context) {
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glEnable(GL_STENCIL_TEST);
+  if (stencilFromCounts_.get()) {
+    glStencilMask(0xFF);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // the shader's gl_FragStencilRefARB replaces the reference
+    stencilFromCounts_.use();
+    stencilFromCounts_.bindTexture("uSliceCounts", counts_.get());
+    context.drawFullscreen();
+    return;
+  }
+  // Without stencil export, the count reaches the stencil one bit at a time: pass b sets bit b
+  // wherever the count has it. ⌈log2(N+1)⌉ passes, each reading one byte per pixel.
+  glStencilFunc(GL_ALWAYS, 0xFF, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  markPixels_.use();
+  markPixels_.bindTexture("uSliceCounts", counts_.get());
+  for (int bit = 0; (1 << bit) <= maxCount_; ++bit) {
+    glStencilMask(GLuint(1) << bit);
+    markPixels_.set("uBit", 1 << bit);
+    context.drawFullscreen();
+  }
+}
+
 Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool stencilExport, GLuint target) {
   if (target == 0) target = maskTarget_.get();
-  context.beginFullscreenPass(target);
-  const GLuint zero[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferuiv(target, GL_COLOR, 0, zero);
-  glClearNamedFramebufferfi(target, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  clearMask(context, target, 0);
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xFF);
   glStencilFunc(GL_ALWAYS, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // the shader's gl_FragStencilRefARB replaces the reference
   glUseProgram(maskProgram);
   context.drawFullscreen();
-  if (!stencilExport) {
-    // Without stencil export, the count reaches the stencil one bit at a time: pass b sets bit b
-    // wherever the count has it. ⌈log2(N+1)⌉ passes, each reading one byte per pixel.
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glStencilFunc(GL_ALWAYS, 0xFF, 0xFF);
-    markPixels_.use();
-    markPixels_.bindTexture("uSliceCounts", counts_.get());
-    for (int bit = 0; (1 << bit) <= maxCount_; ++bit) {
-      glStencilMask(GLuint(1) << bit);
-      markPixels_.set("uBit", 1 << bit);
-      context.drawFullscreen();
-    }
-  }
+  if (!stencilExport) stencilFromCounts(context);
   return Status::ok();
 }
+
+Status SliceRenderer::writeStencilFromCounts(PluginContext& context) {
+  context.beginFullscreenPass(maskTarget_.get());
+  glStencilMask(0xFF);
+  glDepthMask(GL_TRUE);
+  glClearNamedFramebufferfi(maskTarget_.get(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glDepthMask(GL_FALSE);
+  stencilFromCounts(context);
+  return Status::ok();
+}
+
+void SliceRenderer::writeUniformMask(PluginContext& context, int count) { clearMask(context, maskTarget_.get(), count); }
 
 namespace {
 
@@ -235,6 +273,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
 GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& source, const Plan& plan, int slice) {
   const GBufferLayout& layout = context.layout;
   ScopedPass timed(context, "slices.write");
+  if (!plan.writeProgram) timed.floorReadsSamples(1);  // the stock writer copies one sample of each attachment
   context.beginFullscreenPass(sliceWriter_.get());
   if (slice == 0 && !plan.firstSliceEverywhere)
     stencilPassWhereCountAbove(1);  // slice 0 keeps the resolved G-buffer of single-count pixels

@@ -1,0 +1,109 @@
+// `edge`'s detectors (Thibieroz): whether a pixel's samples see more than one surface, by EDGE_DETECTOR
+// (one of the DETECTOR_* values the plugin injects, shared_constants.h). Included by the edge mask pass
+// (detect_edges.frag) and by the resolve, which runs it on the samples it has already fetched
+// (DETECTOR_VALUE(a, s): attachment a of sample s of `pixel`). The including pass declares uFootprintTan.
+#ifndef DETECTOR_VALUE
+#define DETECTOR_VALUE(a, s) FETCH(uAttachments[a], pixel, s)
+#endif
+
+uniform float uDepthCloseness;  // c of the depth detector
+uniform float uNormalCosine;    // cos(angle) of the normal detector
+
+// The G-buffer's size in pixels (a supersampled one holds SUPERSAMPLE² texels a pixel).
+ivec2 pixelCount() {
+#if SUPERSAMPLE > 1
+  return textureSize(uDepthBuffer, 0) / SUPERSAMPLE;
+#elif MULTISAMPLED
+  return textureSize(uDepthBuffer);
+#else
+  return textureSize(uDepthBuffer, 0);
+#endif
+}
+
+// The depth slope of the pixel's own surface along one axis, from sample 0 of its two neighbours: the
+// smaller one-sided difference, since the side that crosses a silhouette has the larger one (Lauritzen's
+// dFdx takes whichever side the quad pairs, and a silhouette's then hides every sample behind it). Where
+// the two sides slope opposite ways the pixel is a ridge or a thin feature, and no slope is trusted.
+float surfaceSlope(float before, float centre, float after) {
+  float toBefore = centre - before, toAfter = after - centre;  // NaN or inf beside background
+  bool beforeOk = !isnan(toBefore) && !isinf(toBefore), afterOk = !isnan(toAfter) && !isinf(toAfter);
+  if (beforeOk && afterOk) return toBefore * toAfter > 0.0 ? min(abs(toBefore), abs(toAfter)) : 0.0;
+  return beforeOk ? abs(toBefore) : afterOk ? abs(toAfter) : 0.0;
+}
+
+// Whether every sample lies on sample 0's plane, with its normal: depth within the surface's slope across
+// one pixel (sample offsets are under a pixel), normals within 8 degrees. Samples of one surface shaded per
+// sample (a cut-out's texture read at each sample, interpolated normals) pass; a second surface does not.
+bool samplesShareOnePlane(ivec2 pixel) {
+  float d0 = sampleDistance(pixel, 0);
+  vec3 n0 = sampleNormal(pixel, 0);
+  ivec2 last = pixelCount() - 1;
+  float slope = 0.0;
+  if (!isinf(d0)) {
+    slope = surfaceSlope(sampleDistance(ivec2(max(pixel.x - 1, 0), pixel.y), 0), d0,
+                         sampleDistance(ivec2(min(pixel.x + 1, last.x), pixel.y), 0)) +
+            surfaceSlope(sampleDistance(ivec2(pixel.x, max(pixel.y - 1, 0)), 0), d0,
+                         sampleDistance(ivec2(pixel.x, min(pixel.y + 1, last.y)), 0));
+  }
+  for (int s = 1; s < SAMPLES; ++s) {
+    float d = sampleDistance(pixel, s);
+    if (isinf(d) != isinf(d0)) return false;  // geometry beside background
+    if (isinf(d)) continue;                   // background beside background
+    if (abs(d - d0) > slope + 1e-5 * d0 || dot(sampleNormal(pixel, s), n0) < 0.99) return false;
+  }
+  return true;
+}
+
+bool isEdge(ivec2 pixel) {
+#if EDGE_DETECTOR == DETECTOR_EVERY_PIXEL
+  return true;
+#elif EDGE_DETECTOR == DETECTOR_PLANE
+  return !samplesShareOnePlane(pixel);
+#elif EDGE_DETECTOR == DETECTOR_COVERAGE
+  // A model shader run once per pixel and primitive writes the same outputs into every sample the
+  // primitive covers, so bit-identical samples are one surface. Different ones are a second primitive,
+  // or one surface shaded per sample (cut-out draws, `sample_shading`, a driver's 16x mode): the plane
+  // test tells them apart. It runs once, after the loops (inside them it would be inlined at every
+  // unrolled exit and run under each one's lanes).
+  bool differs = false;
+  for (int s = 1; s < SAMPLES; ++s)
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) differs = differs || DETECTOR_VALUE(a, s) != DETECTOR_VALUE(a, 0);
+  return differs && !samplesShareOnePlane(pixel);
+#else
+  float d0 = sampleDistance(pixel, 0);
+  vec3 n0 = sampleNormal(pixel, 0);
+  for (int s = 1; s < SAMPLES; ++s) {
+    float d = sampleDistance(pixel, s);
+    if (isinf(d) != isinf(d0)) return true;  // geometry beside background
+    if (isinf(d)) continue;                  // background beside background
+#if EDGE_DETECTOR == DETECTOR_DEPTH
+    if (abs(d - d0) > min(d, d0) * uFootprintTan * uDepthCloseness) return true;
+#elif EDGE_DETECTOR == DETECTOR_NORMAL
+    if (dot(normalize(sampleNormal(pixel, s)), normalize(n0)) < uNormalCosine) return true;
+#elif EDGE_DETECTOR == DETECTOR_MATERIAL
+    // The material channels the layout has: albedo, specular, and gloss beside an xyz normal.
+    bool differs = false;
+#if ALBEDO_ATTACHMENT >= 0
+    differs = differs ||
+              any(greaterThan(abs(DETECTOR_VALUE(ALBEDO_ATTACHMENT, s) - DETECTOR_VALUE(ALBEDO_ATTACHMENT, 0)),
+                              vec4(1.0 / 512.0)));
+#endif
+#if SPECULAR_ATTACHMENT >= 0
+    differs = differs ||
+              any(greaterThan(abs(DETECTOR_VALUE(SPECULAR_ATTACHMENT, s) - DETECTOR_VALUE(SPECULAR_ATTACHMENT, 0)),
+                              vec4(1.0 / 512.0)));
+#endif
+#if NORMAL_ATTACHMENT >= 0 && NORMAL_ENCODING == NORMAL_XYZ
+    differs = differs || abs(DETECTOR_VALUE(NORMAL_ATTACHMENT, s).w - DETECTOR_VALUE(NORMAL_ATTACHMENT, 0).w) > 1.0 / 512.0;
+#endif
+#if NORMAL_ATTACHMENT >= 0 && NORMAL_ENCODING == NORMAL_SPHEREMAP  // zw: the host's material (STK: roughness, metallic)
+    differs = differs || any(greaterThan(abs(DETECTOR_VALUE(NORMAL_ATTACHMENT, s).zw -
+                                             DETECTOR_VALUE(NORMAL_ATTACHMENT, 0).zw),
+                                         vec2(1.0 / 512.0)));
+#endif
+    if (differs) return true;
+#endif
+  }
+  return false;
+#endif
+}
