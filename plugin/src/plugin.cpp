@@ -602,6 +602,7 @@ Status Plugin::shade(const ComposingFunction& compose) {
     SharedTargets shared = impl_->shared();
     Technique* technique = impl_->methodTechnique();
     const SliceRenderer::Plan plan = technique ? technique->slicePlan(context, shared) : SliceRenderer::Plan{};
+    if (context.config.restoreGBufferAfterShade) impl_->resolvePass->keepForRestore(context, *impl_->slices);
     Status status = impl_->slices->shade(context, *impl_->msaa, compose, plan, impl_->forward.get());
     if (status && context.config.restoreGBufferAfterShade)
       status = impl_->resolvePass->restore(context, *impl_->msaa, impl_->context.frame, *impl_->slices);

@@ -90,6 +90,10 @@ class ResolvePass {
   // surface again. Where the slices wrote the host's depth too (writesHostDepth), the whole resolve again.
   Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
                  const SliceRenderer& slices);
+  // Before the slices overwrite the host's attachments: a copy of them (and of its depth where the slices
+  // write it and it holds no stencil of the host's), which restore() then copies back: two copies instead
+  // of a second resolve, and whatever the host drew into its G-buffer since resolve() is kept too.
+  void keepForRestore(PluginContext& context, const SliceRenderer& slices);
   bool computeRequested() const { return computeRequested_; }   // resolve_compute as created
   bool computes() const { return computeProgram_.get() != 0; }  // … and the layout allowed it
   uint64_t bytes() const { return bytes_; }
@@ -108,6 +112,8 @@ class ResolvePass {
   Result<const ShaderProgram*> countingProgram(PluginContext& context, const MsaaGBuffer& source,
                                                EdgeDetector detector);
   Result<GLuint> countingTarget(PluginContext& context, GLuint counts);
+  std::vector<GlTexture> kept_;  // keepForRestore()'s copies: each attachment, then the depth where kept
+  bool keptThisFrame_ = false, keptDepth_ = false;
   ShaderProgram program_, restoreProgram_, layoutCheck_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
   std::map<EdgeDetector, ShaderProgram> countingPrograms_;
