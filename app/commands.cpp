@@ -239,7 +239,7 @@ std::string floorTable(const json& rows) {
   std::ostringstream table;
   table << "Plugin passes against their floors (a pass of the same shape that only moves the same bytes, timed in "
            "the same run; the host's lighting has none):\n\n"
-        << "| method | own passes ms | own vs off's frame | pass | ms | floor ms | x floor | floor MB | fragments |\n"
+        << "| passes of | own passes ms | own vs off's frame | pass | ms | floor ms | x floor | floor MB | fragments |\n"
         << "|---|---|---|---|---|---|---|---|---|\n"
         << std::fixed;
   for (const auto& row : rows) {

@@ -168,6 +168,29 @@ TEST(Slices, TheHostsGBufferHoldsTheResolvedSurfaceAfterShade) {
   EXPECT_FALSE(gbuffer() == resolved) << "opted out: the last slice's samples stay";
 }
 
+// What the host draws into its G-buffer between resolve() and shade() (a decal, a deferred blood splat) is
+// what its lighting sees at single-count pixels and what the G-buffer holds after shade(): the restore
+// copies back what the slices overwrote, rather than resolving the model pass again over it.
+TEST(Slices, WhatTheHostWritesBetweenResolveAndShadeIsThereAfterShade) {
+  constexpr int w = 8, h = 4;
+  SyntheticFrame frame(w, h);
+  std::vector<std::vector<SyntheticSample>> pixels(w * h, {surfaceSample(10)});
+  pixels[0] = {surfaceSample(10), backgroundSample(), surfaceSample(10), backgroundSample()};  // an edge
+  for (const retroaa::Method method : {retroaa::Method::Edge, retroaa::Method::PerSample}) {
+    auto hooks = frame.attach(method);
+    ASSERT_TRUE(hooks);
+    retroaa::Plugin& plugin = hooks->plugin();
+    fillGeometry(plugin, w, h, pixels);
+    ASSERT_TRUE(plugin.resolve({1.0f}));
+    const GLuint albedo = frame.renderer->targets().color;
+    const float decal[4] = {0.25f, 0.75f, 0.125f, 1.0f};
+    glClearTexImage(albedo, 0, GL_RGBA, GL_FLOAT, decal);
+    ASSERT_TRUE(plugin.shade([&](GLuint target) { albedoAsLight(albedo, target, w, h); }));
+    for (const glm::vec4& texel : frame.read(albedo))
+      EXPECT_EQ(texel, glm::vec4(0.25f, 0.75f, 0.125f, 1.0f)) << retroaa::toString(method);
+  }
+}
+
 TEST(Slices, BackgroundSamplesReachTheHostsLightingAsTheHostClearedThem) {
   // A lighting stand-in that outputs the normal it reads: a silhouette pixel's two background samples
   // (normal cleared to 0) must be lit with the host's own clear values, not with an invented normal,

@@ -5,6 +5,7 @@
 
 #include <epoxy/egl.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -213,15 +214,17 @@ TEST(Statistics, WithoutStencilExportTheCountTakesOneBitPassPerBitAndTheSameImag
   EXPECT_EQ(host.renderer->readDisplay(), withExport);
   const retroaa::Stats bitPasses = hooks->plugin().waitForStats();
   EXPECT_EQ(bitPasses.lightingEvaluations, exported.lightingEvaluations);
-  // The mask pass: one full-screen count, then ⌈log2(N+1)⌉ full-screen bit passes (3 at 4×, where
-  // one pass per count step took 4).
+  // The counts come from the resolve either way; the mask pass then carries them into the stencil: one
+  // full-screen pass with stencil export, ⌈log2(N+1)⌉ full-screen bit passes without (3 at 4×, where one
+  // pass per count step took 4).
   const uint64_t pixels = 96 * 72;
   const int samples = bitPasses.samples;
   int bits = 0;
   while ((1 << bits) <= samples) ++bits;
   const uint64_t fullScreen = fragmentInvocations(exported, "edge_mask");
   EXPECT_GE(fullScreen, pixels);
-  EXPECT_EQ(fragmentInvocations(bitPasses, "edge_mask"), fullScreen * (1 + bits)) << samples << " samples";
+  EXPECT_EQ(fragmentInvocations(bitPasses, "edge_mask"), fullScreen * bits) << samples << " samples";
+  EXPECT_EQ(fragmentInvocations(bitPasses, "resolve"), fullScreen) << "the counting resolve, one pass";
   host.renderer->setHooks(host.hooks.get());
 }
 
@@ -258,4 +261,135 @@ TEST(Statistics, TheResolveStatesItsMinimumTraffic) {
   ASSERT_EQ(stats.samples, 4);
   EXPECT_EQ(resolveBytes, stats.bytesHeld + stats.bytesHeld / 4) << "40 B per sample read, 40 B per pixel written";
   EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * 4 * 40);
+}
+
+namespace {
+// The frame's figures under `spec` with every pass's floor measured (a warm-up frame builds the floors'
+// programs first), and its display.
+std::pair<retroaa::Stats, std::vector<uint8_t>> floorStats(PatchedHost& host, const std::string& spec) {
+  retroaa::Config base;
+  base.measureGpuTime = true;
+  base.measurePassFloors = true;
+  host.render(spec, base);
+  host.render(spec, base);
+  return {host.hooks->plugin().waitForStats(), host.renderer->readDisplay()};
+}
+
+struct PassFigures {
+  uint64_t fragments = 0, computes = 0, minimumBytes = 0;
+  std::string unmeasured;
+  bool seen = false;
+};
+std::map<std::string, PassFigures> byName(const retroaa::Stats& stats) {
+  std::map<std::string, PassFigures> passes;
+  for (const retroaa::PassStats& pass : stats.passes) {
+    PassFigures& figures = passes[pass.name];
+    figures.fragments += pass.fragmentInvocations;
+    figures.computes += pass.computeInvocations;
+    figures.minimumBytes += pass.minimumBytes;
+    if (!pass.unmeasured.empty()) figures.unmeasured = pass.unmeasured;
+    figures.seen = true;
+  }
+  return passes;
+}
+}  // namespace
+
+// A floor is a pass of the pass's own shape: the same draws over the same pixels, so the same fragment (or
+// compute) invocations, exactly; a pass with nothing of the plugin's to replay says why; measuring floors
+// leaves the frame as it was.
+TEST(Statistics, EveryPassHasAFloorOfItsOwnShape) {
+  PatchedHost host("default", 64, 48);
+  for (const char* spec : {"resolve", "edge", "per-sample", "adaptive", "aggregate", "smaa-s2x", "fxaa", "smaa",
+                           "coverage", "reconstruct", "temporal", "resolve@resolve_compute=on",
+                           "reconstruct@reconstruct_compute=on"}) {
+    const app::DisplayImage plain = host.render(spec);
+    const auto [stats, display] = floorStats(host, spec);
+    const std::map<std::string, PassFigures> passes = byName(stats);
+    // (A history's frame moves on from frame to frame: temporal's is compared by its floors' shapes alone.)
+    if (std::string(spec) != "temporal") {
+      EXPECT_EQ(app::DisplayImage::fromRgba8(64, 48, display).rgb, plain.rgb) << spec << ": the floors touched the frame";
+    }
+    int floors = 0;
+    for (const auto& [name, figures] : passes) {
+      if (name.size() > 6 && name.compare(name.size() - 6, 6, ".floor") == 0) continue;
+      const auto floor = passes.find(name + ".floor");
+      ASSERT_NE(floor, passes.end()) << spec << ": pass " << name << " has no floor entry";
+      if (!floor->second.unmeasured.empty()) {
+        // Only the host's lighting, and passes of clears and copies alone, have nothing to replay.
+        if (name != "lighting" && name != "slices.lighting") {
+          EXPECT_EQ(figures.fragments + figures.computes, 0u)
+              << spec << ": " << name << " drew, yet its floor is unmeasured: " << floor->second.unmeasured;
+        }
+        continue;
+      }
+      ++floors;
+      EXPECT_EQ(floor->second.fragments, figures.fragments) << spec << ": " << name;
+      EXPECT_EQ(floor->second.computes, figures.computes) << spec << ": " << name;
+      EXPECT_GT(floor->second.minimumBytes, 0u) << spec << ": " << name;
+    }
+    EXPECT_GT(floors, 0) << spec;
+    const auto lighting = passes.find(passes.count("slices.lighting") ? "slices.lighting.floor" : "lighting.floor");
+    ASSERT_NE(lighting, passes.end()) << spec;
+    EXPECT_NE(lighting->second.unmeasured.find("no draw or dispatch of the plugin's own"), std::string::npos)
+        << spec << ": the host's lighting has no floor of ours";
+  }
+}
+
+// The resolve's floor reads every sample of every attachment and the depth once and writes one value of
+// each: the traffic the resolve states, per invocation.
+TEST(Statistics, TheResolvesFloorMovesTheBytesTheResolveStates) {
+  PatchedHost host("default", 64, 48);
+  const auto [stats, display] = floorStats(host, "resolve");
+  const std::map<std::string, PassFigures> passes = byName(stats);
+  const PassFigures& resolve = passes.at("resolve");
+  const PassFigures& floor = passes.at("resolve.floor");
+  const uint64_t pixels = 64 * 48;
+  ASSERT_EQ(resolve.minimumBytes % pixels, 0u);
+  EXPECT_EQ(floor.minimumBytes, floor.fragments * (resolve.minimumBytes / pixels));
+}
+
+// A floor the device cannot measure is reported so, never as 0 ms or a ratio: without timer queries no
+// floor is asked for, and the plugin says why.
+TEST(Statistics, FloorsWithoutTimedPassesAreNotMeasuredAndSaySo) {
+  PatchedHost host("default", 32, 24);
+  retroaa::Config config = app::parseMethodSpec("edge", {}).config;
+  config.measurePassFloors = true;  // measure_gpu_time left off
+  auto hooks = installHooks(host, config);
+  host.renderer->renderFrame(host.scene.camera);
+  const retroaa::Stats stats = hooks->plugin().waitForStats();
+  for (const retroaa::PassStats& pass : stats.passes) EXPECT_EQ(pass.name.find(".floor"), std::string::npos);
+  const std::vector<std::string> warnings = hooks->plugin().warnings();
+  EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
+    return w.find("measure_pass_floors=on needs measure_gpu_time=on") != std::string::npos;
+  }));
+  host.renderer->setHooks(host.hooks.get());
+}
+
+// The resolve writes `edge`'s counts from the samples it fetched: the same counts, so the same frame, as the
+// detector's own pass (which runs where the resolve is a compute pass), for every detector.
+TEST(Statistics, TheCountingResolveCountsAsTheDetectorsOwnPass) {
+  PatchedHost host("default", 96, 72);
+  for (const char* detector : {"coverage", "plane", "depth", "normal", "material"}) {
+    const std::string fused = std::string("edge@edge_detector=") + detector;
+    const app::DisplayImage fusedImage = host.render(fused);
+    const std::vector<uint8_t> fusedCounts = host.hooks->plugin().readSliceCounts();
+    const retroaa::Stats fusedStats = measuredStats(host, fused);
+    const std::string ownPass = fused + "@resolve_compute=on";
+    const app::DisplayImage ownImage = host.render(ownPass);
+    const std::vector<uint8_t> ownCounts = host.hooks->plugin().readSliceCounts();
+    const retroaa::Stats ownStats = measuredStats(host, ownPass);
+    ASSERT_GT(byName(ownStats).at("resolve").computes, 0u) << "the compute resolve ran, so the detector's own pass";
+    EXPECT_EQ(fusedCounts, ownCounts) << detector;
+    EXPECT_EQ(fusedImage.rgb, ownImage.rgb) << detector;
+    EXPECT_GT(std::count(fusedCounts.begin(), fusedCounts.end(), uint8_t(fusedStats.samples)), 0) << detector;
+  }
+}
+
+// per-sample counts every sample everywhere: its mask is two clears, no pass.
+TEST(Statistics, PerSamplesMaskDrawsNothing) {
+  PatchedHost host("default", 64, 48);
+  const retroaa::Stats stats = measuredStats(host, "per-sample");
+  EXPECT_EQ(fragmentInvocations(stats, "edge_mask"), 0u);
+  const std::vector<uint8_t> counts = host.hooks->plugin().readSliceCounts();
+  EXPECT_EQ(std::count(counts.begin(), counts.end(), uint8_t(stats.samples)), std::ptrdiff_t(counts.size()));
 }
