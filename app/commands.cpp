@@ -276,6 +276,32 @@ std::string floorTable(const json& rows) {
   return table.str();
 }
 
+// Each slice's own cost (slice 0 lights every pixel, later ones only where the counts ask): what a sparse
+// slice costs against a full one on this device.
+std::string sliceTable(const json& rows) {
+  std::ostringstream table;
+  table << std::fixed << std::setprecision(2);
+  bool any = false;
+  for (const auto& row : rows) {
+    const json& runs = row["passes_ms_by_run"];
+    if (!runs.contains("plugin.slices.lighting")) continue;
+    if (!any)
+      table << "Each slice's GPU ms (the host's lighting, the plugin's write and composite):\n\n"
+            << "| method | slice | lighting ms | write ms | composite ms |\n|---|---|---|---|---|\n";
+    any = true;
+    const json& lighting = runs["plugin.slices.lighting"];
+    for (size_t slice = 0; slice < lighting.size(); ++slice) {
+      auto cell = [&](const char* pass) {
+        return runs.contains(pass) && slice < runs[pass].size() ? runs[pass][slice].get<double>() : 0.0;
+      };
+      table << "| " << (slice == 0 ? row["method"].get<std::string>() : "") << " | " << slice << " | "
+            << lighting[slice].get<double>() << " | " << cell("plugin.slices.write") << " | "
+            << cell("plugin.slices.composite") << " |\n";
+    }
+  }
+  return any ? "\n" + table.str() : "";
+}
+
 void writeBenchCsv(const std::string& path, const json& rows) {
   ensureParent(path);
   std::ofstream csv(path);
@@ -409,7 +435,7 @@ int runBench(const BenchOptions& options) {
                          {"shading_floor_samples", options.base.samples},
                          {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
                          {"rows", rows}};
-  const std::string table = benchTable(rows) + "\n" + floorTable(rows);
+  const std::string table = benchTable(rows) + "\n" + floorTable(rows) + sliceTable(rows);
   std::printf("%s", table.c_str());
   std::printf("renderer: %s\n", info.summary().c_str());
   if (!options.json.empty()) {

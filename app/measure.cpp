@@ -213,7 +213,7 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
   renderer.measureTime = true;
   for (int i = 0; i < warmUpFrames; ++i) renderer.renderFrame(camera);
   std::vector<double> frameMs;
-  std::map<std::string, std::vector<double>> passMs;
+  std::map<std::string, std::vector<double>> passMs, runMs;
   for (int i = 0; i < std::max(timedFrames, 1); ++i) {
     renderer.renderFrame(camera);
     const host::HostTimings& t = renderer.timings();
@@ -223,6 +223,11 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
     passMs["lighting"].push_back(t.lightingMs);
     passMs["tonemap_post"].push_back(t.tonemapMs);
     m.stats = session.plugin().waitForStats();
+    std::map<std::string, std::vector<double>> frameRuns;
+    for (const retroaa::PassStats& pass : m.stats.passes) frameRuns["plugin." + pass.name].push_back(pass.ms);
+    for (const auto& [name, runs] : frameRuns)
+      if (runs.size() > 1)
+        for (size_t run = 0; run < runs.size(); ++run) runMs[name + "#" + std::to_string(run)].push_back(runs[run]);
     std::map<std::string, double> frameTotals;  // a pass runs once per slice: sum them per frame
     m.passInvocations.clear();
     m.passComputeInvocations.clear();
@@ -241,6 +246,13 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
   m.image = DisplayImage::fromRgba8(renderer.width(), renderer.height(), m.display);
   m.gpuMs = median(frameMs);
   for (const auto& [name, values] : passMs) m.passMs[name] = median(values);
+  for (const auto& [key, values] : runMs) {  // "plugin.<pass>#<run>", runs in order
+    const size_t hash = key.rfind('#');
+    std::vector<double>& runs = m.passMsByRun[key.substr(0, hash)];
+    const size_t run = std::stoul(key.substr(hash + 1));
+    if (runs.size() <= run) runs.resize(run + 1, 0.0);
+    runs[run] = median(values);
+  }
   m.error = compare(m.image, reference.truth, reference.edges);
   if (reference.perSample) m.psnrVsPerSampleDb = compare(m.image, *reference.perSample, {}).psnrDb;
   return m;
@@ -257,6 +269,7 @@ nlohmann::json figures(const Measurement& m) {
       // Not measured (wall frames 0): null, never a made-up number.
       {"wall_ms", m.wallMs > 0 ? json(m.wallMs) : json(nullptr)},
       {"passes_ms", m.passMs},
+      {"passes_ms_by_run", m.passMsByRun},
       {"passes_fragment_invocations", m.passInvocations},
       {"passes_compute_invocations", m.passComputeInvocations},
       {"passes_minimum_bytes", m.passMinimumBytes},

@@ -41,6 +41,8 @@ struct Measurement {
   // Medians: model_pass (the host's geometry alone), after_model_pass (its hooks: resolve, a prepass),
   // lighting, tonemap_post, plugin.<pass>.
   std::map<std::string, double> passMs;
+  // plugin.<pass> run more than once a frame (once per slice): each run's median ms, in frame order.
+  std::map<std::string, std::vector<double>> passMsByRun;
   std::map<std::string, uint64_t> passInvocations;         // plugin.<pass>: fragment-shader invocations, last frame
   std::map<std::string, uint64_t> passComputeInvocations;  // … compute-shader invocations (passes with any)
   std::map<std::string, uint64_t> passMinimumBytes;        // plugin.<pass>: its least traffic, where stated
@@ -82,7 +84,8 @@ double measureWallMs(Session& session, const host::Camera& camera, int frames);
 
 // The figures of a measurement by the names every report uses: samples, evals_per_pixel,
 // lighting_evaluations, slices, gpu_ms, wall_ms (null when not measured), passes_ms,
-// passes_fragment_invocations, passes_compute_invocations, passes_minimum_bytes, plugin_bytes, plugin_bytes_per_pixel,
+// passes_fragment_invocations, passes_compute_invocations, passes_minimum_bytes, passes_ms_by_run (a pass run
+// once per slice: each run's ms, so a sparse slice's cost shows beside a full one's), plugin_bytes, plugin_bytes_per_pixel,
 // budget_scale, psnr_db, edge_psnr_db (null when the ground truth has no edge pixel), edge_pixels, ssim, max_abs_error,
 // psnr_vs_per_sample_db (when measured).
 nlohmann::json figures(const Measurement& measurement);

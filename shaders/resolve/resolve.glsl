@@ -114,6 +114,31 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
   float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
   bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
 
+#if SAMPLES <= 8
+  // One surface: every sample bit-identical in every attachment (one primitive's outputs; a NaN compares
+  // unequal, so corrupt samples take the general path). The weighted mean of equal values is the value:
+  // sample 0 passes through, its normal re-encoded as the mean's would be, with the depth the general path
+  // writes (the reference's; the farthest for background). FSO's weighting averages depths: not here.
+  bool identical = usableCount == SAMPLES && !fso;
+  for (int s = 1; s < SAMPLES; ++s)
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) identical = identical && all(equal(fetched[s][a], fetched[0][a]));
+  if (identical) {
+    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = fetched[0][a];
+    if (referenceIsBackground) {
+      depth = 0.0;
+      for (int s = 0; s < SAMPLES; ++s) depth = max(depth, FETCH(uDepthBuffer, pixel, s).r);
+      return;
+    }
+#if NORMAL_ATTACHMENT >= 0
+    vec3 n = decodeNormal(values[NORMAL_ATTACHMENT]);
+    if (!(length(n) > 1e-4)) n = vec3(0.0, 0.0, 1.0);
+    values[NORMAL_ATTACHMENT] = encodeNormal(values[NORMAL_ATTACHMENT], normalize(n));
+#endif
+    depth = FETCH(uDepthBuffer, pixel, reference).r;
+    return;
+  }
+#endif
+
   float weight[SAMPLES];
   float weightSum = 0.0;
   int contributors = 0, lastContributor = reference;

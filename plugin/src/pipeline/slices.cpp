@@ -247,8 +247,15 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
   context.frameStats.slices = sliceCount;
   lastWriteEverywhere_ = plan.firstSliceEverywhere;
   if (keepsSliceDepth()) copyResolvedDepthIntoMask(context);
+  GLuint previousPixels = 0;  // the last slice's occlusion query (none for slice 0)
   for (int slice = 0; slice < sliceCount; ++slice) {
+    // Slice s + 1's pixels (count > s + 1) are among slice s's: where slice s had none, slice s + 1's write
+    // is skipped on the GPU too, and its own query then counts none (no CPU wait).
+    const bool chained = previousPixels != 0 && !plan.filterSliceLight;
+    if (chained) glBeginConditionalRender(previousPixels, GL_QUERY_WAIT);
     const GLuint slicePixels = writeSlice(context, source, plan, slice);
+    if (chained) glEndConditionalRender();
+    previousPixels = slicePixels;
     // A slice without pixels (every count of the frame at most `slice`) draws nothing: the GPU skips its
     // lighting and composite on its own query's result, without the CPU waiting for it. A slice whose
     // light is filtered (Plan::filterSliceLight) always has pixels: its first slice writes everywhere.
