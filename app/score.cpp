@@ -236,6 +236,29 @@ void writeReferenceImage(const DisplayImage& reference, const std::string& path)
   writeImage8(path, reference.width, reference.height, rgba);
 }
 
+bool isFloor(const std::string& pass) { return pass.size() > 6 && pass.compare(pass.size() - 6, 6, ".floor") == 0; }
+
+// Each captured pass against its floor, for the methods captured with measure_pass_floors=on.
+std::string floorTable(const nlohmann::json& report) {
+  std::ostringstream md;
+  char buffer[256];
+  for (const auto& entry : report) {
+    const nlohmann::json& passes = entry["passes_ms"];
+    for (const auto& [name, ms] : passes.items()) {
+      if (isFloor(name) || !passes.contains(name + ".floor")) continue;
+      if (md.tellp() == 0)
+        md << "\nPasses against their floors (a pass of the same shape that only moves the same bytes, "
+              "measure_pass_floors):\n\n| method | pass | ms | floor ms | × floor |\n|---|---|---|---|---|\n";
+      const double floor = passes[name + ".floor"].get<double>();
+      std::snprintf(buffer, sizeof buffer, "| `%s` | %s | %.2f | %.2f | %s |\n",
+                    entry["spec"].get<std::string>().c_str(), name.c_str(), ms.get<double>(), floor,
+                    floor > 0 ? std::to_string(ms.get<double>() / floor).substr(0, 4).c_str() : "unmeasured");
+      md << buffer;
+    }
+  }
+  return md.str();
+}
+
 }  // namespace
 
 Crop parseCrop(const std::string& text) {
@@ -321,8 +344,9 @@ int score(const ScoreOptions& options) {
   md << "| method | " << (sequence ? "frames | " : "") << "PSNR dB | edge PSNR dB | interior PSNR dB | "
      << (sequence ? "PSNR swing dB | flicker | lag PSNR dB | " : "");
   for (const Region& region : options.regions) md << region.name << " PSNR / edge dB | ";
-  md << "evals/px | wall ms | × off | retroaa passes GPU ms | plugin MB | sky kept |\n|---|";
-  const int columns = 9 + (sequence ? 4 : 0) + int(options.regions.size());
+  md << "evals/px | wall ms | × off | retroaa passes GPU ms | own passes ms (× off's wall) | plugin MB | sky kept "
+        "|\n|---|";
+  const int columns = 10 + (sequence ? 4 : 0) + int(options.regions.size());
   for (int c = 0; c < columns; ++c) md << "---|";
   md << "\n";
   char buffer[256];
@@ -330,9 +354,16 @@ int score(const ScoreOptions& options) {
     const double n = method.frames;
     const nlohmann::json& r =
         method.lastRecord.contains("retroaa") ? method.lastRecord["retroaa"] : nlohmann::json::object();
-    double passMs = 0;
+    // Every plugin pass (the host's lighting inside the slices included: the table's column), and the
+    // plugin's own (without the host's lighting); a floor replayed after a pass (measure_pass_floors) is
+    // neither: it is compared with its pass below.
+    double passMs = 0, ownMs = 0;
     if (r.contains("passes"))
-      for (const auto& pass : r["passes"].items()) passMs += pass.value().get<double>();
+      for (const auto& [name, ms] : r["passes"].items()) {
+        if (isFloor(name)) continue;
+        passMs += ms.get<double>();
+        if (name != "lighting" && name != "slices.lighting") ownMs += ms.get<double>();
+      }
     const nlohmann::json kept = off ? skyKept(method.lastFrame, off->lastFrame, sky) : nlohmann::json();
     const double wall = method.wall / n;
     nlohmann::json regions = nlohmann::json::object();
@@ -355,6 +386,8 @@ int score(const ScoreOptions& options) {
                             {"wall_ms", wall},
                             {"wall_vs_off", offWall > 0 ? wall / offWall : 0.0},
                             {"passes_ms", r.value("passes", nlohmann::json::object())},
+                            {"own_passes_ms", ownMs},
+                            {"own_passes_vs_off_wall", offWall > 0 ? ownMs / offWall : 0.0},
                             {"plugin_bytes", r.value("plugin_bytes", 0)},
                             {"warnings", r.value("warnings", 0)},
                             {"sky_pixels", sky.size()},
@@ -374,9 +407,9 @@ int score(const ScoreOptions& options) {
       std::snprintf(buffer, sizeof buffer, "%.2f / %.2f | ", method.regionPsnr[i] / n, method.regionEdgePsnr[i] / n);
       md << buffer;
     }
-    std::snprintf(buffer, sizeof buffer, "%.2f | %.0f | %.2f | %.1f | %.1f | %s |\n",
+    std::snprintf(buffer, sizeof buffer, "%.2f | %.0f | %.2f | %.1f | %.1f (%.2f) | %.1f | %s |\n",
                   entry["evaluations_per_pixel"].get<double>(), wall, offWall > 0 ? wall / offWall : 0.0, passMs,
-                  entry["plugin_bytes"].get<double>() / 1048576.0,
+                  ownMs, offWall > 0 ? ownMs / offWall : 0.0, entry["plugin_bytes"].get<double>() / 1048576.0,
                   kept.is_null() ? "–" : std::to_string(kept.get<double>()).substr(0, 6).c_str());
     md << buffer;
     for (size_t c = 0; c < options.crops.size(); ++c)
@@ -396,6 +429,7 @@ int score(const ScoreOptions& options) {
                   : "")
      << "; " << sky.size()
      << " sky pixels (no geometry within a pixel of them in the reference), kept = within 1/255 of off.\n";
+  md << floorTable(report);
   std::ofstream(out + "/report.md") << md.str();
   std::ofstream(out + "/report.json") << report.dump(2) << "\n";
   std::printf("%s", md.str().c_str());

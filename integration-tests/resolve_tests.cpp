@@ -2,6 +2,8 @@
 #include "commands.h"
 #include "gl_state.h"
 #include "test_support.h"
+#include <iterator>
+#include <map>
 
 #include <algorithm>
 #include <filesystem>
@@ -253,6 +255,167 @@ TEST(Plugin, EveryCallRestoresTheHostsGlState) {
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);
+}
+
+namespace {
+// The GL state a host may hold that a plugin call could read or change, read with this test's own list of
+// queries (not GlStateSnapshot, which does the restoring): every buffer binding the core profile has a
+// target for, per-draw-buffer masks and blending, the texture, sampler and image units the plugin uses,
+// the fixed-function state its passes set.
+std::map<std::string, std::vector<GLint64>> hostGlState() {
+  std::map<std::string, std::vector<GLint64>> state;
+  auto integer = [&](const char* name, GLenum query) {
+    GLint64 value = 0;
+    glGetInteger64v(query, &value);
+    state[name].push_back(value);
+  };
+  auto indexed = [&](const char* name, GLenum query, GLuint count) {
+    for (GLuint i = 0; i < count; ++i) {
+      GLint64 value = 0;
+      glGetInteger64i_v(query, i, &value);
+      state[name].push_back(value);
+    }
+  };
+#define READ(q) integer(#q, q)
+  READ(GL_ARRAY_BUFFER_BINDING), READ(GL_ELEMENT_ARRAY_BUFFER_BINDING), READ(GL_PIXEL_PACK_BUFFER_BINDING);
+  READ(GL_PIXEL_UNPACK_BUFFER_BINDING), READ(GL_QUERY_BUFFER_BINDING), READ(GL_DRAW_INDIRECT_BUFFER_BINDING);
+  READ(GL_DISPATCH_INDIRECT_BUFFER_BINDING), READ(GL_COPY_READ_BUFFER_BINDING), READ(GL_COPY_WRITE_BUFFER_BINDING);
+  READ(GL_TEXTURE_BUFFER_BINDING), READ(GL_UNIFORM_BUFFER_BINDING), READ(GL_SHADER_STORAGE_BUFFER_BINDING);
+  READ(GL_ATOMIC_COUNTER_BUFFER_BINDING), READ(GL_TRANSFORM_FEEDBACK_BUFFER_BINDING);
+  READ(GL_DRAW_FRAMEBUFFER_BINDING), READ(GL_READ_FRAMEBUFFER_BINDING), READ(GL_RENDERBUFFER_BINDING);
+  READ(GL_CURRENT_PROGRAM), READ(GL_VERTEX_ARRAY_BINDING), READ(GL_ACTIVE_TEXTURE), READ(GL_PROGRAM_PIPELINE_BINDING);
+  READ(GL_DEPTH_FUNC), READ(GL_DEPTH_WRITEMASK), READ(GL_STENCIL_FUNC), READ(GL_STENCIL_REF);
+  READ(GL_STENCIL_VALUE_MASK), READ(GL_STENCIL_WRITEMASK), READ(GL_STENCIL_FAIL), READ(GL_STENCIL_PASS_DEPTH_PASS);
+  READ(GL_STENCIL_BACK_FUNC), READ(GL_STENCIL_BACK_WRITEMASK), READ(GL_CULL_FACE_MODE), READ(GL_FRONT_FACE);
+  READ(GL_PACK_ALIGNMENT), READ(GL_UNPACK_ALIGNMENT), READ(GL_PACK_ROW_LENGTH), READ(GL_UNPACK_ROW_LENGTH);
+  READ(GL_POLYGON_MODE), READ(GL_PROVOKING_VERTEX), READ(GL_PRIMITIVE_RESTART_INDEX);
+#undef READ
+  for (GLenum capability : {GL_BLEND, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_MULTISAMPLE,
+                            GL_SAMPLE_SHADING, GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_POLYGON_OFFSET_FILL,
+                            GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_MASK, GL_PRIMITIVE_RESTART, GL_DEPTH_CLAMP,
+                            GL_DITHER, GL_COLOR_LOGIC_OP})
+    state["enabled " + std::to_string(capability)].push_back(glIsEnabled(capability));
+  GLint viewport[4], scissor[4];
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_SCISSOR_BOX, scissor);
+  state["viewport"].assign(viewport, viewport + 4);
+  state["scissor"].assign(scissor, scissor + 4);
+  GLint maxDrawBuffers = 0;
+  glGetIntegerv(GL_MAX_DRAW_BUFFERS, &maxDrawBuffers);
+  for (GLuint i = 0; i < GLuint(std::min(maxDrawBuffers, 8)); ++i) {
+    GLboolean mask[4];
+    glGetBooleani_v(GL_COLOR_WRITEMASK, i, mask);
+    state["colour mask " + std::to_string(i)].assign(mask, mask + 4);
+    state["blend " + std::to_string(i)].push_back(glIsEnabledi(GL_BLEND, i));
+    for (GLenum query : {GL_BLEND_SRC_RGB, GL_BLEND_DST_RGB, GL_BLEND_SRC_ALPHA, GL_BLEND_DST_ALPHA,
+                         GL_BLEND_EQUATION_RGB, GL_BLEND_EQUATION_ALPHA}) {
+      GLint value = 0;
+      glGetIntegeri_v(query, i, &value);
+      state["blend function " + std::to_string(i)].push_back(value);
+    }
+  }
+  indexed("uniform buffers", GL_UNIFORM_BUFFER_BINDING, 4);
+  indexed("storage buffers", GL_SHADER_STORAGE_BUFFER_BINDING, 4);
+  indexed("atomic counter buffers", GL_ATOMIC_COUNTER_BUFFER_BINDING, 1);
+  indexed("image units", GL_IMAGE_BINDING_NAME, 8);
+  GLint active = 0;
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+  for (int unit = 0; unit < 16; ++unit) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    for (GLenum binding : {GL_TEXTURE_BINDING_2D, GL_TEXTURE_BINDING_2D_MULTISAMPLE, GL_SAMPLER_BINDING}) {
+      GLint value = 0;
+      glGetIntegerv(binding, &value);
+      state["unit " + std::to_string(unit)].push_back(value);
+    }
+  }
+  glActiveTexture(GLenum(active));
+  return state;
+}
+
+std::string differences(const std::map<std::string, std::vector<GLint64>>& before,
+                        const std::map<std::string, std::vector<GLint64>>& after) {
+  std::string out;
+  for (const auto& [name, values] : before)
+    if (after.at(name) != values) out += name + "; ";
+  return out;
+}
+}  // namespace
+
+// The promise of plugin.h ("every call restores the GL state it changed"), checked from outside: unusual host
+// state on every buffer target (pixel pack and unpack, query and indirect buffers among them) and per draw
+// buffer, then every public call of several methods and stacks, forward passes included.
+TEST(Plugin, EveryPublicCallLeavesTheHostsGlStateAsItsOwnQueriesReadIt) {
+  PatchedHost host("default", 64, 48);
+  host.render("off");
+  retroaa::Plugin& plugin = host.hooks->plugin();
+  const host::HostTargets& targets = host.renderer->targets();
+  retroaa::GBufferLayout layout = patch::describeHostGBuffer(targets);
+  layout.drawsForwardPasses = true;
+  GLuint buffers[9] = {};
+  glCreateBuffers(9, buffers);
+  for (GLuint buffer : buffers) glNamedBufferStorage(buffer, 1 << 20, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  const GLenum targetsToBind[] = {GL_PIXEL_PACK_BUFFER,        GL_PIXEL_UNPACK_BUFFER, GL_QUERY_BUFFER,
+                                  GL_DRAW_INDIRECT_BUFFER,     GL_DISPATCH_INDIRECT_BUFFER, GL_COPY_READ_BUFFER,
+                                  GL_COPY_WRITE_BUFFER,        GL_ARRAY_BUFFER,        GL_TEXTURE_BUFFER};
+  for (size_t i = 0; i < std::size(targetsToBind); ++i) glBindBuffer(targetsToBind[i], buffers[i]);
+  glColorMaski(1, GL_FALSE, GL_TRUE, GL_FALSE, GL_TRUE);
+  glEnablei(GL_BLEND, 2);
+  glBlendFuncSeparatei(3, GL_DST_COLOR, GL_ZERO, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glBlendEquationi(4, GL_MAX);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 7);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glViewport(3, 4, 20, 10);
+  const auto before = hostGlState();
+  auto expectUnchanged = [&](const std::string& call) {
+    EXPECT_EQ(differences(before, hostGlState()), "") << "changed by " << call;
+  };
+  std::vector<uint8_t> countsWithoutPackBuffer;
+  for (const char* spec : {"edge", "per-sample", "adaptive", "aggregate", "smaa-s2x", "resolve+fxaa@resolve_compute=on",
+                           "resolve+smaa", "reconstruct", "coverage", "temporal", "edge+temporal",
+                           "resolve+reconstruct@reconstruct_compute=on"}) {
+    retroaa::Config config;
+    ASSERT_TRUE(retroaa::applyMethodSpec(config, spec));
+    config.measureGpuTime = true;
+    ASSERT_TRUE(plugin.reconfigure(config));
+    expectUnchanged(std::string(spec) + ": reconfigure");
+    ASSERT_TRUE(plugin.resize(layout));
+    expectUnchanged(std::string(spec) + ": resize");
+    for (int frame = 0; frame < 2; ++frame) {
+      ASSERT_TRUE(plugin.resolve(retroaa::FrameInfo{}));
+      expectUnchanged(std::string(spec) + ": resolve");
+      ASSERT_TRUE(plugin.shade([](retroaa::GLuintHandle target) { glBindFramebuffer(GL_FRAMEBUFFER, target); }));
+      expectUnchanged(std::string(spec) + ": shade");
+      auto forward = plugin.beginForward();
+      ASSERT_TRUE(forward) << spec;
+      expectUnchanged(std::string(spec) + ": beginForward");
+      ASSERT_TRUE(plugin.endForward());
+      expectUnchanged(std::string(spec) + ": endForward");
+      ASSERT_TRUE(plugin.post());
+      expectUnchanged(std::string(spec) + ": post");
+    }
+    plugin.stats();
+    expectUnchanged(std::string(spec) + ": stats");
+    plugin.waitForStats();
+    expectUnchanged(std::string(spec) + ": waitForStats");
+    // A readback with the host's pixel pack buffer bound reaches the caller's memory, not the buffer.
+    const std::vector<uint8_t> counts = plugin.readSliceCounts();
+    expectUnchanged(std::string(spec) + ": readSliceCounts");
+    if (std::string(spec) == "per-sample") {
+      EXPECT_EQ(std::count(counts.begin(), counts.end(), uint8_t(4)), std::ptrdiff_t(counts.size()))
+          << "per-sample counts every sample everywhere";
+    }
+  }
+  retroaa::Config off;
+  ASSERT_TRUE(plugin.reconfigure(off));
+  ASSERT_TRUE(plugin.resize(patch::describeHostGBuffer(targets)));
+  for (GLenum target : targetsToBind) glBindBuffer(target, 0);
+  glDeleteBuffers(9, buffers);
+  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisablei(GL_BLEND, 2);
+  glBlendFuncSeparatei(3, GL_ONE, GL_ZERO, GL_ONE, GL_ZERO);
+  glBlendEquationi(4, GL_FUNC_ADD);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 TEST(Plugin, BrokenShaderOverrideFallsBackToTheBuiltInAndSaysWhere) {

@@ -1,6 +1,7 @@
 #include "gl_state.h"
 
 #include <algorithm>
+#include <iterator>
 
 namespace retroaa {
 
@@ -46,6 +47,20 @@ GlStateSnapshot::IndexedBuffers captureBuffers(GLenum target) {
     glGetInteger64i_v(q.size, index, &range.size);
   }
   return buffers;
+}
+
+GLenum bindingQueryOf(GLenum target) {
+  switch (target) {
+    case GL_PIXEL_PACK_BUFFER: return GL_PIXEL_PACK_BUFFER_BINDING;
+    case GL_PIXEL_UNPACK_BUFFER: return GL_PIXEL_UNPACK_BUFFER_BINDING;
+    case GL_QUERY_BUFFER: return GL_QUERY_BUFFER_BINDING;
+    case GL_DRAW_INDIRECT_BUFFER: return GL_DRAW_INDIRECT_BUFFER_BINDING;
+    case GL_DISPATCH_INDIRECT_BUFFER: return GL_DISPATCH_INDIRECT_BUFFER_BINDING;
+    case GL_COPY_READ_BUFFER: return GL_COPY_READ_BUFFER_BINDING;
+    case GL_COPY_WRITE_BUFFER: return GL_COPY_WRITE_BUFFER_BINDING;
+    case GL_ARRAY_BUFFER: return GL_ARRAY_BUFFER_BINDING;
+    default: return GL_TEXTURE_BUFFER_BINDING;
+  }
 }
 
 // A name the host deleted while it was bound is gone once unbound: it restores to 0.
@@ -128,14 +143,31 @@ GlStateSnapshot GlStateSnapshot::capture() {
   }
   s.packAlignment = getInt(GL_PACK_ALIGNMENT);
   s.unpackAlignment = getInt(GL_UNPACK_ALIGNMENT);
+  s.packRowLength = getInt(GL_PACK_ROW_LENGTH);
+  s.packSkipPixels = getInt(GL_PACK_SKIP_PIXELS);
+  s.packSkipRows = getInt(GL_PACK_SKIP_ROWS);
   s.atomicCounterBuffers = captureBuffers(GL_ATOMIC_COUNTER_BUFFER);
   s.shaderStorageBuffers = captureBuffers(GL_SHADER_STORAGE_BUFFER);
   s.uniformBuffers = captureBuffers(GL_UNIFORM_BUFFER);
+  for (size_t i = 0; i < std::size(kPlainBufferTargets); ++i) s.plainBuffers[i] = getInt(bindingQueryOf(kPlainBufferTargets[i]));
+  s.drawBuffers.resize(size_t(std::min(kDrawBuffers, getInt(GL_MAX_DRAW_BUFFERS))));
+  for (GLuint i = 0; i < s.drawBuffers.size(); ++i) {
+    DrawBufferState& d = s.drawBuffers[i];
+    glGetBooleani_v(GL_COLOR_WRITEMASK, i, d.colorMask.data());
+    d.blend = glIsEnabledi(GL_BLEND, i);
+    glGetIntegeri_v(GL_BLEND_SRC_RGB, i, &d.srcRgb);
+    glGetIntegeri_v(GL_BLEND_DST_RGB, i, &d.dstRgb);
+    glGetIntegeri_v(GL_BLEND_SRC_ALPHA, i, &d.srcAlpha);
+    glGetIntegeri_v(GL_BLEND_DST_ALPHA, i, &d.dstAlpha);
+    glGetIntegeri_v(GL_BLEND_EQUATION_RGB, i, &d.equationRgb);
+    glGetIntegeri_v(GL_BLEND_EQUATION_ALPHA, i, &d.equationAlpha);
+  }
   return s;
 }
 
 GlStateGuard::GlStateGuard() : saved_(GlStateSnapshot::capture()) {
   glBindSamplers(0, GlStateSnapshot::kUnits, nullptr);
+  for (GLenum target : {GL_PIXEL_PACK_BUFFER, GL_PIXEL_UNPACK_BUFFER, GL_QUERY_BUFFER}) glBindBuffer(target, 0);
 }
 
 void GlStateSnapshot::restore() const {
@@ -185,9 +217,25 @@ void GlStateSnapshot::restore() const {
   }
   glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
   glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
+  glPixelStorei(GL_PACK_ROW_LENGTH, packRowLength);
+  glPixelStorei(GL_PACK_SKIP_PIXELS, packSkipPixels);
+  glPixelStorei(GL_PACK_SKIP_ROWS, packSkipRows);
   restoreBuffers(GL_ATOMIC_COUNTER_BUFFER, atomicCounterBuffers);
   restoreBuffers(GL_SHADER_STORAGE_BUFFER, shaderStorageBuffers);
   restoreBuffers(GL_UNIFORM_BUFFER, uniformBuffers);
+  for (size_t i = 0; i < std::size(kPlainBufferTargets); ++i)
+    glBindBuffer(kPlainBufferTargets[i], liveBuffer(plainBuffers[i]));
+  // Per draw buffer last: the single-value calls above set every draw buffer to buffer 0's.
+  for (GLuint i = 0; i < drawBuffers.size(); ++i) {
+    const DrawBufferState& d = drawBuffers[i];
+    glColorMaski(i, d.colorMask[0], d.colorMask[1], d.colorMask[2], d.colorMask[3]);
+    if (d.blend)
+      glEnablei(GL_BLEND, i);
+    else
+      glDisablei(GL_BLEND, i);
+    glBlendFuncSeparatei(i, GLenum(d.srcRgb), GLenum(d.dstRgb), GLenum(d.srcAlpha), GLenum(d.dstAlpha));
+    glBlendEquationSeparatei(i, GLenum(d.equationRgb), GLenum(d.equationAlpha));
+  }
 }
 
 bool GlStateSnapshot::operator==(const GlStateSnapshot& o) const {
@@ -209,8 +257,10 @@ bool GlStateSnapshot::operator==(const GlStateSnapshot& o) const {
          backStencilPassDepthPass == o.backStencilPassDepthPass && minSampleShading == o.minSampleShading &&
          textureBindings2D == o.textureBindings2D && textureBindings2DMultisample == o.textureBindings2DMultisample &&
          samplerBindings == o.samplerBindings && imageBindings == o.imageBindings && packAlignment == o.packAlignment &&
-         unpackAlignment == o.unpackAlignment && atomicCounterBuffers == o.atomicCounterBuffers &&
-         shaderStorageBuffers == o.shaderStorageBuffers && uniformBuffers == o.uniformBuffers;
+         unpackAlignment == o.unpackAlignment && packRowLength == o.packRowLength &&
+         packSkipPixels == o.packSkipPixels && packSkipRows == o.packSkipRows && atomicCounterBuffers == o.atomicCounterBuffers &&
+         shaderStorageBuffers == o.shaderStorageBuffers && uniformBuffers == o.uniformBuffers &&
+         plainBuffers == o.plainBuffers && drawBuffers == o.drawBuffers;
 }
 
 }  // namespace retroaa

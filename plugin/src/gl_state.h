@@ -35,7 +35,7 @@ struct GlStateSnapshot {
     }
   };
   std::vector<ImageBinding> imageBindings;
-  GLint packAlignment = 4, unpackAlignment = 4;
+  GLint packAlignment = 4, unpackAlignment = 4, packRowLength = 0, packSkipPixels = 0, packSkipRows = 0;
   // Buffer bindings: the generic one of each indexed target, and its first kBufferIndices indexed ranges
   // (the plugin's passes bind atomic counters at 0; a host's SSBOs and uniform blocks live there too).
   struct BufferRange {
@@ -49,6 +49,28 @@ struct GlStateSnapshot {
     bool operator==(const IndexedBuffers& o) const { return generic == o.generic && ranges == o.ranges; }
   };
   IndexedBuffers atomicCounterBuffers, shaderStorageBuffers, uniformBuffers;
+  // The plain buffer targets a call may bind or read through: pixel pack and unpack (a readback or upload
+  // with one bound goes to that buffer), query results, indirect draws and dispatches, copies.
+  static constexpr GLenum kPlainBufferTargets[] = {GL_PIXEL_PACK_BUFFER,      GL_PIXEL_UNPACK_BUFFER,
+                                                   GL_QUERY_BUFFER,           GL_DRAW_INDIRECT_BUFFER,
+                                                   GL_DISPATCH_INDIRECT_BUFFER, GL_COPY_READ_BUFFER,
+                                                   GL_COPY_WRITE_BUFFER,      GL_ARRAY_BUFFER,
+                                                   GL_TEXTURE_BUFFER};
+  std::array<GLint, std::size(kPlainBufferTargets)> plainBuffers{};
+  // Per draw buffer (0 … kDrawBuffers - 1): colour mask, blend enable, blend functions and equations (the
+  // single-value queries above are draw buffer 0's).
+  static constexpr int kDrawBuffers = 8;
+  struct DrawBufferState {
+    std::array<GLboolean, 4> colorMask{};
+    GLboolean blend = 0;
+    GLint srcRgb = 0, dstRgb = 0, srcAlpha = 0, dstAlpha = 0, equationRgb = 0, equationAlpha = 0;
+    bool operator==(const DrawBufferState& o) const {
+      return colorMask == o.colorMask && blend == o.blend && srcRgb == o.srcRgb && dstRgb == o.dstRgb &&
+             srcAlpha == o.srcAlpha && dstAlpha == o.dstAlpha && equationRgb == o.equationRgb &&
+             equationAlpha == o.equationAlpha;
+    }
+  };
+  std::vector<DrawBufferState> drawBuffers;
 
   static constexpr int kUnits = 16;
   static constexpr int kImageUnits = kMaxAttachments + 1;  // the compute resolve's: the attachments and its depth
@@ -60,7 +82,9 @@ struct GlStateSnapshot {
 
 // Captures on construction, restores on destruction. In between, units 0–15 have no sampler object:
 // the plugin's passes read its textures with their own parameters, whatever sampler a host left bound
-// (one with mipmap filtering would make the plugin's single-level textures incomplete, reading zero).
+// (one with mipmap filtering would make the plugin's single-level textures incomplete, reading zero);
+// and no pixel pack, pixel unpack or query buffer is bound, so the plugin's readbacks, uploads and query
+// reads reach its own memory, not a buffer the host left bound.
 class GlStateGuard {
  public:
   GlStateGuard();

@@ -397,6 +397,9 @@ std::vector<uint8_t> SliceRenderer::readCounts() const {
   glGetTextureLevelParameteriv(counts_.get(), 0, GL_TEXTURE_HEIGHT, &height);
   std::vector<uint8_t> counts(size_t(width) * height);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);  // a host's row length or skips would scatter the rows
+  glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_PACK_SKIP_ROWS, 0);
   glGetTextureImage(counts_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, GLsizei(counts.size()), counts.data());
   return counts;
 }
