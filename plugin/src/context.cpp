@@ -83,8 +83,11 @@ GlTexture makeLightTargetCopy(PluginContext& context, const char* label, uint64_
 }
 
 void copyLightTarget(const GBufferLayout& layout, GLuint copy) {
-  glCopyImageSubData(sceneColourTexture(layout), GL_TEXTURE_2D, 0, 0, 0, 0, copy, GL_TEXTURE_2D, 0, 0, 0, 0,
-                     layout.width, layout.height, 1);
+  copyLayoutTexture(layout, sceneColourTexture(layout), copy);
+}
+
+void copyLayoutTexture(const GBufferLayout& layout, GLuint from, GLuint to) {
+  glCopyImageSubData(from, GL_TEXTURE_2D, 0, 0, 0, 0, to, GL_TEXTURE_2D, 0, 0, 0, 0, layout.width, layout.height, 1);
 }
 
 uint64_t bytesPerTexel(GLenum internalFormat) {

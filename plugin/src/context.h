@@ -89,6 +89,8 @@ inline GLuint sceneColourFramebuffer(const GBufferLayout& layout) {
 // A texture in the scene colour's format and size, and a copy of the scene colour into it.
 GlTexture makeLightTargetCopy(PluginContext& context, const char* label, uint64_t& bytes);
 void copyLightTarget(const GBufferLayout& layout, GLuint copy);
+// Level 0 of one 2D texture into another of the same format, the layout's size.
+void copyLayoutTexture(const GBufferLayout& layout, GLuint from, GLuint to);
 
 // A texture with immutable storage: GL_TEXTURE_2D for `samples` = 0, GL_TEXTURE_2D_MULTISAMPLE with
 // that many samples otherwise (1 included, so N = 1 runs the same multisample path). Adds its size to `bytes`.

@@ -26,13 +26,17 @@ class EdgeTechnique : public Technique {
     auto technique = std::make_unique<EdgeTechnique>();
     technique->detector_ = detectorFor(context.config);
     technique->stencilExport_ = context.capabilities.stencilExport;
-    const std::string defines = shared.msaa->shaderDefines(context.layout, false) +
-                                defineLine("EDGE_DETECTOR", int(technique->detector_)) +
-                                defineLine("STENCIL_EXPORT", technique->stencilExport_);
-    auto program = context.shaders->program("common/fullscreen.vert", "edge/detect_edges.frag", defines,
-                                            {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthCloseness", "uNormalCosine"});
-    if (!program) return program.error();
-    technique->program_ = std::move(program.value());
+    // The detector's own pass, for a frame the resolve does not count (a compute resolve); every pixel's
+    // count is a clear and needs none.
+    if (technique->detector_ != EdgeDetector::EveryPixel) {
+      const std::string defines = shared.msaa->shaderDefines(context.layout, false) +
+                                  defineLine("EDGE_DETECTOR", int(technique->detector_)) +
+                                  defineLine("STENCIL_EXPORT", technique->stencilExport_);
+      auto program = context.shaders->program("common/fullscreen.vert", "edge/detect_edges.frag", defines,
+                                              {RETROAA_GBUFFER_PASS_UNIFORMS, "uDepthCloseness", "uNormalCosine"});
+      if (!program) return program.error();
+      technique->program_ = std::move(program.value());
+    }
     if (context.config.method == Method::Ssaa) technique->order_ = sampleOrder(*shared.msaa);
     return std::unique_ptr<Technique>(std::move(technique));
   }

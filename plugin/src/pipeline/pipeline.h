@@ -114,6 +114,7 @@ class ResolvePass {
   Result<GLuint> countingTarget(PluginContext& context, GLuint counts);
   std::vector<GlTexture> kept_;  // keepForRestore()'s copies: each attachment, then the depth where kept
   bool keptThisFrame_ = false, keptDepth_ = false;
+  uint64_t keptBytes_ = 0;  // their share of bytes_
   ShaderProgram program_, restoreProgram_, layoutCheck_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
   std::map<EdgeDetector, ShaderProgram> countingPrograms_;

@@ -49,18 +49,12 @@ Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
 
 void PostTarget::bindAsOutput(const PluginContext& context) const { context.beginFullscreenPass(framebuffer_.get()); }
 
-namespace {
-void copyImage(GLuint from, GLuint to, const GBufferLayout& layout) {
-  glCopyImageSubData(from, GL_TEXTURE_2D, 0, 0, 0, 0, to, GL_TEXTURE_2D, 0, 0, 0, 0, layout.width, layout.height, 1);
-}
-}  // namespace
-
 void PostTarget::begin(const GBufferLayout& layout) const {
-  if (encodedCopy_) copyImage(layout.displayTexture, encodedCopy_.get(), layout);
+  if (encodedCopy_) copyLayoutTexture(layout, layout.displayTexture, encodedCopy_.get());
 }
 
 void PostTarget::end(const GBufferLayout& layout) const {
-  if (encodedCopy_) copyImage(encodedCopy_.get(), layout.displayTexture, layout);
+  if (encodedCopy_) copyLayoutTexture(layout, encodedCopy_.get(), layout.displayTexture);
 }
 
 void PostTarget::bindInput(const GBufferLayout& layout, const ShaderProgram& program, const char* sampler) const {
@@ -70,9 +64,9 @@ void PostTarget::bindInput(const GBufferLayout& layout, const ShaderProgram& pro
   glBindSampler(GLuint(unit), linear_.get());
 }
 
-void PostTarget::copyBack(const GBufferLayout& layout) const { copyImage(output_.get(), input(layout), layout); }
+void PostTarget::copyBack(const GBufferLayout& layout) const { copyLayoutTexture(layout, output_.get(), input(layout)); }
 
-void PostTarget::copyInputAside(const GBufferLayout& layout) const { copyImage(input(layout), output_.get(), layout); }
+void PostTarget::copyInputAside(const GBufferLayout& layout) const { copyLayoutTexture(layout, input(layout), output_.get()); }
 
 void PostTarget::beginInPlace(const PluginContext& context) const {
   copyInputAside(context.layout);

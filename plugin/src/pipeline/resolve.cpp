@@ -250,12 +250,6 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
                  ")" + (fromDepthBuffer || fromWorld ? "" : ", or the depth is in another channel"));
 }
 
-namespace {
-void copyTexture(GLuint from, GLuint to, int width, int height) {
-  glCopyImageSubData(from, GL_TEXTURE_2D, 0, 0, 0, 0, to, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
-}
-}  // namespace
-
 void ResolvePass::keepForRestore(PluginContext& context, const SliceRenderer& slices) {
   const GBufferLayout& layout = context.layout;
   const GLenum depthFormat = sizedDepthFormat(layout.depthStencilTexture);
@@ -264,17 +258,21 @@ void ResolvePass::keepForRestore(PluginContext& context, const SliceRenderer& sl
   if (!keptThisFrame_) return;  // restore() resolves again: copying back would undo the host's stencil
   if (kept_.empty() || keptDepth_ != keepDepth) {
     kept_.clear();
+    bytes_ -= keptBytes_;  // the copies' bytes are counted anew below
+    keptBytes_ = 0;
     for (const Attachment& attachment : layout.attachments)
       kept_.push_back(makeTexture(context, attachment.internalFormat, layout.width, layout.height, 0,
-                                  "resolve.kept_attachment", bytes_));
+                                  "resolve.kept_attachment", keptBytes_));
     if (keepDepth)
-      kept_.push_back(makeTexture(context, depthFormat, layout.width, layout.height, 0, "resolve.kept_depth", bytes_));
+      kept_.push_back(
+          makeTexture(context, depthFormat, layout.width, layout.height, 0, "resolve.kept_depth", keptBytes_));
+    bytes_ += keptBytes_;
     keptDepth_ = keepDepth;
   }
   ScopedPass timed(context, "resolve.keep");
   for (size_t i = 0; i < layout.attachments.size(); ++i)
-    copyTexture(layout.attachments[i].texture, kept_[i].get(), layout.width, layout.height);
-  if (keepDepth) copyTexture(layout.depthStencilTexture, kept_.back().get(), layout.width, layout.height);
+    copyLayoutTexture(layout, layout.attachments[i].texture, kept_[i].get());
+  if (keepDepth) copyLayoutTexture(layout, layout.depthStencilTexture, kept_.back().get());
 }
 
 Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
@@ -284,8 +282,8 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
     keptThisFrame_ = false;
     const GBufferLayout& layout = context.layout;
     for (size_t i = 0; i < layout.attachments.size(); ++i)
-      copyTexture(kept_[i].get(), layout.attachments[i].texture, layout.width, layout.height);
-    if (keptDepth_) copyTexture(kept_.back().get(), layout.depthStencilTexture, layout.width, layout.height);
+      copyLayoutTexture(layout, kept_[i].get(), layout.attachments[i].texture);
+    if (keptDepth_) copyLayoutTexture(layout, kept_.back().get(), layout.depthStencilTexture);
     return Status::ok();
   }
   if (slices.writesHostDepth()) {  // the slices wrote the host's depth as well: the whole resolve again
