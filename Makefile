@@ -13,7 +13,7 @@ APT_PACKAGES = cmake g++ make pkg-config git python3 assimp-testmodels xvfb xaut
 # clang and its sanitizer and libFuzzer runtimes, for test-sanitize and fuzz only.
 CLANG_PACKAGES = clang libclang-rt-14-dev
 
-.PHONY: check-library-only deps deps-clang stk-deps stk stk-report test-stk build demo demo-full test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
+.PHONY: check-library-only deps deps-clang stk-deps stk stk-report stk-cost test-stk build demo demo-full test test-sanitize fuzz soak regress regress-golden presets docs-config docs-robustness clean
 
 deps:
 	@missing=$$(for p in $(APT_PACKAGES); do \
@@ -66,6 +66,12 @@ stk-report: stk
 	  $(RETROAA) score $$dir --reference $$dir/reference/off.png --factor 4 --crop $$crop || exit 1; done; done
 	bash $(STK_DIR)/race.sh $(STK) $(RETROAA) cornfield_crossing 320x240 607 8 "$(STK_RACE_METHODS)" out/stk/race \
 	  $(STK_RACE_SCORE)
+
+# What the plugin's own passes cost inside SuperTuxKart, each beside its floor (a pass of the same shape that
+# only moves its bytes), on the report's three tracks at 320x240, 10 timed frames each: out/stk/cost/
+# (<track>/report.md and cost.md, the targets of docs/results.md#what-the-passes-cost met or missed).
+stk-cost: stk
+	bash $(STK_DIR)/cost.sh $(STK) $(RETROAA) out/stk/cost 320x240 10 $(STK_TRACKS)
 
 # The real-engine check (run by .ci/run, not by `make test`): the core methods at 320x240 on an indoor
 # track (silhouettes against geometry: every multi-sample method must beat off's edge PSNR) and on one

@@ -241,7 +241,7 @@ bool isFloor(const std::string& pass) { return pass.size() > 6 && pass.compare(p
 // Each captured pass against its floor, for the methods captured with measure_pass_floors=on.
 std::string floorTable(const nlohmann::json& report) {
   std::ostringstream md;
-  char buffer[256];
+  char buffer[512];
   for (const auto& entry : report) {
     const nlohmann::json& passes = entry["passes_ms"];
     for (const auto& [name, ms] : passes.items()) {
@@ -250,9 +250,14 @@ std::string floorTable(const nlohmann::json& report) {
         md << "\nPasses against their floors (a pass of the same shape that only moves the same bytes, "
               "measure_pass_floors):\n\n| method | pass | ms | floor ms | × floor |\n|---|---|---|---|---|\n";
       const double floor = passes[name + ".floor"].get<double>();
-      std::snprintf(buffer, sizeof buffer, "| `%s` | %s | %.2f | %.2f | %s |\n",
-                    entry["spec"].get<std::string>().c_str(), name.c_str(), ms.get<double>(), floor,
-                    floor > 0 ? std::to_string(ms.get<double>() / floor).substr(0, 4).c_str() : "unmeasured");
+      // A floor the capture could not measure is named with its reason, never a ratio.
+      const nlohmann::json unmeasured = entry.value("passes_unmeasured", nlohmann::json::object());
+      const std::string why = unmeasured.contains(name + ".floor")
+                                  ? "unmeasured: " + unmeasured[name + ".floor"].get<std::string>()
+                                  : "unmeasured";
+      std::snprintf(buffer, sizeof buffer, "| `%s` | %s | %.2f | %s | %s |\n", entry["spec"].get<std::string>().c_str(),
+                    name.c_str(), ms.get<double>(), floor > 0 ? std::to_string(floor).substr(0, 4).c_str() : "–",
+                    floor > 0 ? std::to_string(ms.get<double>() / floor).substr(0, 4).c_str() : why.c_str());
       md << buffer;
     }
   }
@@ -386,6 +391,7 @@ int score(const ScoreOptions& options) {
                             {"wall_ms", wall},
                             {"wall_vs_off", offWall > 0 ? wall / offWall : 0.0},
                             {"passes_ms", r.value("passes", nlohmann::json::object())},
+                            {"passes_unmeasured", r.value("passes_unmeasured", nlohmann::json::object())},
                             {"own_passes_ms", ownMs},
                             {"own_passes_vs_off_wall", offWall > 0 ? ownMs / offWall : 0.0},
                             {"plugin_bytes", r.value("plugin_bytes", 0)},
@@ -408,8 +414,8 @@ int score(const ScoreOptions& options) {
       md << buffer;
     }
     std::snprintf(buffer, sizeof buffer, "%.2f | %.0f | %.2f | %.1f | %.1f (%.2f) | %.1f | %s |\n",
-                  entry["evaluations_per_pixel"].get<double>(), wall, offWall > 0 ? wall / offWall : 0.0, passMs,
-                  ownMs, offWall > 0 ? ownMs / offWall : 0.0, entry["plugin_bytes"].get<double>() / 1048576.0,
+                  entry["evaluations_per_pixel"].get<double>(), wall, offWall > 0 ? wall / offWall : 0.0, passMs, ownMs,
+                  offWall > 0 ? ownMs / offWall : 0.0, entry["plugin_bytes"].get<double>() / 1048576.0,
                   kept.is_null() ? "–" : std::to_string(kept.get<double>()).substr(0, 6).c_str());
     md << buffer;
     for (size_t c = 0; c < options.crops.size(); ++c)

@@ -1,6 +1,5 @@
-// The method registry and the plugin's error contract: a technique added as one file plus one
-// registry row runs through every layer (config, tools, plugin); every error code the headers list is
-// provoked here.
+// The method registry (one const table: every row parses, prints and reaches the tools) and the
+// plugin's error contract: every error code the headers list is provoked here.
 #include "commands.h"
 #include "shared_constants.h"
 #include "technique.h"
@@ -14,47 +13,11 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 using namespace testing_support;
 
 namespace {
-
-// --- A test-only technique: this block and the one registry row below are all it takes. ---------
-// `test-every-pixel` lights every sample of every pixel through the slices with the edge shader's
-// every-pixel detector: it must equal per-sample exactly, which makes it a checkable new method.
-constexpr retroaa::Method kTestMethod = retroaa::Method(200);
-
-class EveryPixelTechnique : public retroaa::Technique {
- public:
-  static retroaa::Result<std::unique_ptr<retroaa::Technique>> create(retroaa::PluginContext& context,
-                                                                     retroaa::SharedTargets& shared) {
-    auto technique = std::make_unique<EveryPixelTechnique>();
-    auto program =
-        context.shaders->program("common/fullscreen.vert", "edge/detect_edges.frag",
-                                 shared.msaa->shaderDefines(context.layout, false) +
-                                     retroaa::defineLine("EDGE_DETECTOR", int(retroaa::EdgeDetector::EveryPixel)) +
-                                     retroaa::defineLine("STENCIL_EXPORT", context.capabilities.stencilExport));
-    if (!program) return program.error();
-    technique->program_ = std::move(program.value());
-    return std::unique_ptr<retroaa::Technique>(std::move(technique));
-  }
-  retroaa::Status afterResolve(retroaa::PluginContext& context, retroaa::SharedTargets& shared,
-                               const retroaa::FrameInfo&) override {
-    return shared.slices->writeMask(context, program_.get(), context.capabilities.stencilExport);
-  }
-  bool keepsObjectsFor(const retroaa::Config&) const override { return true; }
-
- private:
-  retroaa::ShaderProgram program_;
-};
-
-// Registered while the binary starts, before any test reads the registry (which fixes it).
-const bool kTestTechniqueRegistered =
-    retroaa::registerTechnique(retroaa::TechniqueRow::named(kTestMethod, "test-every-pixel", "every sample lit (test)")
-                                   .needsMultisampling()
-                                   .uses(retroaa::kStorageMsaaGBuffer | retroaa::kStorageSlices)
-                                   .createdBy(EveryPixelTechnique::create));
-// -------------------------------------------------------------------------------------------------
 
 void expectError(const retroaa::Error& error, retroaa::ErrorCode code, const std::string& fragment) {
   EXPECT_EQ(error.code, code) << error.message;
@@ -69,33 +32,6 @@ retroaa::Description describedHost(const PatchedHost& host) {
 }
 
 }  // namespace
-
-TEST(Registry, ATechniqueInOneFileAndOneRowRunsThroughEveryLayer) {
-  ASSERT_TRUE(kTestTechniqueRegistered);
-  // Config: parsed, printed and listed by name.
-  retroaa::Config config;
-  ASSERT_TRUE(retroaa::applySetting(config, "method", "test-every-pixel"));
-  EXPECT_EQ(config.method, kTestMethod);
-  EXPECT_STREQ(retroaa::toString(kTestMethod), "test-every-pixel");
-  EXPECT_NE(retroaa::toConfigText(config).find("method=test-every-pixel"), std::string::npos);
-  EXPECT_TRUE(retroaa::usesMsaa(kTestMethod));
-  // The tools' lists.
-  const std::vector<std::string> all = app::expandMethodList("all");
-  EXPECT_NE(std::find(all.begin(), all.end(), "test-every-pixel"), all.end());
-  // The plugin: equal to per-sample, N evaluations per pixel, nothing left behind when switched off.
-  PatchedHost host("default", 64, 48);
-  const int objectsBefore = host.hooks->plugin().stats().glObjectsHeld;
-  const app::DisplayImage perSample = host.render("per-sample");
-  const uint64_t perSampleEvaluations = host.hooks->plugin().waitForStats().lightingEvaluations;
-  const app::DisplayImage mine = host.render("test-every-pixel");
-  const retroaa::Stats stats = host.hooks->plugin().waitForStats();
-  EXPECT_EQ(stats.method, kTestMethod);
-  EXPECT_EQ(mine.rgb, perSample.rgb);
-  EXPECT_EQ(stats.lightingEvaluations, perSampleEvaluations);
-  EXPECT_EQ(stats.lightingEvaluations, uint64_t(64 * 48) * uint64_t(stats.samples));
-  host.render("off");
-  EXPECT_EQ(host.hooks->plugin().stats().glObjectsHeld, objectsBefore);
-}
 
 TEST(Registry, EveryEnumValueHasOneRowAndEveryRowParses) {
   std::set<std::string> names;
@@ -346,7 +282,6 @@ TEST(PluginErrors, AMethodThatFiltersTheDisplayNeedsADisplayTarget) {
   description.layout.displayFramebuffer = description.layout.displayTexture = 0;
   int filtering = 0;
   for (const retroaa::MethodInfo& row : retroaa::methodTable()) {
-    if (row.method == kTestMethod) continue;
     description.config = app::parseMethodSpec(row.name, {}).config;
     auto created = retroaa::Plugin::create(description);
     if (row.filtersDisplay) {
@@ -379,11 +314,5 @@ TEST(PluginErrors, DepthEncodingsOutsideTheirDomainAreInvalid) {
   expectError(created.error(), retroaa::ErrorCode::InvalidLayout, "knee must be a positive number");
 }
 
-TEST(Registry, IsFixedOnceRead) {
-  const size_t rows = retroaa::techniqueRegistry().size();
-  const size_t methods = retroaa::methodTable().size();
-  EXPECT_FALSE(retroaa::registerTechnique(
-      retroaa::TechniqueRow::named(retroaa::Method(uint8_t(kTestMethod) + 1), "test-too-late", "registered late")));
-  EXPECT_EQ(retroaa::techniqueRegistry().size(), rows);
-  EXPECT_EQ(retroaa::methodTable().size(), methods);
-}
+// The registry is a table no call can change: built once, read by every plugin, tool and thread.
+static_assert(std::is_same_v<decltype(retroaa::techniqueRegistry()), const std::vector<retroaa::TechniqueRow>&>);

@@ -409,3 +409,20 @@ TEST(Temporal, AMovingCameraReprojectsTheHistoryOntoTheSameSurfaces) {
   EXPECT_GT(reprojected, inPlace + 1.0) << "in place " << inPlace;
   EXPECT_GT(reprojected, 25.0);
 }
+
+// `+temporal` on every slice method: the composed light of all slices is the frame's light, and the
+// history accumulates it as it does a single slice's (it once ran only on the single-slice path, so a
+// slice method stacked with it jittered without accumulating: below both of its parts). On the still demo
+// frame, after the jitter sequence twice over, each stack's edge PSNR is at least its base's.
+TEST(Temporal, StackedOnEverySliceMethodItIsAtLeastItsBase) {
+  PatchedHost host("default", 96, 72);
+  const ScoringTruth truth = host.scoringTruth(4);
+  for (const char* base : {"edge", "per-sample", "adaptive", "aggregate", "smaa-s2x"}) {
+    const double alone = truth.score(host.render(base)).edgePsnrDb;
+    app::DisplayImage stacked = host.render(std::string(base) + "+temporal");
+    for (int frame = 0; frame < 16; ++frame) stacked = host.render(std::string(base) + "+temporal");
+    const double withHistory = truth.score(stacked).edgePsnrDb;
+    std::printf("%s: edge PSNR %.2f alone, %.2f with +temporal\n", base, alone, withHistory);
+    EXPECT_GE(withHistory, alone - 0.05) << base;
+  }
+}

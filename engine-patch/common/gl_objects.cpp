@@ -1,5 +1,7 @@
 #include "gl_objects.h"
 
+#include "gl_basics.h"
+
 #include <map>
 #include <sstream>
 
@@ -30,18 +32,9 @@ GLuint compile(GLenum stage, const std::string& file, const std::string& defines
   std::string source = expandIncludes(file);
   const size_t versionEnd = source.find('\n');
   if (!defines.empty() && source.rfind("#version", 0) == 0) source.insert(versionEnd + 1, defines);
-  const GLuint shader = glCreateShader(stage);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw std::runtime_error("host shader " + file + " does not compile:\n" + log);
-  }
+  std::string log;
+  const GLuint shader = gl_basics::compileStage(stage, source, log);
+  if (!shader) throw std::runtime_error("host shader " + file + " does not compile:\n" + log);
   return shader;
 }
 
@@ -93,13 +86,7 @@ uint64_t texelBytes(GLenum format) {
 }
 
 Texture makeTexture2D(GLenum internalFormat, int width, int height, const char* label) {
-  GLuint name = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &name);
-  glTextureStorage2D(name, 1, internalFormat, width, height);
-  glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const GLuint name = gl_basics::createTexelTexture2D(internalFormat, width, height);
   glObjectLabel(GL_TEXTURE, name, -1, label);
   return Texture(name);
 }

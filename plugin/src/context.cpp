@@ -1,5 +1,7 @@
 #include "context.h"
 
+#include "gl_basics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -239,12 +241,7 @@ GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, 
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);
     glTextureStorage2DMultisample(name, samples, internalFormat, width, height, GL_TRUE);
   } else {
-    glCreateTextures(GL_TEXTURE_2D, 1, &name);
-    glTextureStorage2D(name, 1, internalFormat, width, height);
-    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    name = gl_basics::createTexelTexture2D(internalFormat, width, height);
   }
   const std::string fullLabel = std::string("retroaa.") + label;
   glObjectLabel(GL_TEXTURE, name, -1, fullLabel.c_str());

@@ -75,9 +75,6 @@ class ScopedPass {
 };
 
 Status checkFramebuffer(GLuint framebuffer, const char* label);
-
-// For a pass that rewrites the host's light target before tonemapping and reads its neighbours: a
-// texture of the light target's format and size, and the copy of the frame's light into it.
 // The HDR scene colour between shade() and the host's tonemap, which a pass before tonemapping filters: the
 // composed target where the layout names one (the callback composes), else the light target.
 inline GLuint sceneColourTexture(const GBufferLayout& layout) {

@@ -5,7 +5,6 @@
 #include "technique.h"
 
 #include <algorithm>
-#include <atomic>
 
 namespace retroaa {
 
@@ -38,16 +37,10 @@ constexpr uint32_t kSliced = kStorageMsaaGBuffer | kStorageSlices;
 // The resolve's keys, which every method on the MSAA G-buffer reads: each renders into it and runs the resolve.
 const std::vector<const char*> kResolveKeys = {"supersample", "resolve_weighting", "resolve_compute", "closeness"};
 
-// Whether anything has read the registry: from then on it is fixed (registerTechnique refuses), so every
-// plugin, tool and thread sees one table.
-std::atomic<bool>& registryRead() {
-  static std::atomic<bool> read{false};
-  return read;
-}
-
-std::vector<TechniqueRow>& rows() {
+// Built once, on first use, and never changed: every plugin, tool and thread reads one table.
+const std::vector<TechniqueRow>& rows() {
   using Row = TechniqueRow;
-  static std::vector<TechniqueRow> table = {
+  static const std::vector<TechniqueRow> table = {
       Row::named(Method::Off, "off", "the host's stock single-sample path; the plugin holds nothing"),
       Row::named(Method::Fxaa, "fxaa", "FXAA 3.11 after tonemapping (FreeSpace Open's -aa_preset 0..2)")
           .uses(kStoragePostTarget)
@@ -135,10 +128,7 @@ std::vector<TechniqueRow>& rows() {
 
 }  // namespace
 
-const std::vector<TechniqueRow>& techniqueRegistry() {
-  registryRead() = true;
-  return rows();
-}
+const std::vector<TechniqueRow>& techniqueRegistry() { return rows(); }
 
 std::vector<const TechniqueRow*> activeTechniqueRows(const Config& config) {
   std::vector<const TechniqueRow*> rows;
@@ -166,14 +156,8 @@ const TechniqueRow* findTechnique(Method method) {
 // Post-process AA needs no samples: the best a context without multisampling can do.
 Method fallbackWithoutMultisampling() { return Method::Fxaa; }
 
-bool registerTechnique(const TechniqueRow& row) {
-  if (registryRead()) return false;
-  rows().push_back(row);
-  return true;
-}
-
 const std::vector<MethodInfo>& methodTable() {
-  static const std::vector<MethodInfo> infos = [] {  // the registry is fixed once read
+  static const std::vector<MethodInfo> infos = [] {
     std::vector<MethodInfo> built;
     for (const TechniqueRow& row : techniqueRegistry()) {
       built.push_back(row.info);

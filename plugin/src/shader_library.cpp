@@ -1,6 +1,7 @@
 #include "shader_library.h"
 
 #include "context.h"
+#include "gl_basics.h"
 #include "retroaa/types.h"
 #include "shared_constants.h"
 
@@ -22,22 +23,6 @@ std::string withDefines(const std::string& source, const std::string& defines) {
   const size_t versionEnd = source.rfind("#version", 0) == 0 ? source.find('\n') : std::string::npos;
   if (versionEnd == std::string::npos) return defines + source;
   return source.substr(0, versionEnd + 1) + defines + "#line 2\n" + source.substr(versionEnd + 1);
-}
-
-// Compiles one stage; on failure returns the info log.
-GLuint compile(GLenum stage, const std::string& source, std::string& log) {
-  const GLuint shader = glCreateShader(stage);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok) return shader;
-  char buffer[4096] = {};
-  glGetShaderInfoLog(shader, sizeof buffer, nullptr, buffer);
-  log = buffer;
-  glDeleteShader(shader);
-  return 0;
 }
 
 bool isSampler(GLenum type) {
@@ -208,7 +193,7 @@ Result<ShaderProgram> ShaderLibrary::link(const std::vector<Stage>& stages, cons
     GLuint shader = 0;
     if (text) {
       const std::string compiled = withDefines(text.value(), sharedConstantDefines() + defines);
-      shader = compile(stage.type, compiled, log);
+      shader = gl_basics::compileStage(stage.type, compiled, log);
       sources += compiled;
     }
     if (!shader) {

@@ -1,5 +1,7 @@
-// A technique: what one method (or one stackable post filter) adds to the shared pieces. Each lives
-// in one file of methods/ and one folder of shaders/, and is one row of the registry (registry.cpp).
+// A technique: what one method (or one stackable post filter) adds to the shared pieces. Each is one
+// row of the registry (registry.cpp) and lives in a file of methods/ with its shaders' folder; related
+// methods share a file (edge.cpp: edge, per-sample and ssaa; smaa.cpp: SMAA 1x and S2x), and `resolve`
+// is the shared resolve itself (pipeline/), with no technique.
 // The plugin owns the shared pieces (MSAA G-buffer, resolve, slices, post target), allocates what
 // the active rows ask for, and calls every active technique at the points below.
 #pragma once
@@ -34,7 +36,7 @@ class Technique {
   // How the slices light this method (techniques whose row asks for slices). Default: 1 / count
   // weights, sample s in slice s.
   virtual SliceRenderer::Plan slicePlan(PluginContext&, SharedTargets&) { return {}; }
-  // After the host's lighting wrote its light target, before its tonemap (single-slice methods).
+  // After the host's lighting wrote its light target (every slice of it composited), before its tonemap.
   virtual Status afterLighting(PluginContext&, SharedTargets&, const FrameInfo&) { return Status::ok(); }
   // After the host's tonemap, on the post target (techniques whose row asks for it).
   virtual Status post(PluginContext&, SharedTargets&, const FrameInfo&) { return Status::ok(); }
@@ -181,8 +183,5 @@ std::vector<const TechniqueRow*> activeTechniqueRows(const Config& config);
 const TechniqueRow* findTechnique(Method method);
 // What a method that needs multisampling becomes on a context without it.
 Method fallbackWithoutMultisampling();
-// Adds a row (tests: a technique that lives in a test file) before anything reads the registry, i.e. during
-// static initialisation; afterwards the registry is fixed and this returns false. Not thread-safe.
-bool registerTechnique(const TechniqueRow& row);
 
 }  // namespace retroaa

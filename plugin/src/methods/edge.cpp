@@ -100,7 +100,7 @@ Result<std::unique_ptr<Technique>> createEdgeTechnique(PluginContext& context, S
 std::vector<Key> edgeKeys() {
   return {
       named("edge_detector", &Config::edgeDetector, kEdgeDetectors,
-            "how `edge` finds pixels to light per sample; free per frame"),
+            "how `edge` finds pixels to light per sample; changing it rebuilds the detector (its program)"),
       number("edge_depth_closeness", &Config::edgeDepthCloseness, 0, 100,
              "c of the depth detector; smaller marks more pixels (slower, closer to per-sample)"),
       number("edge_normal_angle_deg", &Config::edgeNormalAngleDegrees, 0, 180,

@@ -363,7 +363,8 @@ class TemporalTechnique : public Technique {
     program_.set("uShortHistoryBlend", 2.0f / float(jitterLength_ + 1));
     program_.setDepthPlanes(context);
     glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, counters_.get());
-    context.drawFullscreen();  // post()'s state guard gives the host its atomic-counter binding back
+    context.drawFullscreen();  // the public call's state guard (shade()'s before tonemapping, post()'s after) gives the
+                               // host its atomic-counter binding back
     readCounts(context, valid);
     historyIndex_ = next;
     framesAccumulated_ = valid ? framesAccumulated_ + 1 : 1;

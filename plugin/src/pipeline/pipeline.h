@@ -94,7 +94,18 @@ class ResolvePass {
   // write it and it holds no stencil of the host's), which restore() then copies back: two copies instead
   // of a second resolve, and whatever the host drew into its G-buffer since resolve() is kept too.
   void keepForRestore(PluginContext& context, const SliceRenderer& slices);
-  bool computeRequested() const { return computeRequested_; }   // resolve_compute as created
+  bool computeRequested() const { return computeRequested_; }  // resolve_compute as created
+  // Frees what one config's slices asked of the resolve (its counting programs and target, the restore's
+  // kept copies): a new config asks again, so what it holds follows it, not the configs before it.
+  void releaseForNewConfig() {
+    countingPrograms_.clear();
+    countingTarget_ = GlFramebuffer();
+    countingTargetCounts_ = 0;
+    kept_.clear();
+    bytes_ -= keptBytes_;
+    keptBytes_ = 0;
+    keptThisFrame_ = keptDepth_ = false;
+  }
   bool computes() const { return computeProgram_.get() != 0; }  // … and the layout allowed it
   uint64_t bytes() const { return bytes_; }
 
