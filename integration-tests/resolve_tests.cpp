@@ -1,9 +1,8 @@
 // The depth-aware resolve and FXAA through the engine patch, on the demo scenes, against ground truth.
-#include "commands.h"
-#include "gl_state.h"
-#include "test_support.h"
 #include <iterator>
 #include <map>
+#include "commands.h"
+#include "test_support.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -176,87 +175,6 @@ TEST(Plugin, SamplersTheHostLeavesBoundChangeNoImage) {
   glDeleteSamplers(1, &sampler);
 }
 
-TEST(Plugin, EveryCallRestoresTheHostsGlState) {
-  PatchedHost host("default", 64, 48);
-  host.render("off");  // leaves one of the host's (live) programs current
-  retroaa::Plugin& plugin = host.hooks->plugin();
-  const host::HostTargets& targets = host.renderer->targets();
-  GLuint buffers[3] = {};  // the host's own atomic counter, storage and uniform buffers
-  glCreateBuffers(3, buffers);
-  for (GLuint buffer : buffers) glNamedBufferStorage(buffer, 1024, nullptr, 0);
-  // Unusual host state, as a state-caching engine might leave it.
-  glViewport(3, 4, 20, 10);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(1, 2, 3, 4);
-  glEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_EQUAL, 3, 0x0F);
-  glDepthFunc(GL_GEQUAL);
-  glBindTextureUnit(0, targets.color);
-  glBindTextureUnit(7, targets.normal);
-  glActiveTexture(GL_TEXTURE5);
-  glBindImageTexture(3, targets.color, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
-  glPixelStorei(GL_PACK_ALIGNMENT, 8);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
-  glBindBufferRange(GL_ATOMIC_COUNTER_BUFFER, 0, buffers[0], 256, 512);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[1]);
-  glBindBufferRange(GL_UNIFORM_BUFFER, 1, buffers[2], 0, 256);
-  glBindBuffer(GL_UNIFORM_BUFFER, buffers[1]);
-  const retroaa::GlStateSnapshot before = retroaa::GlStateSnapshot::capture();
-  auto expectUnchanged = [&](const std::string& call) {
-    EXPECT_TRUE(retroaa::GlStateSnapshot::capture() == before) << "GL state changed by " << call;
-  };
-  // The compute resolve writes through image units 0..5; edge's slices read their counts back; temporal binds
-  // an atomic counter.
-  for (const char* spec : {"resolve+fxaa@resolve_compute=on", "edge+temporal"}) {
-    retroaa::Config config;
-    ASSERT_TRUE(retroaa::applyMethodSpec(config, spec));
-    ASSERT_TRUE(plugin.reconfigure(config));
-    expectUnchanged(std::string(spec) + ": reconfigure");
-    glBindFramebuffer(GL_FRAMEBUFFER, plugin.geometryFramebuffer());
-    glBindFramebuffer(GL_FRAMEBUFFER, before.drawFramebuffer);
-    retroaa::FrameInfo frame;
-    ASSERT_TRUE(plugin.resolve(frame));
-    expectUnchanged(std::string(spec) + ": resolve");
-    ASSERT_TRUE(plugin.shade([](retroaa::GLuintHandle target) {
-      glBindFramebuffer(GL_FRAMEBUFFER, target);  // the host's lighting changes state as it likes
-      glDisable(GL_BLEND);
-    }));
-    expectUnchanged(std::string(spec) + ": shade");
-    ASSERT_TRUE(plugin.post());
-    expectUnchanged(std::string(spec) + ": post");
-    plugin.stats();
-    expectUnchanged(std::string(spec) + ": stats");
-    plugin.waitForStats();
-    expectUnchanged(std::string(spec) + ": waitForStats");
-    EXPECT_FALSE(plugin.readSliceCounts().empty());
-    expectUnchanged(std::string(spec) + ": readSliceCounts");
-    ASSERT_TRUE(plugin.resize(patch::describeHostGBuffer(targets)));
-    expectUnchanged(std::string(spec) + ": resize");
-  }
-  {
-    retroaa::Description description;
-    description.layout = patch::describeHostGBuffer(targets);
-    ASSERT_TRUE(retroaa::applyMethodSpec(description.config, "edge+temporal"));
-    auto created = retroaa::Plugin::create(description);
-    ASSERT_TRUE(created);
-    expectUnchanged("create");
-  }
-  expectUnchanged("the plugin's destruction");
-  retroaa::Config off;
-  ASSERT_TRUE(plugin.reconfigure(off));
-  before.restore();
-  glBindImageTexture(3, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glDeleteBuffers(3, buffers);  // unbinds them everywhere
-  glDisable(GL_SCISSOR_TEST);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_BLEND);
-  glDepthFunc(GL_LESS);
-}
-
 namespace {
 // The GL state a host may hold that a plugin call could read or change, read with this test's own list of
 // queries (not GlStateSnapshot, which does the restoring): every buffer binding the core profile has a
@@ -288,12 +206,13 @@ std::map<std::string, std::vector<GLint64>> hostGlState() {
   READ(GL_STENCIL_VALUE_MASK), READ(GL_STENCIL_WRITEMASK), READ(GL_STENCIL_FAIL), READ(GL_STENCIL_PASS_DEPTH_PASS);
   READ(GL_STENCIL_BACK_FUNC), READ(GL_STENCIL_BACK_WRITEMASK), READ(GL_CULL_FACE_MODE), READ(GL_FRONT_FACE);
   READ(GL_PACK_ALIGNMENT), READ(GL_UNPACK_ALIGNMENT), READ(GL_PACK_ROW_LENGTH), READ(GL_UNPACK_ROW_LENGTH);
-  READ(GL_POLYGON_MODE), READ(GL_PROVOKING_VERTEX), READ(GL_PRIMITIVE_RESTART_INDEX);
+  READ(GL_POLYGON_MODE), READ(GL_PROVOKING_VERTEX), READ(GL_PRIMITIVE_RESTART_INDEX), READ(GL_BLEND_SRC_RGB);
+  READ(GL_BLEND_DST_RGB);
 #undef READ
-  for (GLenum capability : {GL_BLEND, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_MULTISAMPLE,
-                            GL_SAMPLE_SHADING, GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_POLYGON_OFFSET_FILL,
-                            GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_MASK, GL_PRIMITIVE_RESTART, GL_DEPTH_CLAMP,
-                            GL_DITHER, GL_COLOR_LOGIC_OP})
+  for (GLenum capability :
+       {GL_BLEND, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_MULTISAMPLE, GL_SAMPLE_SHADING,
+        GL_FRAMEBUFFER_SRGB, GL_RASTERIZER_DISCARD, GL_POLYGON_OFFSET_FILL, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_MASK,
+        GL_PRIMITIVE_RESTART, GL_DEPTH_CLAMP, GL_DITHER, GL_COLOR_LOGIC_OP})
     state["enabled " + std::to_string(capability)].push_back(glIsEnabled(capability));
   GLint viewport[4], scissor[4];
   glGetIntegerv(GL_VIEWPORT, viewport);
@@ -317,6 +236,10 @@ std::map<std::string, std::vector<GLint64>> hostGlState() {
   indexed("uniform buffers", GL_UNIFORM_BUFFER_BINDING, 4);
   indexed("storage buffers", GL_SHADER_STORAGE_BUFFER_BINDING, 4);
   indexed("atomic counter buffers", GL_ATOMIC_COUNTER_BUFFER_BINDING, 1);
+  indexed("atomic counter ranges", GL_ATOMIC_COUNTER_BUFFER_START, 1);
+  indexed("atomic counter ranges", GL_ATOMIC_COUNTER_BUFFER_SIZE, 1);
+  indexed("uniform buffer ranges", GL_UNIFORM_BUFFER_START, 4);
+  indexed("uniform buffer ranges", GL_UNIFORM_BUFFER_SIZE, 4);
   indexed("image units", GL_IMAGE_BINDING_NAME, 8);
   GLint active = 0;
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
@@ -351,12 +274,18 @@ TEST(Plugin, EveryPublicCallLeavesTheHostsGlStateAsItsOwnQueriesReadIt) {
   const host::HostTargets& targets = host.renderer->targets();
   retroaa::GBufferLayout layout = patch::describeHostGBuffer(targets);
   layout.drawsForwardPasses = true;
-  GLuint buffers[9] = {};
-  glCreateBuffers(9, buffers);
+  GLuint buffers[12] = {};  // one per plain target, then the host's atomic counter, storage and uniform buffers
+  glCreateBuffers(12, buffers);
   for (GLuint buffer : buffers) glNamedBufferStorage(buffer, 1 << 20, nullptr, GL_DYNAMIC_STORAGE_BIT);
-  const GLenum targetsToBind[] = {GL_PIXEL_PACK_BUFFER,        GL_PIXEL_UNPACK_BUFFER, GL_QUERY_BUFFER,
-                                  GL_DRAW_INDIRECT_BUFFER,     GL_DISPATCH_INDIRECT_BUFFER, GL_COPY_READ_BUFFER,
-                                  GL_COPY_WRITE_BUFFER,        GL_ARRAY_BUFFER,        GL_TEXTURE_BUFFER};
+  const GLenum targetsToBind[] = {GL_PIXEL_PACK_BUFFER,
+                                  GL_PIXEL_UNPACK_BUFFER,
+                                  GL_QUERY_BUFFER,
+                                  GL_DRAW_INDIRECT_BUFFER,
+                                  GL_DISPATCH_INDIRECT_BUFFER,
+                                  GL_COPY_READ_BUFFER,
+                                  GL_COPY_WRITE_BUFFER,
+                                  GL_ARRAY_BUFFER,
+                                  GL_TEXTURE_BUFFER};
   for (size_t i = 0; i < std::size(targetsToBind); ++i) glBindBuffer(targetsToBind[i], buffers[i]);
   glColorMaski(1, GL_FALSE, GL_TRUE, GL_FALSE, GL_TRUE);
   glEnablei(GL_BLEND, 2);
@@ -364,15 +293,34 @@ TEST(Plugin, EveryPublicCallLeavesTheHostsGlStateAsItsOwnQueriesReadIt) {
   glBlendEquationi(4, GL_MAX);
   glPixelStorei(GL_PACK_ROW_LENGTH, 7);
   glEnable(GL_POLYGON_OFFSET_FILL);
+  // Unusual host state, as a state-caching engine might leave it; the host's current program stays current.
   glViewport(3, 4, 20, 10);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(1, 2, 3, 4);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 3, 0x0F);
+  glDepthFunc(GL_GEQUAL);
+  glBindTextureUnit(0, targets.color);
+  glBindTextureUnit(7, targets.normal);
+  glActiveTexture(GL_TEXTURE5);
+  glBindImageTexture(3, targets.color, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+  glPixelStorei(GL_PACK_ALIGNMENT, 8);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+  glBindBufferRange(GL_ATOMIC_COUNTER_BUFFER, 0, buffers[9], 256, 512);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[10]);
+  glBindBufferRange(GL_UNIFORM_BUFFER, 1, buffers[11], 0, 256);
   const auto before = hostGlState();
+  const int errorsBefore = context().debugErrorCount();
   auto expectUnchanged = [&](const std::string& call) {
     EXPECT_EQ(differences(before, hostGlState()), "") << "changed by " << call;
+    EXPECT_EQ(context().debugErrorCount(), errorsBefore) << "a GL error in " << call;
   };
   std::vector<uint8_t> countsWithoutPackBuffer;
-  for (const char* spec : {"edge", "per-sample", "adaptive", "aggregate", "smaa-s2x", "resolve+fxaa@resolve_compute=on",
-                           "resolve+smaa", "reconstruct", "coverage", "temporal", "edge+temporal",
-                           "resolve+reconstruct@reconstruct_compute=on"}) {
+  for (const char* spec :
+       {"edge", "per-sample", "adaptive", "aggregate", "smaa-s2x", "resolve+fxaa@resolve_compute=on", "resolve+smaa",
+        "reconstruct", "coverage", "temporal", "edge+temporal", "resolve+reconstruct@reconstruct_compute=on"}) {
     retroaa::Config config;
     ASSERT_TRUE(retroaa::applyMethodSpec(config, spec));
     config.measureGpuTime = true;
@@ -405,11 +353,30 @@ TEST(Plugin, EveryPublicCallLeavesTheHostsGlStateAsItsOwnQueriesReadIt) {
           << "per-sample counts every sample everywhere";
     }
   }
+  {
+    retroaa::Description description;
+    description.layout = layout;
+    ASSERT_TRUE(retroaa::applyMethodSpec(description.config, "edge+temporal"));
+    auto created = retroaa::Plugin::create(description);
+    ASSERT_TRUE(created);
+    expectUnchanged("create");
+  }
+  expectUnchanged("the plugin's destruction");
   retroaa::Config off;
   ASSERT_TRUE(plugin.reconfigure(off));
   ASSERT_TRUE(plugin.resize(patch::describeHostGBuffer(targets)));
   for (GLenum target : targetsToBind) glBindBuffer(target, 0);
-  glDeleteBuffers(9, buffers);
+  glDeleteBuffers(12, buffers);  // unbinds them everywhere
+  glBindImageTexture(3, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+  glBindTextureUnit(0, 0);
+  glBindTextureUnit(7, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_BLEND);
+  glDepthFunc(GL_LESS);
   glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDisablei(GL_BLEND, 2);
   glBlendFuncSeparatei(3, GL_ONE, GL_ZERO, GL_ONE, GL_ZERO);

@@ -13,7 +13,10 @@ namespace retroaa {
 // Opens a frame's statistics; a frame whose figures came back steers the budget (a frame or two late,
 // which the controller's damping absorbs).
 void Plugin::Impl::beginFrame() {
-  context.statistics->beginFrame();  // reads what came back
+  {
+    GlStateGuard guard;                // the reads go to client memory, not to a host's query buffer
+    context.statistics->beginFrame();  // reads what came back
+  }
   const FrameFigures& measured = context.statistics->latest();
   if (!budget || measured.frame == 0 || measured.frame == budgetFrame) return;
   budgetFrame = measured.frame;
@@ -314,7 +317,10 @@ Stats Plugin::stats() const {
 }
 
 Stats Plugin::waitForStats() {
-  impl_->context.statistics->waitForLastFrame();
+  {
+    GlStateGuard guard;  // the reads go to client memory, not to a host's query buffer
+    impl_->context.statistics->waitForLastFrame();
+  }
   return stats();
 }
 
