@@ -51,7 +51,8 @@ TEST(CoverageFilter, HalfCoveredSilhouettePixelBlendsByItsCoverage) {
     for (int x = 0; x < kWidth; ++x) {
       const int value = out[(y * kWidth + x) * 4];
       if (x == 7)
-        EXPECT_NEAR(value, 130, 3) << "blended half way to the neighbour (covered fraction 1/2)";
+        EXPECT_NEAR(value, 255 * linearToSrgb(0.5f * (srgbToLinear(40 / 255.0f) + srgbToLinear(220 / 255.0f))), 3)
+            << "blended half way to the neighbour (covered fraction 1/2), in linear light";
       else
         EXPECT_EQ(value, x < 8 ? 40 : 220) << x << "," << y;
     }
@@ -62,7 +63,8 @@ TEST(CoverageFilter, QuarterCoverageBlendsAQuarter) {
   CoverageFixture fixture(columns(40, 220, 8));
   // Only the rightmost sample of the pattern (largest x) sees the background.
   const std::vector<uint8_t> out = fixture.filter("(x == 7 && position.x > 0.8) ? 1.0 : 0.5");
-  for (int y = 1; y < kHeight - 1; ++y) EXPECT_NEAR(out[(y * kWidth + 7) * 4], 40 + (220 - 40) / 4, 3);
+  const float quarter = 255 * linearToSrgb(0.75f * srgbToLinear(40 / 255.0f) + 0.25f * srgbToLinear(220 / 255.0f));
+  for (int y = 1; y < kHeight - 1; ++y) EXPECT_NEAR(out[(y * kWidth + 7) * 4], quarter, 3);
 }
 
 TEST(CoverageFilter, FlatInteriorGivesBackTheInputExactly) {

@@ -11,11 +11,9 @@ namespace {
 
 constexpr int kWidth = 16, kHeight = 8;
 
-float toLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-float toDisplay(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 // The display byte of display bytes a and b mixed in linear light, `shareOfA` of a.
 float linearMix(float a, float b, float shareOfA) {
-  return toDisplay(shareOfA * toLinear(a / 255.0f) + (1.0f - shareOfA) * toLinear(b / 255.0f)) * 255.0f;
+  return linearToSrgb(shareOfA * srgbToLinear(a / 255.0f) + (1.0f - shareOfA) * srgbToLinear(b / 255.0f)) * 255.0f;
 }
 
 // Whether any of the plugin's warnings so far contains `text`.

@@ -16,8 +16,6 @@ namespace {
 
 constexpr int kWidth = 96, kHeight = 48;
 
-float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-
 // SMAA's post pass on a display image written by hand (RGBA8, GL rows); returns the filtered display.
 std::vector<uint8_t> smaaOf(const std::vector<uint8_t>& display, retroaa::SmaaQuality quality) {
   SyntheticFrame frame(kWidth, kHeight);

@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -59,6 +60,9 @@ ScoringTruth PatchedHost::scoringTruth(int samplesPerAxis) {
 }
 
 float throughHalf(float value) { return glm::unpackHalf1x16(glm::packHalf1x16(value)); }
+
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float linearToSrgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
 float verticalFovFor(float horizontalFov, int width, int height) {
   return 2.0f * std::atan(std::tan(horizontalFov * 0.5f) * float(height) / float(width));

@@ -24,6 +24,10 @@ host::HeadlessContext& context();
 // `value` as an FP16 target stores it (round to nearest even).
 float throughHalf(float value);
 
+// The sRGB transfer functions (IEC 61966-2-1) on values in [0, 1].
+float srgbToLinear(float c);
+float linearToSrgb(float c);
+
 // Path of a file in integration-tests/ (scenes, fixtures).
 std::string testDataPath(const std::string& relative);
 

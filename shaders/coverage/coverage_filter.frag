@@ -4,11 +4,13 @@
 // its single-sample depth is left exactly as it is. Otherwise the samples that differ lie across an
 // edge: their mean offset from the pixel centre points at the other side, and their share f of the
 // pixel is how much of it the other surface covers. One bilinear tap, f texels towards that side,
-// blends (1 − f) of this pixel with f of its neighbour there.
+// blends (1 − f) of this pixel with f of its neighbour there, in linear light (a coverage is an area:
+// mixing gamma-encoded values darkens every blended edge; common/display_encoding.glsl).
 // The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING and FORWARD_MASK (the host draws forward passes: a
 // pixel on an edge of what they drew, or one whose tap would read a colour they changed otherwise than
 // this pixel's, keeps its colour; the depth here is the opaque surfaces' alone).
 #include "common/depth_buffer.glsl"
+#include "common/display_encoding.glsl"
 layout(binding = 0) uniform sampler2D uInput;        // the display image (linear filtering)
 layout(binding = 1) uniform sampler2D uPixelDepth;   // the host's single-sample depth buffer
 layout(binding = 2) uniform sampler2DMS uSampleDepth;  // multisampled depth of the same frame
@@ -19,6 +21,19 @@ uniform vec2 uTexelSize;
 uniform float uFootprintTan;  // tan(hfov / width)
 uniform float uTolerance;     // c of the Eq. 1 style depth test
 out vec4 outColour;
+
+// uInput's bilinear value at `texel` (pixel units, centres at +0.5), its four texels mixed in linear light.
+vec3 linearLightTap(vec2 texel) {
+  vec2 corner = texel - 0.5;
+  ivec2 base = ivec2(floor(corner));
+  vec2 w = corner - floor(corner);
+  ivec2 last = textureSize(uInput, 0) - 1;
+  vec3 c00 = displayToLinear(texelFetch(uInput, clamp(base, ivec2(0), last), 0).rgb);
+  vec3 c10 = displayToLinear(texelFetch(uInput, clamp(base + ivec2(1, 0), ivec2(0), last), 0).rgb);
+  vec3 c01 = displayToLinear(texelFetch(uInput, clamp(base + ivec2(0, 1), ivec2(0), last), 0).rgb);
+  vec3 c11 = displayToLinear(texelFetch(uInput, clamp(base + ivec2(1, 1), ivec2(0), last), 0).rgb);
+  return linearToDisplay(mix(mix(c00, c10, w.x), mix(c01, c11, w.x), w.y));
+}
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -51,5 +66,5 @@ void main() {
   }
   float covered = float(differing) / float(SAMPLES);
   vec2 towards = offset / longest;  // one texel along the dominant axis
-  outColour = vec4(textureLod(uInput, (vec2(pixel) + 0.5 + towards * covered) * uTexelSize, 0.0).rgb, centre.a);
+  outColour = vec4(linearLightTap(vec2(pixel) + 0.5 + towards * covered), centre.a);
 }

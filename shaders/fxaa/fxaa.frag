@@ -5,8 +5,10 @@
 // 3. search both ways along the edge until the luma gradient changes (FXAA_SEARCH_STEPS steps);
 // 4. blend across the edge by the pixel's distance to the nearer edge end, or by the sub-pixel
 //    aliasing estimate, whichever is larger.
-// Input: the tonemapped display target (gamma-encoded), bilinear sampler. The plugin prepends
-// FXAA_SEARCH_STEPS.
+// Input: the tonemapped display target, bilinear sampler. Luma, which every threshold reads, is
+// perceptual: a display that holds linear light is encoded for it (common/display_encoding.glsl);
+// the blend mixes the values as stored. The plugin prepends FXAA_SEARCH_STEPS and DISPLAY_HOLDS_LINEAR.
+#include "common/display_encoding.glsl"
 layout(binding = 0) uniform sampler2D uInput;
 uniform vec2 uTexelSize;          // 1 / size
 uniform float uEdgeThreshold;     // relative contrast needed (0.063 .. 0.333)
@@ -14,9 +16,10 @@ uniform float uEdgeThresholdMin;  // absolute contrast floor for dark areas
 uniform float uSubpixel;          // sub-pixel aliasing removal, 0 .. 1
 out vec4 outColour;
 
-float luma(vec2 uv) { return dot(textureLod(uInput, uv, 0.0).rgb, vec3(0.299, 0.587, 0.114)); }
+float lumaOf(vec3 stored) { return dot(displayToPerceptual(stored), vec3(0.299, 0.587, 0.114)); }
+float luma(vec2 uv) { return lumaOf(textureLod(uInput, uv, 0.0).rgb); }
 // textureLodOffset needs a constant offset, hence a macro rather than a function.
-#define lumaAt(uv, offset) dot(textureLodOffset(uInput, uv, 0.0, offset).rgb, vec3(0.299, 0.587, 0.114))
+#define lumaAt(uv, offset) lumaOf(textureLodOffset(uInput, uv, 0.0, offset).rgb)
 
 // Search step lengths (in texels) of the quality presets: short steps first, then longer strides.
 float searchStep(int i) {
@@ -27,7 +30,7 @@ float searchStep(int i) {
 void main() {
   vec2 uv = gl_FragCoord.xy * uTexelSize;
   vec4 centre = textureLod(uInput, uv, 0.0);
-  float lumaM = dot(centre.rgb, vec3(0.299, 0.587, 0.114));
+  float lumaM = lumaOf(centre.rgb);
   float lumaN = lumaAt(uv, ivec2(0, 1)), lumaS = lumaAt(uv, ivec2(0, -1));
   float lumaE = lumaAt(uv, ivec2(1, 0)), lumaW = lumaAt(uv, ivec2(-1, 0));
   float lumaMax = max(lumaM, max(max(lumaN, lumaS), max(lumaE, lumaW)));

@@ -12,8 +12,8 @@
 // values darkens every blended edge, 0.8 dB of edge PSNR on the demo.
 // The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING, HAS_NORMALS, PACKED_SAMPLE_NORMALS,
 // SEARCH_RADIUS (rings of pixels, 1: the 3×3 neighbourhood), RADIANCE (run on the HDR light target
-// before tonemapping instead of on the display), LINEAR_INPUT (the display arrives decoded to linear) and
-// LINEAR_DISPLAY (the display holds linear light: read and written as stored) and FORWARD_MASK (the host
+// before tonemapping instead of on the display), LINEAR_INPUT (the display arrives decoded to linear),
+// DISPLAY_HOLDS_LINEAR (common/display_encoding.glsl) and FORWARD_MASK (the host
 // draws forward passes: a pixel they drew keeps its colour and lends it to no sub-sample, since the depth
 // and normals here are the opaque surfaces' alone).
 // reconstruct.frag runs it as a full-screen pass in place, reconstruct.comp (`reconstruct_compute=on`)
@@ -42,15 +42,16 @@ const float kClearMatch = 0.01;    // similarity below this (normals ~56° apart
 // −0.2 dB, heavy lighting −0.3 dB against this).
 const float kFarRingTolerance = 16.0;
 
-#if RADIANCE || LINEAR_INPUT || LINEAR_DISPLAY  // the light target, the display's sRGB view, or a linear display
+#include "common/display_encoding.glsl"
+#if RADIANCE  // linear HDR light, written back so
 vec3 toLinear(vec3 c) { return c; }
-#else
-vec3 toLinear(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c)); }
-#endif
-#if RADIANCE || LINEAR_DISPLAY
 vec3 toDisplay(vec3 c) { return c; }
+#elif LINEAR_INPUT  // the display's sRGB view: the texture unit decodes
+vec3 toLinear(vec3 c) { return c; }
+vec3 toDisplay(vec3 c) { return linearToDisplay(c); }
 #else
-vec3 toDisplay(vec3 c) { return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c)); }
+vec3 toLinear(vec3 c) { return displayToLinear(c); }
+vec3 toDisplay(vec3 c) { return linearToDisplay(c); }
 #endif
 
 struct Geometry {

@@ -10,15 +10,14 @@ vec4 toLinear(vec4 c) {
 #if SMAA_HDR_INPUT
   return c;
 #else
-  return vec4(mix(c.rgb / 12.92, pow((c.rgb + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c.rgb)), c.a);
+  return vec4(displayToLinear(c.rgb), c.a);
 #endif
 }
 vec4 fromLinear(vec4 c) {
 #if SMAA_HDR_INPUT
   return c;
 #else
-  c.rgb = clamp(c.rgb, 0.0, 1.0);
-  return vec4(mix(c.rgb * 12.92, 1.055 * pow(c.rgb, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c.rgb)), c.a);
+  return vec4(linearToDisplay(c.rgb), c.a);
 #endif
 }
 vec4 colourAt(ivec2 p) { return toLinear(texelFetch(uInput, clamp(p, ivec2(0), ivec2(uMetrics.zw) - 1), 0)); }

@@ -7,14 +7,16 @@ uniform vec4 uMetrics;  // 1 / width, 1 / height, width, height
 
 // SMAA_HDR_INPUT: the input is linear HDR light (S2x runs before the host's tonemap), so the edge
 // thresholds see it through a perceptual stand-in for a tonemap, and blending needs no decoding.
-// Otherwise the input is the tonemapped, sRGB-encoded display: thresholds on it as stored, blending
-// in linear light (decoded), as the reference does through sRGB views.
+// Otherwise the input is the tonemapped display: thresholds on its perceptual (gamma-encoded) values,
+// blending in linear light, as the reference does through sRGB views (common/display_encoding.glsl: a
+// display that holds linear light is encoded for the thresholds and blended as stored).
+#include "common/display_encoding.glsl"
 vec3 perceptual(vec3 c) {
 #if SMAA_HDR_INPUT
   if (any(isnan(c)) || any(isinf(c))) return vec3(1.0);  // a broken light value is bright, not an edge-eater
   c = max(c, vec3(0.0));
   return sqrt(c / (1.0 + c));
 #else
-  return c;
+  return displayToPerceptual(c);
 #endif
 }

@@ -7,10 +7,11 @@
 // Writes the pixel (location 0) and the new history (location 1: linear colour, view depth in w).
 //
 // Defines: LINEAR_INPUT (the display is read through its sRGB view, which the texture unit decodes, so
-// the output is encoded again), HAS_VELOCITY (the layout's velocity attachment: geometry follows it
+// the output is encoded again), DISPLAY_HOLDS_LINEAR (common/display_encoding.glsl), HAS_VELOCITY (the layout's velocity attachment: geometry follows it
 // instead of the camera, so objects that move on their own keep their history), MAX_MOVING_OBJECTS and
 // the depth buffer's encoding. The history always holds linear colour.
 #include "common/depth_buffer.glsl"
+#include "common/display_encoding.glsl"
 
 layout(binding = 0) uniform sampler2D uInput;    // a copy of this frame (display or light target)
 layout(binding = 1) uniform sampler2D uHistory;  // the previous output; w the view depth (m), -1 sky
@@ -55,15 +56,16 @@ const float kStillClipGamma = 2.0, kMovingClipGamma = 1.0;
 // ramps over 1 and 2 px; with these, at most 0.8 (retroaa regress; docs/methods/temporal.md).
 const float kMotionForTightClip = 0.25, kMotionForFullBlend = 0.5;
 
-vec3 encode(vec3 c) {
+// This frame's input as linear light, and the output as the target stores it. LINEAR_INPUT: the display's
+// sRGB view, which the texture unit decodes, and a target written without GL_FRAMEBUFFER_SRGB. Otherwise
+// as common/display_encoding.glsl says (before the tonemap the plugin defines DISPLAY_HOLDS_LINEAR: light).
 #if LINEAR_INPUT
-  // The display target is written without GL_FRAMEBUFFER_SRGB: encode by hand (IEC 61966-2-1).
-  c = clamp(c, 0.0, 1.0);
-  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+vec3 inputToLinear(vec3 c) { return c; }
+vec3 encode(vec3 c) { return srgbEncode(c); }
 #else
-  return c;
+vec3 inputToLinear(vec3 c) { return displayToLinear(c); }
+vec3 encode(vec3 c) { return linearToDisplay(c); }
 #endif
-}
 
 vec3 toYCoCg(vec3 c) {
   return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
@@ -91,7 +93,8 @@ float lanczos2(float x) {
   float px = 3.14159265 * x;
   return 2.0 * sin(px) * sin(0.5 * px) / (px * px);
 }
-vec3 lanczos(sampler2D image, vec2 uv) {
+// `fromInput`: the image is uInput, read as linear light (inputToLinear); the history is stored so.
+vec3 lanczos(sampler2D image, vec2 uv, bool fromInput) {
   ivec2 size = textureSize(image, 0);
   vec2 position = uv * vec2(size) - 0.5;  // in texel centres
   ivec2 first = ivec2(floor(position)) - 1;
@@ -101,6 +104,7 @@ vec3 lanczos(sampler2D image, vec2 uv) {
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 4; ++x) {
       vec3 c = texelFetch(image, clamp(first + ivec2(x, y), ivec2(0), size - 1), 0).rgb;
+      if (fromInput) c = inputToLinear(c);
       float w = lanczos2(float(x - 1) - f.x) * lanczos2(float(y - 1) - f.y);
       sum += c * w;
       weight += w;
@@ -147,11 +151,11 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   ivec2 last = textureSize(uInput, 0) - 1;
   // This frame's 3×3 neighbourhood: the clip box's moments.
-  vec3 current = texelFetch(uInput, pixel, 0).rgb;
+  vec3 current = inputToLinear(texelFetch(uInput, pixel, 0).rgb);
   vec3 mean = vec3(0.0), squares = vec3(0.0), lowest = vec3(1e30), highest = vec3(-1e30);
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x) {
-      vec3 c = toYCoCg(compress(max(texelFetch(uInput, clamp(pixel + ivec2(x, y), ivec2(0), last), 0).rgb, vec3(0.0))));
+      vec3 c = toYCoCg(compress(max(inputToLinear(texelFetch(uInput, clamp(pixel + ivec2(x, y), ivec2(0), last), 0).rgb), vec3(0.0))));
       mean += c;
       squares += c * c;
       lowest = min(lowest, c);
@@ -207,9 +211,9 @@ void main() {
   bool usable = uHistoryValid > 0.5 && previousClip.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0))) &&
                 all(lessThanEqual(previousUv, vec2(1.0))) && !disoccluded(previousUv, expectedDepth);
   if (uHistoryValid > 0.5 && !usable) atomicCounterIncrement(uShortHistory);
-  if (!usable && accumulating) result = lanczos(uInput, centreUv);
+  if (!usable && accumulating) result = lanczos(uInput, centreUv, true);
   if (usable) {
-    vec3 history = lanczos(uHistory, previousUv);
+    vec3 history = lanczos(uHistory, previousUv, false);
     if (finite3(history)) {
       // Clip towards the box's centre (Salvi), not per channel: keeps the history's hue.
       vec3 h = toYCoCg(compress(history));
@@ -240,7 +244,7 @@ void main() {
       // or full alike (edge 24.3, 24.5 against 23.8).
       float centring = 0.5 * clamp(motion / kMotionForFullBlend, 0.0, 1.0);
       // (A still view reprojects to within rounding of the pixel: no resampling below a hundredth of a pixel.)
-      vec3 arriving = centring > 0.01 && accumulating ? mix(current, lanczos(uInput, centreUv), centring) : current;
+      vec3 arriving = centring > 0.01 && accumulating ? mix(current, lanczos(uInput, centreUv, true), centring) : current;
       float weighting = clamp(motion, 0.0, 1.0);
       float currentWeight = blend / (1.0 + weighting * lumaOf(arriving));
       float historyWeight = (1.0 - blend) / (1.0 + weighting * lumaOf(clipped));

@@ -22,7 +22,7 @@ class CoverageTechnique : public SampleGeometryTechnique {
     auto program = context.shaders->program(
         "common/fullscreen.vert", "coverage/coverage_filter.frag",
         defineLine("SAMPLES", technique->geometry_.samples) + depthEncodingDefines(context.layout) +
-            technique->forwardMaskDefine(context.layout, true),
+            shared.post->encodingDefine() + technique->forwardMaskDefine(context.layout, true),
         {"uSamplePositions", "uTexelSize", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance", "uInput",
          "uPixelDepth", "uSampleDepth", "uForwardDrawn"});
     if (!program) return program.error();

@@ -21,11 +21,12 @@ int searchSteps(FxaaQuality quality) {
 
 class FxaaTechnique : public Technique {
  public:
-  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets&) {
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
     auto technique = std::make_unique<FxaaTechnique>();
     technique->quality_ = context.config.fxaaQuality;
     auto program = context.shaders->program(
-        "common/fullscreen.vert", "fxaa/fxaa.frag", defineLine("FXAA_SEARCH_STEPS", searchSteps(technique->quality_)),
+        "common/fullscreen.vert", "fxaa/fxaa.frag",
+        defineLine("FXAA_SEARCH_STEPS", searchSteps(technique->quality_)) + shared.post->encodingDefine(),
         {"uTexelSize", "uEdgeThreshold", "uEdgeThresholdMin", "uSubpixel", "uInput"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());

@@ -47,7 +47,7 @@ class ReconstructTechnique : public SampleGeometryTechnique {
                                 defineLine("HAS_NORMALS", t.geometry_.normal != 0) +
                                 defineLine("PACKED_SAMPLE_NORMALS", t.geometry_.packedNormals) +
                                 defineLine("RADIANCE", t.beforeTonemap_) + defineLine("LINEAR_INPUT", t.linearInput_) +
-                                defineLine("LINEAR_DISPLAY", !t.beforeTonemap_ && shared.post->holdsLinearValues()) +
+                                (t.beforeTonemap_ ? std::string() : shared.post->encodingDefine()) +
                                 defineLine("SEARCH_RADIUS", t.searchRadius_) +
                                 t.forwardMaskDefine(layout, !t.beforeTonemap_);  // before tonemapping: before them
     auto program = t.compute_ ? context.shaders->computeProgram("reconstruct/reconstruct.comp", defines, kUniforms)

@@ -85,7 +85,9 @@ SmaaPreset presetFor(SmaaQuality quality) {
 // or, for S2x, a slice's linear HDR light.
 class SmaaPasses {
  public:
-  static Result<SmaaPasses> create(PluginContext& context, bool hdrInput, const char* label) {
+  // `displayEncoding`: PostTarget::encodingDefine() for the display; empty for HDR input.
+  static Result<SmaaPasses> create(PluginContext& context, bool hdrInput, const std::string& displayEncoding,
+                                   const char* label) {
     SmaaPasses p;
     const GBufferLayout& layout = context.layout;
     p.quality_ = context.config.smaaQuality;
@@ -121,7 +123,7 @@ class SmaaPasses {
     const SmaaPreset preset = presetFor(p.quality_);
     char threshold[48];
     std::snprintf(threshold, sizeof threshold, "#define SMAA_THRESHOLD %.9g\n", double(preset.threshold));
-    const std::string common = defineLine("SMAA_HDR_INPUT", hdrInput);
+    const std::string common = defineLine("SMAA_HDR_INPUT", hdrInput) + displayEncoding;
     const bool depth = p.detection_ == SmaaEdgeDetection::Depth;
     const std::string edgeDefines = common + threshold + defineLine("SMAA_EDGE_MODE", int(p.detection_)) +
                                     (depth ? depthEncodingDefines(layout) : std::string());
@@ -209,8 +211,8 @@ class SmaaPasses {
 // SMAA 1x on the display target, after tonemapping.
 class SmaaTechnique : public Technique {
  public:
-  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets&) {
-    auto passes = SmaaPasses::create(context, /*hdrInput=*/false, "smaa");
+  static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
+    auto passes = SmaaPasses::create(context, /*hdrInput=*/false, shared.post->encodingDefine(), "smaa");
     if (!passes) return passes.error();
     auto technique = std::make_unique<SmaaTechnique>();
     technique->passes_ = std::move(passes.value());
@@ -239,7 +241,7 @@ class SmaaS2xTechnique : public Technique {
   static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
     auto technique = std::make_unique<SmaaS2xTechnique>();
     SmaaS2xTechnique& t = *technique;
-    auto passes = SmaaPasses::create(context, /*hdrInput=*/true, "smaa_s2x");
+    auto passes = SmaaPasses::create(context, /*hdrInput=*/true, std::string(), "smaa_s2x");
     if (!passes) return passes.error();
     t.passes_ = std::move(passes.value());
     t.stencilExport_ = context.capabilities.stencilExport;

@@ -163,6 +163,7 @@ class TemporalTechnique : public Technique {
     auto program = context.shaders->program(
         "common/fullscreen.vert", "temporal/temporal.frag",
         depthEncodingDefines(layout) + defineLine("LINEAR_INPUT", t.linearInput_) +
+            (t.beforeTonemap_ ? defineLine("DISPLAY_HOLDS_LINEAR", true) : shared.post->encodingDefine()) +
             defineLine("HAS_VELOCITY", layout.velocityAttachment >= 0) + "#define MAX_MOVING_OBJECTS " +
             std::to_string(kMaxMovingObjects) + "\n",
         {RETROAA_DEPTH_BUFFER_UNIFORMS, "uViewToPreviousClip", "uProjection", "uClipWPerViewZ", "uBlend",

@@ -1,6 +1,8 @@
 // The post passes' render target: they read the host's display texture and write a copy of it.
 #include "pipeline.h"
 
+#include "../shared_constants.h"
+
 namespace retroaa {
 
 Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
@@ -47,6 +49,8 @@ Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
   return target;
 }
 
+std::string PostTarget::encodingDefine() const { return defineLine("DISPLAY_HOLDS_LINEAR", linearValues_); }
+
 void PostTarget::bindAsOutput(const PluginContext& context) const { context.beginFullscreenPass(framebuffer_.get()); }
 
 void PostTarget::begin(const GBufferLayout& layout) const {
@@ -64,9 +68,13 @@ void PostTarget::bindInput(const GBufferLayout& layout, const ShaderProgram& pro
   glBindSampler(GLuint(unit), linear_.get());
 }
 
-void PostTarget::copyBack(const GBufferLayout& layout) const { copyLayoutTexture(layout, output_.get(), input(layout)); }
+void PostTarget::copyBack(const GBufferLayout& layout) const {
+  copyLayoutTexture(layout, output_.get(), input(layout));
+}
 
-void PostTarget::copyInputAside(const GBufferLayout& layout) const { copyLayoutTexture(layout, input(layout), output_.get()); }
+void PostTarget::copyInputAside(const GBufferLayout& layout) const {
+  copyLayoutTexture(layout, input(layout), output_.get());
+}
 
 void PostTarget::beginInPlace(const PluginContext& context) const {
   copyInputAside(context.layout);
