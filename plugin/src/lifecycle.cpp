@@ -282,14 +282,17 @@ Status Plugin::Impl::allocate(bool rebuildAll) {
   }
   if (!(storage & kStorageSlices)) slices.reset();
   if (resolvePass && resolvePass->computeRequested() != config.resolveCompute) resolvePass.reset();
-  if (resolvePass) resolvePass->releaseForNewConfig();
   if (rebuildAll || !(storage & kStoragePostTarget)) postTarget.reset();
   if (rebuildAll) forwardMask.reset();
   std::vector<ActiveTechnique> kept;
+  const size_t previousCount = techniques.size();
   for (ActiveTechnique& active : techniques)
     if (std::find(rows.begin(), rows.end(), active.row) != rows.end() && active.technique->keepsObjectsFor(config))
       kept.push_back(std::move(active));
   techniques.clear();  // what is not kept is freed before anything new is allocated
+  // What the resolve holds for the techniques (counting programs, kept copies) follows them: freed when one
+  // is added, dropped or rebuilt, kept across a change of per-frame keys alone.
+  if (resolvePass && (kept.size() != previousCount || kept.size() != rows.size())) resolvePass->releaseForNewConfig();
 
   if (needMsaa && !msaa) {
     auto created = MsaaGBuffer::create(context, config.samples, config.supersample);
