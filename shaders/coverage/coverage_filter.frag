@@ -6,7 +6,7 @@
 // pixel is how much of it the other surface covers. One bilinear tap, f texels towards that side,
 // blends (1 − f) of this pixel with f of its neighbour there, in linear light (a coverage is an area:
 // mixing gamma-encoded values darkens every blended edge; common/display_encoding.glsl).
-// The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING and FORWARD_MASK (the host draws forward passes: a
+// The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, DISPLAY_HOLDS_LINEAR, LIT_PER_SAMPLE and FORWARD_MASK (the host draws forward passes: a
 // pixel on an edge of what they drew, or one whose tap would read a colour they changed otherwise than
 // this pixel's, keeps its colour; the depth here is the opaque surfaces' alone).
 #include "common/depth_buffer.glsl"
@@ -16,6 +16,8 @@ layout(binding = 1) uniform sampler2D uPixelDepth;   // the host's single-sample
 layout(binding = 2) uniform sampler2DMS uSampleDepth;  // multisampled depth of the same frame
 #define FORWARD_MASK_BINDING 3
 #include "common/forward_mask.glsl"
+#define LIT_PER_SAMPLE_BINDING 4
+#include "common/lit_per_sample.glsl"
 uniform vec2 uSamplePositions[SAMPLES];
 uniform vec2 uTexelSize;
 uniform float uFootprintTan;  // tan(hfov / width)
@@ -60,8 +62,9 @@ void main() {
   bool underFilm = underForwardFilm(pixel);
   bool forward = forwardEdge(pixel) || !lendsColour(pixel + ivec2(side.x, 0), underFilm) ||
                  !lendsColour(pixel + ivec2(0, side.y), underFilm) || !lendsColour(pixel + side, underFilm);
-  if (differing == 0 || longest < 1e-6 || forward) {
-    outColour = centre;  // interior, a symmetric crossing with no side to blend towards, or a forward pass's
+  if (differing == 0 || longest < 1e-6 || forward || litPerSample(pixel)) {
+    // interior, a symmetric crossing with no side to blend towards, a forward pass's, or lit per sample
+    outColour = centre;
     return;
   }
   float covered = float(differing) / float(SAMPLES);

@@ -160,8 +160,9 @@ struct GBufferLayout {
   // needs it without one is refused with InvalidLayout naming the method).
   GLuintHandle displayFramebuffer = 0, displayTexture = 0;
   // What the display's stored values are (an sRGB-format display is always DisplayEncoded: the format
-  // says so). The post passes that average colours (reconstruct, temporal after tonemapping) decode
-  // DisplayEncoded values to linear light first; Linear values they average as stored.
+  // says so). Every post pass that mixes colours (smaa, coverage, reconstruct, temporal after tonemapping)
+  // decodes DisplayEncoded values to linear light first and mixes Linear values as stored; every one that
+  // thresholds contrast (smaa's and fxaa's edges) sees Linear values sRGB-encoded.
   DisplayEncoding displayEncoding = DisplayEncoding::DisplayEncoded;
 };
 

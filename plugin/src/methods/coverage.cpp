@@ -19,12 +19,14 @@ class CoverageTechnique : public SampleGeometryTechnique {
     auto technique = std::make_unique<CoverageTechnique>();
     if (Status status = technique->createGeometry(context, shared, Method::Coverage, false, "coverage"); !status)
       return status.error();
+    technique->litPerSample_ = shared.slices != nullptr;
     auto program = context.shaders->program(
         "common/fullscreen.vert", "coverage/coverage_filter.frag",
         defineLine("SAMPLES", technique->geometry_.samples) + depthEncodingDefines(context.layout) +
-            shared.post->encodingDefine() + technique->forwardMaskDefine(context.layout, true),
+            shared.post->encodingDefine() + defineLine("LIT_PER_SAMPLE", technique->litPerSample_) +
+            technique->forwardMaskDefine(context.layout, true),
         {"uSamplePositions", "uTexelSize", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance", "uInput",
-         "uPixelDepth", "uSampleDepth", "uForwardDrawn"});
+         "uPixelDepth", "uSampleDepth", "uForwardDrawn", "uSliceCounts"});
     if (!program) return program.error();
     technique->program_ = std::move(program.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -39,6 +41,7 @@ class CoverageTechnique : public SampleGeometryTechnique {
     program_.bindTexture("uPixelDepth", layout.depthStencilTexture);
     program_.bindTexture("uSampleDepth", geometry_.depth);
     bindForwardMask(program_, shared);
+    if (litPerSample_) program_.bindTexture("uSliceCounts", shared.slices->counts());
     program_.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
     program_.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
     program_.setDepthPlanes(context);
@@ -49,8 +52,15 @@ class CoverageTechnique : public SampleGeometryTechnique {
     return Status::ok();
   }
 
+  bool keepsObjectsFor(const Config& config) const override {
+    const TechniqueRow* base = findTechnique(config.method);
+    return SampleGeometryTechnique::keepsObjectsFor(config) &&
+           litPerSample_ == (base && (base->storage & kStorageSlices));
+  }
+
  private:
   ShaderProgram program_;
+  bool litPerSample_ = false;  // over a slice method: the pixels it lit per sample pass through
 };
 
 }  // namespace
