@@ -56,13 +56,8 @@ std::vector<float> filtered(const std::string& spec, retroaa::DisplayEncoding en
   description.layout = patch::describeHostGBuffer(t);
   description.layout.normalsInViewSpace = true;
   description.layout.displayEncoding = encoding;
-  GLuint display = 0, framebuffer = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &display);
-  glTextureStorage2D(display, 1, GL_RGBA16F, kWidth, kHeight);
-  glCreateFramebuffers(1, &framebuffer);
-  glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, display, 0);
-  description.layout.displayTexture = display;
-  description.layout.displayFramebuffer = framebuffer;
+  const StandInDisplay display(GL_RGBA16F, kWidth, kHeight);
+  display.describeIn(description.layout);
   std::vector<uint32_t> depth(size_t(kWidth) * kHeight);
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x)
@@ -78,16 +73,14 @@ std::vector<float> filtered(const std::string& spec, retroaa::DisplayEncoding en
     auto plugin = retroaa::Plugin::create(description);
     EXPECT_TRUE(plugin) << spec << ": " << plugin.error().message;
     for (size_t f = 0; plugin && f < frames.size(); ++f) {
-      glTextureSubImage2D(display, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, frames[f].data());
+      glTextureSubImage2D(display.texture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, frames[f].data());
       if (plugin.value()->prepassFramebuffer())
         writePerSample(plugin.value()->prepassFramebuffer(), kWidth, kHeight, kSampleDepths);
       EXPECT_TRUE(plugin.value()->resolve(frameInfo)) << spec;
       EXPECT_TRUE(plugin.value()->post()) << spec;
     }
   }
-  glGetTextureImage(display, 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
-  glDeleteFramebuffers(1, &framebuffer);
-  glDeleteTextures(1, &display);
+  glGetTextureImage(display.texture, 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << spec;
   return out;
 }

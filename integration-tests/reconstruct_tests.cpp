@@ -27,7 +27,8 @@ bool warned(const retroaa::Plugin& plugin, const std::string& text) {
 // The display is the host's RGBA8 texture, or one of `displayFormat` in its place.
 struct ReconstructFixture {
   SyntheticFrame frame{kWidth, kHeight};
-  GLuint display = 0, displayFramebuffer = 0;  // only for a display of another format
+  std::unique_ptr<StandInDisplay> standIn;  // only for a display of another format
+  GLuint display = 0;                       // the host's, or standIn's
   std::unique_ptr<retroaa::Plugin> plugin;
 
   ReconstructFixture(const std::vector<uint8_t>& pixels, const std::vector<float>& pixelDepth, float tolerance = 2.0f,
@@ -46,12 +47,9 @@ struct ReconstructFixture {
     description.layout.displayEncoding = displayEncoding;
     display = t.displayTexture;
     if (displayFormat != GL_RGBA8) {
-      glCreateTextures(GL_TEXTURE_2D, 1, &display);
-      glTextureStorage2D(display, 1, displayFormat, kWidth, kHeight);
-      glCreateFramebuffers(1, &displayFramebuffer);
-      glNamedFramebufferTexture(displayFramebuffer, GL_COLOR_ATTACHMENT0, display, 0);
-      description.layout.displayTexture = display;
-      description.layout.displayFramebuffer = displayFramebuffer;
+      standIn = std::make_unique<StandInDisplay>(displayFormat, kWidth, kHeight);
+      standIn->describeIn(description.layout);
+      display = standIn->texture;
     }
     auto created = retroaa::Plugin::create(description);
     if (!created) throw std::runtime_error(created.error().message);
@@ -63,13 +61,7 @@ struct ReconstructFixture {
     const std::vector<glm::vec4> normals(kWidth * kHeight, glm::vec4(0, 0, 1, 0.5f));
     glTextureSubImage2D(t.normal, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, normals.data());
   }
-  ~ReconstructFixture() {
-    plugin.reset();
-    if (displayFramebuffer) {
-      glDeleteFramebuffers(1, &displayFramebuffer);
-      glDeleteTextures(1, &display);
-    }
-  }
+  ~ReconstructFixture() { plugin.reset(); }                      // before the display it filters
   void setPixelNormals(const std::vector<glm::vec4>& normals) {  // the host's, (x, y, z, gloss) per pixel
     glTextureSubImage2D(frame.renderer->targets().normal, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, normals.data());
   }

@@ -195,13 +195,9 @@ TEST(PostFilters, AnSrgbDisplayTextureIsFilteredByteForByteLikeAnRgba8One) {
       retroaa::Description description;
       description.config = app::parseMethodSpec(method, {}).config;
       description.layout = patch::describeHostGBuffer(frame.renderer->targets());
-      GLuint display = 0, framebuffer = 0;
-      glCreateTextures(GL_TEXTURE_2D, 1, &display);
-      glTextureStorage2D(display, 1, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, kWidth, kHeight);
-      glCreateFramebuffers(1, &framebuffer);
-      glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, display, 0);
-      description.layout.displayTexture = display;
-      description.layout.displayFramebuffer = framebuffer;
+      const StandInDisplay standIn(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, kWidth, kHeight);
+      standIn.describeIn(description.layout);
+      const GLuint display = standIn.texture;
       glTextureSubImage2D(display, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
       {
         auto plugin = retroaa::Plugin::create(description);
@@ -210,8 +206,6 @@ TEST(PostFilters, AnSrgbDisplayTextureIsFilteredByteForByteLikeAnRgba8One) {
       }
       filtered[srgb].resize(image.size());
       glGetTextureImage(display, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(image.size()), filtered[srgb].data());
-      glDeleteFramebuffers(1, &framebuffer);
-      glDeleteTextures(1, &display);
       EXPECT_NE(filtered[srgb], image) << method << (srgb ? " sRGB" : " RGBA8") << ": the edge was filtered";
     }
     EXPECT_EQ(filtered[1], filtered[0]) << method;

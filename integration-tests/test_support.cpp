@@ -162,6 +162,23 @@ std::vector<uint8_t> runPrepassFilter(retroaa::Plugin& plugin, GLuint displayTex
   return out;
 }
 
+StandInDisplay::StandInDisplay(GLenum format, int width, int height) {
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, format, width, height);
+  glCreateFramebuffers(1, &framebuffer);
+  glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, texture, 0);
+}
+
+StandInDisplay::~StandInDisplay() {
+  glDeleteFramebuffers(1, &framebuffer);
+  glDeleteTextures(1, &texture);
+}
+
+void StandInDisplay::describeIn(retroaa::GBufferLayout& layout) const {
+  layout.displayTexture = texture;
+  layout.displayFramebuffer = framebuffer;
+}
+
 int fillGeometry(retroaa::Plugin& plugin, int width, int height,
                  const std::vector<std::vector<SyntheticSample>>& pixels) {
   const int n = plugin.stats().samples;

@@ -95,6 +95,17 @@ std::vector<uint8_t> runPrepassFilter(retroaa::Plugin& plugin, GLuint displayTex
 // `irradiance`, a GLSL float expression that may use gl_FragCoord.
 void albedoAsLight(GLuint colorTexture, GLuint target, int width, int height, const std::string& irradiance = "1.0");
 
+// A display texture of `format` (and a framebuffer with it as colour 0) that a test names in a layout in place
+// of the host's RGBA8 one; freed with it.
+struct StandInDisplay {
+  GLuint texture = 0, framebuffer = 0;
+  StandInDisplay(GLenum format, int width, int height);
+  ~StandInDisplay();
+  StandInDisplay(const StandInDisplay&) = delete;
+  StandInDisplay& operator=(const StandInDisplay&) = delete;
+  void describeIn(retroaa::GBufferLayout& layout) const;  // displayTexture and displayFramebuffer
+};
+
 // A host with no scene objects whose G-buffer the tests write by hand: runs one frame of a method on
 // hand-written samples, lit by `albedoAsLight`.
 struct SyntheticFrame {
