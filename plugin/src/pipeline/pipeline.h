@@ -339,10 +339,9 @@ class PostTarget {
   // The copy read as linear light: its sRGB view, which the texture unit decodes (cheaper than pow in a
   // shader); 0 where the display's format has no sRGB twin or the layout says it holds linear values.
   GLuint linearCopyOfInput() const { return linearView_.get(); }
-  // The display holds linear light (GBufferLayout::displayEncoding Linear, not an sRGB format): a pass mixes
-  // its values as stored and thresholds them encoded. DISPLAY_HOLDS_LINEAR for common/display_encoding.glsl,
-  // which every pass that mixes or thresholds the display's colours includes.
-  bool holdsLinearValues() const { return linearValues_; }
+  // DISPLAY_HOLDS_LINEAR for common/display_encoding.glsl, which every pass that mixes or thresholds the
+  // display's colours includes: whether the display holds linear light (GBufferLayout::displayEncoding Linear,
+  // not an sRGB format), which a pass mixes as stored and thresholds encoded.
   std::string encodingDefine() const;
   uint64_t bytes() const { return bytes_; }
 
