@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <malloc.h>
 #include <unistd.h>
 #include <algorithm>
 #include <cmath>
@@ -486,6 +487,10 @@ double residentMiB() {
   statm >> pages >> resident;
   return resident * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
+
+// What malloc has handed out and not had back: beside the resident figure, it tells live allocations
+// (ours, or the driver's through malloc) from freed memory the heap keeps and the driver's own mappings.
+double heapInUseMiB() { return double(mallinfo2().uordblks) / (1024.0 * 1024.0); }
 }  // namespace
 
 int runSoak(const SoakOptions& options) {
@@ -520,7 +525,8 @@ int runSoak(const SoakOptions& options) {
     // The settings above repeat every 4200 frames (their periods' least common multiple, with the sizes'): a
     // cache that fills while new combinations come (the driver's shader variants) flattens after one period,
     // a leak does not.
-    if ((frame + 1) % 1050 == 0) std::printf("soak: frame %d, resident %.1f MiB\n", frame + 1, residentMiB());
+    if ((frame + 1) % 1050 == 0) std::printf("soak: frame %d, resident %.1f MiB, heap in use %.2f MiB\n", frame + 1, residentMiB(),
+                  heapInUseMiB());
   }
   session.renderer->resize(options.width, options.height);
   session.configure(retroaa::Config{});

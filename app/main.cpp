@@ -286,7 +286,7 @@ int main(int argc, char** argv) {
       if (sub->parsed()) return run(config);
     return app::kExitBadInput;
   } catch (const host::SceneError& e) {
-    std::fprintf(stderr, "retroaa: bad scene: %s\n", e.what());
+    std::fprintf(stderr, "retroaa: bad input file: %s\n", e.what());
     return app::kExitBadInput;
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "retroaa: %s\n", e.what());

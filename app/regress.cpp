@@ -4,6 +4,7 @@
 #include "scatter_svg.h"
 
 #include "commands.h"
+#include "bounded_json.h"
 #include "ground_truth.h"
 #include "headless_context.h"
 #include "image_io.h"
@@ -373,8 +374,8 @@ std::optional<json> readGolden(const fs::path& goldenFile) {
   std::string problem;
   const std::optional<std::string> text = host::readUserTextFile(goldenFile.string(), problem);
   if (!text) return std::nullopt;
-  const json golden = json::parse(*text, nullptr, false);
-  if (golden.is_discarded() || !golden.is_object())
+  const json golden = host::parseBoundedJson(*text, goldenFile.string());
+  if (!golden.is_object())
     throw std::invalid_argument(goldenFile.string() + ": not a golden file (not a JSON object)");
   return golden;
 }

@@ -1,8 +1,10 @@
 #include "score.h"
 
+#include "bounded_json.h"
 #include "commands.h"
 #include "image_io.h"
 #include "metrics.h"
+#include "scene.h"
 
 #include <nlohmann/json.hpp>
 
@@ -89,15 +91,23 @@ ReferenceFrame readReference(const std::string& path, int factor) {
 // The records of a capture.jsonl that name an image, in order; a record without one is named on stderr.
 std::vector<nlohmann::json> readRecords(const std::string& folder) {
   const std::string captureLog = folder + "/capture.jsonl";
-  std::ifstream in(captureLog);
-  if (!in) throw std::invalid_argument(captureLog + ": cannot read (run the engine's capture first)");
+  std::string problem;
+  const std::optional<std::string> text = host::readUserTextFile(captureLog, problem);
+  if (!text) throw std::invalid_argument(captureLog + ": cannot read (" + problem + "; run the engine's capture first)");
+  std::istringstream in(*text);
   std::vector<nlohmann::json> records;
   int lineNumber = 0;
   for (std::string line; std::getline(in, line);) {
     ++lineNumber;
     if (line.empty()) continue;
-    nlohmann::json record = nlohmann::json::parse(line, nullptr, false);
-    if (record.is_discarded() || !record.is_object() || !record.contains("spec") || !record["spec"].is_string() ||
+    const std::string where = captureLog + ":" + std::to_string(lineNumber);
+    nlohmann::json record;
+    try {
+      record = host::parseBoundedJson(line, where);
+    } catch (const host::SceneError& e) {
+      throw std::invalid_argument(std::string(e.what()) + " (not a capture record)");
+    }
+    if (!record.is_object() || !record.contains("spec") || !record["spec"].is_string() ||
         (record.contains("image") && !record["image"].is_string()) ||
         (record.contains("frame") && !record["frame"].is_number_integer()))
       throw std::invalid_argument(captureLog + ":" + std::to_string(lineNumber) + ": not a capture record");

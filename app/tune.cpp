@@ -1,5 +1,6 @@
 #include "tune.h"
 
+#include "bounded_json.h"
 #include "commands.h"
 #include "headless_context.h"
 #include "measure.h"
@@ -205,10 +206,13 @@ int runTune(const TuneOptions& options) {
     throw std::invalid_argument("--cost must be one of " + joined(costs) + ", got '" + options.cost + "'");
   const std::vector<std::string> specs = expandMethodList(options.candidates.empty() ? "grid" : options.candidates);
   json cache = json::object();
-  std::string problem;  // a missing, unreadable or corrupt cache only means measuring again
-  if (const std::optional<std::string> text = host::readUserTextFile(options.cache, problem))
-    cache = json::parse(*text, nullptr, false);
-  if (cache.is_discarded()) cache = json::object();
+  std::string problem;  // a missing, unreadable, corrupt or unbounded cache only means measuring again
+  if (const std::optional<std::string> text = host::readUserTextFile(options.cache, problem)) try {
+      cache = host::parseBoundedJson(*text, options.cache);
+    } catch (const host::SceneError& e) {
+      std::fprintf(stderr, "retroaa tune: measuring again: %s\n", e.what());
+    }
+  if (!cache.is_object()) cache = json::object();
   const std::vector<TunePoint> points = measureCandidates(options, specs, cache);
   const auto cacheParent = std::filesystem::path(options.cache).parent_path();
   std::filesystem::create_directories(cacheParent.empty() ? "." : cacheParent);

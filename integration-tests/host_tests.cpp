@@ -1,4 +1,5 @@
 // The host engine: context, depth encoding, scene files, model loading, the demo render, ground truth.
+#include "bounded_json.h"
 #include "depth_codec.h"
 #include "image_io.h"
 #include "test_support.h"
@@ -26,13 +27,9 @@ std::string sceneErrorOf(const std::string& json) {
   return "";
 }
 
-const char* kMinimalScene = R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
-  "materials": [{"name": "m"}], "objects": [%s]})";
-
 std::string withObjects(const std::string& objects) {
-  char buffer[1024];
-  std::snprintf(buffer, sizeof buffer, kMinimalScene, objects.c_str());
-  return buffer;
+  return R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "materials": [{"name": "m"}], "objects": [)" +
+         objects + "]}";
 }
 }  // namespace
 
@@ -383,6 +380,83 @@ TEST(Scene, ACameraPathFileIsBoundedAsTheSceneIs) {
   EXPECT_NE(error.find("path.json: (document): holds more than 4000000 values"), std::string::npos) << error;
   EXPECT_NE(error.find("camera_path"), std::string::npos) << error;
   std::filesystem::remove_all(dir);
+}
+
+TEST(Scene, GeneratedMeshesAreCountedAgainstTheMemoryBudgetBeforeAnyIsBuilt) {
+  // Eight greebled hulls of 200 000 greebles (19.2 M triangles, under the old 20 M cap) took 28 s and
+  // 4.5 GB: their bytes are known from the file, so the scene is refused before the first is generated.
+  std::string hulls;
+  for (int i = 0; i < 8; ++i)
+    hulls += std::string(i ? "," : "") +
+             R"({"generator": {"type": "greebled_hull", "size": [10, 3, 20], "greebles": 200000}, "material": "m"})";
+  const std::string error = sceneErrorOf(withObjects(hulls));
+  EXPECT_NE(error.find("$.objects: the scene's meshes would take 1977 MiB"), std::string::npos) << error;
+  EXPECT_NE(error.find("more than the 512 MiB budget"), std::string::npos) << error;
+  // One hull of 50 000 greebles is 61.8 MiB, within the budget; repeated ten times it is not.
+  const std::string oneHull =
+      R"({"generator": {"type": "greebled_hull", "size": [10, 3, 20], "greebles": 50000}, "material": "m")";
+  EXPECT_EQ(sceneErrorOf(withObjects(oneHull + "}")), "");
+  EXPECT_NE(sceneErrorOf(withObjects(oneHull + R"(, "repeat": {"count": 10, "offset": [30, 0, 0]}})"))
+                .find("$.objects: the scene's meshes would take 617 MiB"),
+            std::string::npos);
+  // A sphere's mesh (2.5 MiB at 32 subdivisions) repeated 10 000 times is counted as its copies are made.
+  EXPECT_NE(sceneErrorOf(withObjects(
+                R"({"generator": {"type": "sphere", "radius": 1, "subdivisions": 32}, "material": "m",
+                    "repeat": {"count": 10000, "offset": [3, 0, 0]}})"))
+                .find("$.objects[0]: the scene's meshes would take"),
+            std::string::npos);
+}
+
+TEST(Scene, AModelLargerThanAModelMayBeIsRefusedBeforeItIsRead) {
+  // assimp reads a model whole before any of it can be counted: its file, and a .gltf's buffer files,
+  // are bounded first. Sparse files: nothing of them is written.
+  const auto dir = std::filesystem::temp_directory_path() / "retroaa_large_model";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "huge.obj") << "v 0 0 0\n";
+  std::filesystem::resize_file(dir / "huge.obj", std::uintmax_t(65) << 20);
+  std::ofstream(dir / "small.gltf") << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "geometry.bin", "byteLength": 12}]})";
+  std::ofstream(dir / "geometry.bin") << "x";
+  std::filesystem::resize_file(dir / "geometry.bin", std::uintmax_t(70) << 20);
+  auto errorFor = [&](const std::string& model) {
+    try {
+      host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "materials": [{"name": "m"}],
+                           "objects": [{"model": ")" + model + R"(", "material": "m"}]})",
+                       "scene.json", dir.string());
+    } catch (const host::SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string obj = errorFor("huge.obj");
+  EXPECT_NE(obj.find("$.objects[0].model: '"), std::string::npos) << obj;
+  EXPECT_NE(obj.find("huge.obj' is 65 MiB with the buffers it names, more than the 64 MiB a model may be"),
+            std::string::npos)
+      << obj;
+  const std::string gltf = errorFor("small.gltf");
+  EXPECT_NE(gltf.find("small.gltf' is 70 MiB with the buffers it names"), std::string::npos) << gltf;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BoundedJson, EveryJsonFileTheToolsReadIsBoundedAndNamed) {
+  // Goldens, tune's cache and capture records go through the scene's scan too.
+  std::string deep(40, '[');
+  deep += std::string(40, ']');
+  try {
+    host::parseBoundedJson(deep, "golden/ci/demo.json");
+    ADD_FAILURE() << "40 levels of nesting were parsed";
+  } catch (const host::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("golden/ci/demo.json: (document): nested more than 32 levels deep"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(host::parseBoundedJson(R"({"a": [1, 2]})", "x.json")["a"][1], 2);
+  try {
+    host::parseBoundedJson(R"({"a": })", "capture.jsonl:3");
+    ADD_FAILURE() << "a syntax error was parsed";
+  } catch (const host::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("capture.jsonl:3: (document): not valid JSON"), std::string::npos);
+  }
 }
 
 TEST(Model, TexturesNamedWithBackslashesAreFoundAndAMissingOneIsNamed) {

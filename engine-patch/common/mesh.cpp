@@ -153,6 +153,9 @@ Mesh cylinder(float radius, float length, int segments) {
 
 Mesh greebledHull(const GreebledHull& params) {
   Mesh mesh = box(params.size);
+  // Exactly what it will hold, so growth never doubles it (the scene's budget counts these bytes).
+  mesh.vertices.reserve(mesh.vertices.size() * (1 + size_t(params.greebles)));
+  mesh.indices.reserve(mesh.indices.size() * (1 + size_t(params.greebles)));
   std::mt19937 rng(params.seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   const glm::vec3 half = params.size * 0.5f;

@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include "bounded_json.h"
 #include "procedural.h"
 
 #include "gl_objects.h"
@@ -7,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -23,8 +25,12 @@ namespace {
 
 using nlohmann::json;
 
-// A scene file must not be able to exhaust memory: 20 M triangles is ~100× the demo scene.
-constexpr size_t kMaxSceneTriangles = 20'000'000;
+// What a scene's meshes may hold, each repeat its own copy; the host uploads each, so the GPU holds as
+// much again. 8 greebled hulls of 200 000 greebles (19.2 M triangles, 2.1 GB) took 4.5 GB in all; the
+// demo scene holds 14 MiB.
+constexpr size_t kMaxSceneGeometryBytes = size_t(512) << 20;
+// A model file (with the buffers a .gltf names) that assimp reads whole before any of it can be counted.
+constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t(64) << 20;
 // Each object holds its own mesh and draw call: a million small ones took 7.6 GB before this cap.
 constexpr size_t kMaxSceneObjects = 65'536;
 // Every light is a pass over the frame's pixels: 10^4 point lights took 4.7 s to render, 10^6 over 180 s;
@@ -196,6 +202,78 @@ glm::mat4 readTransform(const Reader& r) {
   return m;
 }
 
+size_t meshBytes(size_t vertices, size_t indices) { return vertices * sizeof(Vertex) + indices * sizeof(uint32_t); }
+size_t meshBytes(const Mesh& mesh) { return meshBytes(mesh.vertices.size(), mesh.indices.size()); }
+
+// The scene's meshes within kMaxSceneGeometryBytes, checked before anything large is generated or read.
+class GeometryBudget {
+ public:
+  // Refuses `field` where `bytes` more would pass the budget.
+  void check(const Reader& field, size_t bytes) const {
+    if (bytes > kMaxSceneGeometryBytes - spent_)
+      field.fail("the scene's meshes would take " + std::to_string((spent_ + bytes) >> 20) +
+                 " MiB (vertices and indices, each repeat its own copy, and as much again on the GPU), more than "
+                 "the " +
+                 std::to_string(kMaxSceneGeometryBytes >> 20) + " MiB budget");
+  }
+  void spend(const Reader& field, size_t bytes) {
+    check(field, bytes);
+    spent_ += bytes;
+  }
+
+ private:
+  size_t spent_ = 0;
+};
+
+// A model's bytes on disk, which bound what assimp allocates reading it: the file, and for a .gltf the
+// buffer files it names (a "data:" URI is inside the file already).
+std::uintmax_t modelFileBytes(const Reader& field, const std::string& path) {
+  std::error_code error;
+  std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (error || extension != ".gltf" || bytes > kMaxModelFileBytes) return error ? 0 : bytes;
+  std::string problem;
+  const std::optional<std::string> text = readUserTextFile(path, problem);
+  if (!text) return bytes;
+  json document;
+  try {
+    document = parseBoundedJson(*text, path);
+  } catch (const SceneError& e) {
+    field.fail(e.what());
+  }
+  if (!document.is_object() || !document.contains("buffers") || !document["buffers"].is_array()) return bytes;
+  for (const json& buffer : document["buffers"]) {
+    if (!buffer.is_object() || !buffer.contains("uri") || !buffer["uri"].is_string()) continue;
+    const std::string uri = buffer["uri"].get<std::string>();
+    if (uri.rfind("data:", 0) == 0) continue;
+    const std::uintmax_t size =
+        std::filesystem::file_size(std::filesystem::path(path).parent_path() / uri, error);
+    if (!error) bytes += size;
+  }
+  return bytes;
+}
+
+// "repeat": {"count": n, "offset": [x,y,z]} places n copies, each shifted by offset.
+int repeatCount(const Reader& o) {
+  if (!o.has("repeat")) return 1;
+  const Reader rep = o.child("repeat");
+  rep.expectObject({"count", "offset"});
+  return rep.child("count").integer(1, 10000);
+}
+
+// What an object's generated meshes will take, known before any is built (only the greebled hull can be
+// large; a model counts once read, within kMaxModelFileBytes).
+size_t plannedGeneratorBytes(const Reader& o) {
+  if (!o.has("generator")) return 0;
+  const Reader r = o.child("generator");
+  if (!r.has("type") || !r.child("type").raw().is_string() || r.child("type").string() != "greebled_hull" ||
+      !r.has("greebles"))
+    return 0;
+  const size_t boxes = 1 + size_t(r.child("greebles").integer(0, 200000));
+  return boxes * meshBytes(24, 36) * size_t(repeatCount(o));
+}
+
 Mesh readGenerator(const Reader& r) {
   const std::string kind = r.child("type").string();
   if (kind == "box") {
@@ -336,106 +414,6 @@ size_t Scene::triangleCount() const {
 
 namespace {
 
-// A JSON string's text as its reader sees it (\uXXXX and the one-letter escapes decoded; a code point past
-// ASCII stands as '?'): a key written "obj\u0065cts" is "objects" to the parser, so to the limits too.
-std::string unescapedJsonString(const std::string& text, size_t begin, size_t end) {
-  std::string out;
-  for (size_t i = begin; i < end; ++i) {
-    if (text[i] != '\\' || i + 1 >= end) {
-      out += text[i];
-      continue;
-    }
-    const char e = text[++i];
-    if (e == 'u' && i + 4 < end) {
-      const unsigned long code = std::strtoul(text.substr(i + 1, 4).c_str(), nullptr, 16);
-      out += code < 0x80 ? char(code) : '?';
-      i += 4;
-    } else {
-      out += e == 'n' ? '\n' : e == 't' ? '\t' : e == 'r' ? '\r' : e == 'b' ? '\b' : e == 'f' ? '\f' : e;
-    }
-  }
-  return out;
-}
-
-// What a JSON file's text may hold before it is parsed into a document, found in one linear pass over
-// the text (written by hand: nlohmann-json checks none of it, and its callback parser, which could,
-// rescans each array after every object it closes, so 10^6 objects took minutes): nesting no deeper than
-// kMaxJsonNesting, no more than kMaxJsonValues values in all (each costs the document tens of bytes), and
-// no more elements in each of `rootArrayLimits`' arrays of the root object (keys compared as the parser
-// reads them) than it allows. Either would otherwise cost gigabytes and seconds before its error. Syntax
-// is the parser's to judge.
-struct RootArrayLimit {
-  const char* key;
-  size_t most;
-};
-void scanJsonText(const std::string& text, const std::string& fileName,
-                  std::initializer_list<RootArrayLimit> rootArrayLimits) {
-  constexpr int kMaxJsonNesting = 32;
-  constexpr size_t kMaxJsonValues = 4'000'000;
-  int depth = 0;
-  bool inString = false, escaped = false, afterColon = false;
-  std::string lastRootString;  // the last string read directly in the root object (a key, before ':')
-  size_t stringStart = 0;
-  const RootArrayLimit* limited = nullptr;  // the root array being counted, while in it
-  int limitedDepth = -1;                    // the depth inside it
-  size_t elements = 0;                      // its elements so far
-  bool limitedEmpty = true;
-  size_t values = 1;  // the root; then one per element or member that a ',' or an opening bracket begins
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (inString) {
-      if (escaped)
-        escaped = false;
-      else if (c == '\\')
-        escaped = true;
-      else if (c == '"') {
-        inString = false;
-        if (depth == 1) lastRootString = unescapedJsonString(text, stringStart, i);
-      }
-      continue;
-    }
-    if (c == ' ' || c == '\n' || c == '\r' || c == '\t') continue;
-    if (limited && depth == limitedDepth && c != ']' && c != ',') limitedEmpty = false;
-    if (c == '"') {
-      inString = true, stringStart = i + 1;
-    } else if (c == '[' || c == '{') {
-      ++values;
-      if (c == '[' && depth == 1 && afterColon)
-        for (const RootArrayLimit& limit : rootArrayLimits)
-          if (lastRootString == limit.key) limited = &limit, limitedDepth = depth + 1;
-      if (++depth > kMaxJsonNesting)
-        throw SceneError(fileName, "(document)",
-                         "nested more than " + std::to_string(kMaxJsonNesting) + " levels deep");
-    } else if (c == ']' || c == '}') {
-      if (limited && depth == limitedDepth) {  // the array closed: its count is known
-        elements += limitedEmpty ? 0 : 1;
-        if (elements > limited->most)
-          throw SceneError(
-              fileName, std::string("$.") + limited->key,
-              "has " + std::to_string(elements) + " elements (at most " + std::to_string(limited->most) + ")");
-        limited = nullptr, limitedDepth = -1, elements = 0, limitedEmpty = true;
-      }
-      depth = std::max(depth - 1, 0);
-    } else if (c == ',') {
-      ++values;
-      if (limited && depth == limitedDepth) ++elements;
-    }
-    if (values > kMaxJsonValues)
-      throw SceneError(fileName, "(document)", "holds more than " + std::to_string(kMaxJsonValues) + " values");
-    afterColon = c == ':';
-  }
-}
-
-// The scene's JSON, once its text is known to be bounded (scanJsonText).
-json parseSceneDocument(const std::string& jsonText, const std::string& fileName) {
-  scanJsonText(jsonText, fileName, {{"objects", kMaxSceneObjects}, {"lights", kMaxSceneLights}});
-  try {
-    return json::parse(jsonText);
-  } catch (const json::exception& e) {  // syntax errors, and numbers beyond double's range
-    throw SceneError(fileName, "(document)", std::string("not valid JSON: ") + e.what());
-  }
-}
-
 // "materials" (optional when every object is a model that keeps its own), within the texture budget.
 void readMaterials(const Reader& root, const std::string& fileName, const std::string& baseDirectory, Scene& scene,
                    size_t& textureBudget) {
@@ -461,11 +439,14 @@ void readMaterials(const Reader& root, const std::string& fileName, const std::s
 // Object `i` of "objects": its mesh (generated, or a model, split into its parts where it keeps its own
 // materials) and its repeats, appended to the scene within its object, triangle and texture budgets.
 void readObject(const Reader& o, size_t i, const std::string& baseDirectory, Scene& scene, size_t& textureBudget,
-                size_t& triangles) {
+                GeometryBudget& geometryBudget) {
   o.expectObject({"name", "generator", "model", "material", "transform", "velocity", "repeat"});
   Object object;
   object.name = o.has("name") ? o.child("name").string() : "object" + std::to_string(i);
   if (o.has("generator") == o.has("model")) o.fail("needs exactly one of 'generator' or 'model'");
+  const int count = repeatCount(o);
+  glm::vec3 offset(0);
+  if (o.has("repeat")) offset = o.child("repeat").child("offset").vec3();
   std::vector<ModelPart> parts;  // a model's own materials, unless "material" overrides them
   if (o.has("generator")) {
     object.mesh = readGenerator(o.child("generator"));
@@ -478,6 +459,10 @@ void readObject(const Reader& o, size_t i, const std::string& baseDirectory, Sce
     std::error_code error;
     if (!std::filesystem::is_regular_file(resolved, error))
       o.child("model").fail("'" + resolved + "' is not a regular file");
+    if (const std::uintmax_t bytes = modelFileBytes(o.child("model"), resolved); bytes > kMaxModelFileBytes)
+      o.child("model").fail("'" + resolved + "' is " + std::to_string(bytes >> 20) +
+                            " MiB with the buffers it names, more than the " +
+                            std::to_string(kMaxModelFileBytes >> 20) + " MiB a model may be");
     try {
       // A "material" override replaces the model's own: its textures are not read (nor missing ones refused).
       parts = loadModel(resolved, nullptr, o.has("material") ? ModelTextures::Skip : ModelTextures::Read);
@@ -495,15 +480,6 @@ void readObject(const Reader& o, size_t i, const std::string& baseDirectory, Sce
   }
   if (o.has("transform")) object.transform = readTransform(o.child("transform"));
   if (o.has("velocity")) object.velocity = o.child("velocity").vec3();
-  // "repeat": {"count": n, "offset": [x,y,z]} places n copies, each shifted by offset.
-  int count = 1;
-  glm::vec3 offset(0);
-  if (o.has("repeat")) {
-    const Reader rep = o.child("repeat");
-    rep.expectObject({"count", "offset"});
-    count = rep.child("count").integer(1, 10000);
-    offset = rep.child("offset").vec3();
-  }
   // Without "material", each of the model's materials becomes a scene material ("<object>/<name>") and
   // each part an object of its own.
   std::vector<Object> pieces;
@@ -530,10 +506,7 @@ void readObject(const Reader& o, size_t i, const std::string& baseDirectory, Sce
            " objects (with its repeats and parts this one brings it to " +
            std::to_string(scene.objects.size() + pieces.size() * size_t(count)) + ")");
   for (const Object& piece : pieces) {
-    triangles += piece.mesh.triangleCount() * size_t(count);
-    if (triangles > kMaxSceneTriangles)
-      o.fail("the scene exceeds " + std::to_string(kMaxSceneTriangles) + " triangles (this object brings it to " +
-             std::to_string(triangles) + ")");
+    geometryBudget.spend(o, meshBytes(piece.mesh) * size_t(count));
     for (int c = 0; c < count; ++c) {
       Object copy = piece;
       copy.transform = glm::translate(glm::mat4(1.0f), offset * float(c)) * piece.transform;
@@ -583,13 +556,7 @@ CameraPath readScenePath(const Reader& p, const std::string& baseDirectory, bool
   if (!text) p.fail("cannot open camera path file '" + resolved + "': " + problem);
   // Errors inside the path file name both: the scene's field and the path file's own field.
   try {
-    json pathDocument;
-    scanJsonText(*text, resolved, {});
-    try {
-      pathDocument = json::parse(*text);
-    } catch (const json::exception& e) {
-      throw SceneError(resolved, "(document)", std::string("not valid JSON: ") + e.what());
-    }
+    const json pathDocument = parseBoundedJson(*text, resolved);
     return readCameraPath(Reader(resolved, pathDocument, "$"));
   } catch (const SceneError& e) {
     p.fail(e.what());
@@ -601,7 +568,8 @@ CameraPath readScenePath(const Reader& p, const std::string& baseDirectory, bool
 
 Scene parseScene(const std::string& jsonText, const std::string& fileName, const std::string& baseDirectory,
                  bool requireCameraPath) {
-  const json document = parseSceneDocument(jsonText, fileName);
+  const json document =
+      parseBoundedJson(jsonText, fileName, {{"objects", kMaxSceneObjects}, {"lights", kMaxSceneLights}});
   const Reader root(fileName, document, "$");
   root.expectObject({"name", "camera", "camera_path", "materials", "objects", "lights", "ambient", "sky_color",
                      "star_density", "exposure", "shading", "depth_buffer", "position_depth", "object_motion",
@@ -647,9 +615,12 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName, const
   if (objects.arraySize() > kMaxSceneObjects)
     objects.fail("has " + std::to_string(objects.arraySize()) + " objects (at most " +
                  std::to_string(kMaxSceneObjects) + ")");
-  size_t triangles = 0;
+  GeometryBudget geometryBudget;
+  size_t plannedBytes = 0;
+  for (size_t i = 0; i < objects.arraySize(); ++i) plannedBytes += plannedGeneratorBytes(objects.element(i));
+  geometryBudget.check(objects, plannedBytes);
   for (size_t i = 0; i < objects.arraySize(); ++i)
-    readObject(objects.element(i), i, baseDirectory, scene, textureBudget, triangles);
+    readObject(objects.element(i), i, baseDirectory, scene, textureBudget, geometryBudget);
 
   if (fitToObjects) {
     if (scene.objects.empty()) root.child("camera").fail("\"fit\" needs at least one object to frame");
