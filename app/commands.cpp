@@ -207,9 +207,9 @@ std::string imageFileStem(std::string methodName) {
 std::string benchTable(const json& rows) {
   std::ostringstream table;
   table << "| method | samples | evals/px | GPU ms | time vs off | time vs per-sample | wall ms | wall vs off | plugin "
-           "overhead ms | plugin B/px | PSNR dB | edge PSNR dB | interior PSNR dB | SSIM | max err | PSNR vs "
-           "per-sample |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+           "overhead ms | plugin B/px | PSNR dB | edge PSNR dB | model-edge PSNR dB | background-edge PSNR dB | "
+           "interior PSNR dB | SSIM | max err | PSNR vs per-sample |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   // Null is "-" for a ratio whose baseline was not run, "n/a" for a figure with nothing to measure.
   auto twoDecimals = [](const json& value, const char* whenNull) {
     if (value.is_null()) return std::string(whenNull);
@@ -227,6 +227,7 @@ std::string benchTable(const json& rows) {
           << " | " << ratio(row["plugin_overhead_ms"]) << " | " << std::setprecision(1)
           << row["plugin_bytes_per_pixel"].get<double>() << " | " << std::setprecision(2)
           << row["psnr_db"].get<double>() << " | " << decibels(row["edge_psnr_db"]) << " | "
+          << decibels(row["model_edge_psnr_db"]) << " | " << decibels(row["background_edge_psnr_db"]) << " | "
           << decibels(row["interior_psnr_db"]) << " | " << std::setprecision(4) << row["ssim"].get<double>() << " | "
           << std::setprecision(3) << row["max_abs_error"].get<double>() << " | " << std::setprecision(2)
           << row["psnr_vs_per_sample_db"].get<double>() << " |\n";
@@ -238,11 +239,12 @@ std::string benchTable(const json& rows) {
 // frame: what a pass costs beyond the bytes it must move on this device.
 std::string floorTable(const json& rows) {
   std::ostringstream table;
-  table << "Plugin passes against their floors (a pass of the same shape that only moves the same bytes, timed in "
-           "the same run; the host's lighting has none):\n\n"
-        << "| passes of | own passes ms | own vs off's frame | pass | ms | floor ms | x floor | floor MB | fragments |\n"
-        << "|---|---|---|---|---|---|---|---|---|\n"
-        << std::fixed;
+  table
+      << "Plugin passes against their floors (a pass of the same shape that only moves the same bytes, timed in "
+         "the same run; the host's lighting has none):\n\n"
+      << "| passes of | own passes ms | own vs off's frame | pass | ms | floor ms | x floor | floor MB | fragments |\n"
+      << "|---|---|---|---|---|---|---|---|---|\n"
+      << std::fixed;
   for (const auto& row : rows) {
     const json& passes = row["passes_ms"];
     bool first = true;
@@ -525,7 +527,8 @@ int runSoak(const SoakOptions& options) {
     // The settings above repeat every 4200 frames (their periods' least common multiple, with the sizes'): a
     // cache that fills while new combinations come (the driver's shader variants) flattens after one period,
     // a leak does not.
-    if ((frame + 1) % 1050 == 0) std::printf("soak: frame %d, resident %.1f MiB, heap in use %.2f MiB\n", frame + 1, residentMiB(),
+    if ((frame + 1) % 1050 == 0)
+      std::printf("soak: frame %d, resident %.1f MiB, heap in use %.2f MiB\n", frame + 1, residentMiB(),
                   heapInUseMiB());
   }
   session.renderer->resize(options.width, options.height);

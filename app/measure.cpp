@@ -22,13 +22,19 @@ double median(std::vector<double> values) {
 
 FrameReference renderReference(Session& session, const host::Camera& camera, int samplesPerAxis,
                                const retroaa::Config* perSampleBase) {
-  const host::GroundTruth truth = host::renderGroundTruth(*session.renderer, camera, samplesPerAxis);
+  const host::GroundTruth truth = host::renderGroundTruth(
+      *session.renderer, camera, samplesPerAxis, host::TextureFootprint::Supersample, host::BackgroundEdges::Apart);
   const int w = session.renderer->width(), h = session.renderer->height();
-  FrameReference reference{truth.display,
-                           DisplayImage::fromRgba8(w, h, truth.display),
-                           edgeMaskFromSpread(truth.lumaStdDev),
-                           std::nullopt,
-                           {}};
+  FrameReference reference;
+  reference.truthRgba = truth.display;
+  reference.truth = DisplayImage::fromRgba8(w, h, truth.display);
+  reference.edges = edgeMaskFromSpread(truth.lumaStdDev);
+  if (!truth.modelLumaStdDev.empty()) {
+    reference.modelEdges = edgeMaskFromSpread(truth.modelLumaStdDev);
+    reference.backgroundEdges.resize(reference.edges.size());
+    for (size_t p = 0; p < reference.edges.size(); ++p)
+      reference.backgroundEdges[p] = reference.edges[p] && !reference.modelEdges[p];
+  }
   if (perSampleBase) {
     retroaa::Config config = *perSampleBase;
     config.method = retroaa::Method::PerSample;
@@ -182,7 +188,8 @@ void measureFloors(Session& session, const host::Camera& camera, const retroaa::
     std::map<std::string, double> frameMs;
     m.passFloorBytes.clear();
     for (const retroaa::PassStats& pass : stats.passes) {
-      if (pass.name.size() <= suffix.size() || pass.name.compare(pass.name.size() - suffix.size(), suffix.size(), suffix))
+      if (pass.name.size() <= suffix.size() ||
+          pass.name.compare(pass.name.size() - suffix.size(), suffix.size(), suffix))
         continue;
       const std::string name = "plugin." + pass.name.substr(0, pass.name.size() - suffix.size());
       if (!pass.unmeasured.empty()) {
@@ -254,9 +261,20 @@ Measurement measure(Session& session, const host::Camera& camera, const FrameRef
     runs[run] = median(values);
   }
   m.error = compare(m.image, reference.truth, reference.edges);
+  if (!reference.modelEdges.empty()) {
+    m.modelEdgeError = pixelErrors(m.image, reference.truth, reference.modelEdges);
+    m.backgroundEdgeError = pixelErrors(m.image, reference.truth, reference.backgroundEdges);
+  }
   if (reference.perSample) m.psnrVsPerSampleDb = compare(m.image, *reference.perSample, {}).psnrDb;
   return m;
 }
+
+namespace {
+// An edge PSNR, or null where there was no edge pixel to measure (never a made-up number).
+nlohmann::json edgeFigure(const std::optional<ErrorMetrics>& error) {
+  return error && error->edgePixels > 0 ? nlohmann::json(error->edgePsnrDb) : nlohmann::json(nullptr);
+}
+}  // namespace
 
 nlohmann::json figures(const Measurement& m) {
   using nlohmann::json;
@@ -283,6 +301,11 @@ nlohmann::json figures(const Measurement& m) {
       // No edge pixel in the ground truth: there is no edge error to report (null, not a number).
       {"edge_psnr_db", m.error.edgePixels > 0 ? json(m.error.edgePsnrDb) : json(nullptr)},
       {"edge_pixels", m.error.edgePixels},
+      // The models' edges apart from the background's own detail (stars), where the scene has any.
+      {"model_edge_psnr_db", edgeFigure(m.modelEdgeError ? m.modelEdgeError : m.error)},
+      {"model_edge_pixels", (m.modelEdgeError ? *m.modelEdgeError : m.error).edgePixels},
+      {"background_edge_psnr_db", edgeFigure(m.backgroundEdgeError)},
+      {"background_edge_pixels", m.backgroundEdgeError ? m.backgroundEdgeError->edgePixels : 0},
       // Every pixel an edge: no interior to report.
       {"interior_psnr_db", m.error.interiorPixels > 0 ? json(m.error.interiorPsnrDb) : json(nullptr)},
       {"ssim", m.error.ssim},
@@ -337,7 +360,8 @@ void addFloorRatios(nlohmann::json& rows) {
       // slice method must pay it; every other plugin pass is the plugin's own.
       if (pass != "plugin.slices.lighting" && pass != "plugin.lighting") ownMs += ms.get<double>();
       const json& floor = row.value("passes_floor_ms", json::object());
-      if (floor.contains(pass) && floor[pass].get<double>() > 0) ratios[pass] = ms.get<double>() / floor[pass].get<double>();
+      if (floor.contains(pass) && floor[pass].get<double>() > 0)
+        ratios[pass] = ms.get<double>() / floor[pass].get<double>();
     }
     row["passes_floor_ratio"] = ratios;
     row["plugin_own_ms"] = ownMs;

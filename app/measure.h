@@ -16,9 +16,12 @@ namespace app {
 
 // What a frame's renders are judged against.
 struct FrameReference {
-  std::vector<uint8_t> truthRgba;         // ground truth, display RGBA8 top-down
-  DisplayImage truth;                     // the same as metric values
-  std::vector<uint8_t> edges;             // ground-truth edge pixels (metrics.h)
+  std::vector<uint8_t> truthRgba;  // ground truth, display RGBA8 top-down
+  DisplayImage truth;              // the same as metric values
+  std::vector<uint8_t> edges;      // ground-truth edge pixels (metrics.h), the background's detail's too
+  // The same split: the models' and the scene's edges, and those only the background's own detail (stars)
+  // makes. Empty where the background has none: then `edges` are the models'.
+  std::vector<uint8_t> modelEdges, backgroundEdges;
   std::optional<DisplayImage> perSample;  // the per-sample render at the run's sample count
   // Where the ground truth changed since the previous frame (markChangedSince; empty: not computed): with
   // a still camera, what objects that move covered or uncovered. A history's error there is its lag.
@@ -51,7 +54,10 @@ struct Measurement {
   std::map<std::string, double> passFloorMs;
   std::map<std::string, uint64_t> passFloorBytes;
   std::map<std::string, std::string> passFloorUnmeasured;
-  ErrorMetrics error;                                      // against the ground truth, edge figures on its edges
+  ErrorMetrics error;  // against the ground truth, edge figures on its edges
+  // Edge figures on the models' edges and on the background's own (FrameReference): the edge figures of
+  // their pixelErrors, absent where the reference does not split its edges.
+  std::optional<ErrorMetrics> modelEdgeError, backgroundEdgeError;
   std::optional<double> psnrVsPerSampleDb;
 };
 // How a history converges on a still camera: `frames` frames of it from a fresh history,
@@ -85,9 +91,9 @@ double measureWallMs(Session& session, const host::Camera& camera, int frames);
 // The figures of a measurement by the names every report uses: samples, evals_per_pixel,
 // lighting_evaluations, slices, gpu_ms, wall_ms (null when not measured), passes_ms,
 // passes_fragment_invocations, passes_compute_invocations, passes_minimum_bytes, passes_ms_by_run (a pass run
-// once per slice: each run's ms, so a sparse slice's cost shows beside a full one's), plugin_bytes, plugin_bytes_per_pixel,
-// budget_scale, psnr_db, edge_psnr_db (null when the ground truth has no edge pixel), edge_pixels, ssim, max_abs_error,
-// psnr_vs_per_sample_db (when measured).
+// once per slice: each run's ms, so a sparse slice's cost shows beside a full one's), plugin_bytes,
+// plugin_bytes_per_pixel, budget_scale, psnr_db, edge_psnr_db (null when the ground truth has no edge pixel),
+// edge_pixels, ssim, max_abs_error, psnr_vs_per_sample_db (when measured).
 nlohmann::json figures(const Measurement& measurement);
 
 // Adds to rows (each with "method" and figures()'s names) the ratios to baselines measured in the same

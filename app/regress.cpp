@@ -3,8 +3,8 @@
 #include "progress.h"
 #include "scatter_svg.h"
 
-#include "commands.h"
 #include "bounded_json.h"
+#include "commands.h"
 #include "ground_truth.h"
 #include "headless_context.h"
 #include "image_io.h"
@@ -375,8 +375,7 @@ std::optional<json> readGolden(const fs::path& goldenFile) {
   const std::optional<std::string> text = host::readUserTextFile(goldenFile.string(), problem);
   if (!text) return std::nullopt;
   const json golden = host::parseBoundedJson(*text, goldenFile.string());
-  if (!golden.is_object())
-    throw std::invalid_argument(goldenFile.string() + ": not a golden file (not a JSON object)");
+  if (!golden.is_object()) throw std::invalid_argument(goldenFile.string() + ": not a golden file (not a JSON object)");
   return golden;
 }
 

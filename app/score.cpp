@@ -93,7 +93,8 @@ std::vector<nlohmann::json> readRecords(const std::string& folder) {
   const std::string captureLog = folder + "/capture.jsonl";
   std::string problem;
   const std::optional<std::string> text = host::readUserTextFile(captureLog, problem);
-  if (!text) throw std::invalid_argument(captureLog + ": cannot read (" + problem + "; run the engine's capture first)");
+  if (!text)
+    throw std::invalid_argument(captureLog + ": cannot read (" + problem + "; run the engine's capture first)");
   std::istringstream in(*text);
   std::vector<nlohmann::json> records;
   int lineNumber = 0;

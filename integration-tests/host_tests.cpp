@@ -214,6 +214,35 @@ TEST(GroundTruth, ConvergesFrom8x8To16x16) {
   EXPECT_LT(app::compare(off, b, {}).psnrDb, m.psnrDb - 8.0);
 }
 
+// The stars are the background's own detail, not model edges: a sky alone has edge pixels (its stars) and
+// no model edges; with the demo's models, every model-edge pixel but those the stars' light changes is
+// an edge pixel too, and the stars' pixels are not model edges.
+TEST(GroundTruth, TellsTheBackgroundsStarsFromTheModelsEdges) {
+  PatchedHost sky(host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "objects": [],
+                                      "star_density": 2})",
+                                   "sky.json", "."),
+                  96, 72);
+  const ScoringTruth skyTruth = sky.scoringTruth(4, host::BackgroundEdges::Apart);
+  const auto count = [](const std::vector<uint8_t>& mask) { return std::count(mask.begin(), mask.end(), 1); };
+  ASSERT_EQ(skyTruth.modelEdges.size(), skyTruth.edges.size());
+  EXPECT_GT(count(skyTruth.edges), 20) << "the stars make edge pixels";
+  EXPECT_EQ(count(skyTruth.modelEdges), 0) << "a sky has no model edge";
+  EXPECT_TRUE(sky.scoringTruth(4).modelEdges.empty()) << "told apart only when asked (s^2 frames more)";
+
+  PatchedHost demo("default", 96, 72);
+  const ScoringTruth truth = demo.scoringTruth(4, host::BackgroundEdges::Apart);
+  size_t modelOnly = 0, both = 0;
+  for (size_t p = 0; p < truth.edges.size(); ++p) {
+    modelOnly += truth.modelEdges[p] && !truth.edges[p];
+    both += truth.modelEdges[p] && truth.edges[p];
+  }
+  std::printf("demo 96x72: %ld edge pixels, %ld model edges (%zu not among the edges)\n", long(count(truth.edges)),
+              long(count(truth.modelEdges)), modelOnly);
+  EXPECT_GT(both, 200u);
+  EXPECT_LT(modelOnly, both / 20) << "a star behind a silhouette only adds to its spread";
+  EXPECT_LT(count(truth.modelEdges), count(truth.edges)) << "the demo's stars are edges, not model edges";
+}
+
 // The sky is the same colour at every aspect ratio (16:10 once came out black: the background was
 // un-projected at the far plane, where single precision breaks down).
 TEST(DemoRender, TheSkyIsSkyAtEveryAspectRatio) {
@@ -401,7 +430,7 @@ TEST(Scene, GeneratedMeshesAreCountedAgainstTheMemoryBudgetBeforeAnyIsBuilt) {
             std::string::npos);
   // A sphere's mesh (2.5 MiB at 32 subdivisions) repeated 10 000 times is counted as its copies are made.
   EXPECT_NE(sceneErrorOf(withObjects(
-                R"({"generator": {"type": "sphere", "radius": 1, "subdivisions": 32}, "material": "m",
+                             R"({"generator": {"type": "sphere", "radius": 1, "subdivisions": 32}, "material": "m",
                     "repeat": {"count": 10000, "offset": [3, 0, 0]}})"))
                 .find("$.objects[0]: the scene's meshes would take"),
             std::string::npos);
@@ -415,13 +444,15 @@ TEST(Scene, AModelLargerThanAModelMayBeIsRefusedBeforeItIsRead) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "huge.obj") << "v 0 0 0\n";
   std::filesystem::resize_file(dir / "huge.obj", std::uintmax_t(65) << 20);
-  std::ofstream(dir / "small.gltf") << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "geometry.bin", "byteLength": 12}]})";
+  std::ofstream(dir / "small.gltf")
+      << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "geometry.bin", "byteLength": 12}]})";
   std::ofstream(dir / "geometry.bin") << "x";
   std::filesystem::resize_file(dir / "geometry.bin", std::uintmax_t(70) << 20);
   auto errorFor = [&](const std::string& model) {
     try {
       host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "materials": [{"name": "m"}],
-                           "objects": [{"model": ")" + model + R"(", "material": "m"}]})",
+                           "objects": [{"model": ")" +
+                           model + R"(", "material": "m"}]})",
                        "scene.json", dir.string());
     } catch (const host::SceneError& e) {
       return std::string(e.what());

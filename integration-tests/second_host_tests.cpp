@@ -95,7 +95,8 @@ ScoringTruth scoringTruth(SecondHost& host) {
   const host::GroundTruth truth = host::renderGroundTruth(*host.renderer, host.scene.camera, 4);
   host.renderer->setStockPath(false);
   return {app::DisplayImage::fromRgba8(truth.width, truth.height, truth.display),
-          app::edgeMaskFromSpread(truth.lumaStdDev)};
+          app::edgeMaskFromSpread(truth.lumaStdDev),
+          {}};
 }
 
 size_t changedPixels(const app::DisplayImage& a, const app::DisplayImage& b, const std::vector<bool>& where) {

@@ -428,21 +428,22 @@ TEST(Temporal, StackedOnEverySliceMethodItIsAtLeastItsBase) {
 }
 
 // Every post filter the config stacks on a method (+smaa, +coverage, +reconstruct, +fxaa) on the bases
-// it serves: at least the base's edge PSNR on the demo frame. `+fxaa` over a method that lights the
-// samples of its edges is the known exception (docs/methods/fxaa.md): it is printed, not asserted.
-TEST(Stacks, EveryStackedFilterIsAtLeastItsBaseOnTheDemosEdges) {
+// it serves: at least the base's PSNR on the demo frame's model edges. (On all its edges `+fxaa` over a
+// slice method is below its base: every loss is at the stars, which FXAA blurs as edges; on the models'
+// edges it gains. docs/methods/fxaa.md.)
+TEST(Stacks, EveryStackedFilterIsAtLeastItsBaseOnTheDemosModelEdges) {
   PatchedHost host("default", 96, 72);
-  const ScoringTruth truth = host.scoringTruth(4);
+  const ScoringTruth truth = host.scoringTruth(4, host::BackgroundEdges::Apart);
+  ASSERT_FALSE(truth.modelEdges.empty()) << "the demo's stars were not told apart";
   for (const char* base : {"resolve", "edge", "adaptive"}) {
-    const double alone = truth.score(host.render(base)).edgePsnrDb;
+    const double alone = truth.scoreModelEdges(host.render(base)).edgePsnrDb;
     for (const char* filter : {"+smaa", "+coverage", "+reconstruct", "+fxaa"}) {
       const std::string stack = std::string(base) + filter;
-      const double stacked = truth.score(host.render(stack)).edgePsnrDb;
-      std::printf("%s: edge PSNR %.2f, %s %.2f\n", base, alone, stack.c_str(), stacked);
-      const bool knownBelow = std::string(filter) == "+fxaa" && std::string(base) != "resolve";
-      if (!knownBelow) {
-        EXPECT_GE(stacked, alone - 0.02) << stack;
-      }
+      const app::DisplayImage image = host.render(stack);
+      const double stacked = truth.scoreModelEdges(image).edgePsnrDb;
+      std::printf("%s: model-edge PSNR %.2f, %s %.2f (all edges %.2f)\n", base, alone, stack.c_str(), stacked,
+                  truth.score(image).edgePsnrDb);
+      EXPECT_GE(stacked, alone - 0.02) << stack;
     }
   }
 }

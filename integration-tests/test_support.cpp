@@ -54,9 +54,11 @@ host::GroundTruth PatchedHost::groundTruth(int samplesPerAxis) {
   return host::renderGroundTruth(*renderer, scene.camera, samplesPerAxis);
 }
 
-ScoringTruth PatchedHost::scoringTruth(int samplesPerAxis) {
-  const host::GroundTruth gt = groundTruth(samplesPerAxis);
-  return {app::DisplayImage::fromRgba8(gt.width, gt.height, gt.display), app::edgeMaskFromSpread(gt.lumaStdDev)};
+ScoringTruth PatchedHost::scoringTruth(int samplesPerAxis, host::BackgroundEdges backgroundEdges) {
+  const host::GroundTruth gt = host::renderGroundTruth(*renderer, scene.camera, samplesPerAxis,
+                                                       host::TextureFootprint::Supersample, backgroundEdges);
+  return {app::DisplayImage::fromRgba8(gt.width, gt.height, gt.display), app::edgeMaskFromSpread(gt.lumaStdDev),
+          gt.modelLumaStdDev.empty() ? std::vector<uint8_t>{} : app::edgeMaskFromSpread(gt.modelLumaStdDev)};
 }
 
 float throughHalf(float value) { return glm::unpackHalf1x16(glm::packHalf1x16(value)); }

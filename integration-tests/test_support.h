@@ -35,7 +35,12 @@ std::string testDataPath(const std::string& relative);
 struct ScoringTruth {
   app::DisplayImage display;
   std::vector<uint8_t> edges;
+  std::vector<uint8_t> modelEdges;  // without the background's detail (stars); empty unless asked for
   app::ErrorMetrics score(const app::DisplayImage& image) const { return app::compare(image, display, edges); }
+  // Edge figures on the models' edges alone (the edges when the background has no detail or none was asked).
+  app::ErrorMetrics scoreModelEdges(const app::DisplayImage& image) const {
+    return app::pixelErrors(image, display, modelEdges.empty() ? edges : modelEdges);
+  }
 };
 
 // A host renderer on a scene with the retroaa patch installed.
@@ -48,7 +53,8 @@ struct PatchedHost {
   // Renders the scene camera with a method spec (see app::parseMethodSpec) and returns the display.
   app::DisplayImage render(const std::string& methodSpec, const retroaa::Config& base = {});
   host::GroundTruth groundTruth(int samplesPerAxis);
-  ScoringTruth scoringTruth(int samplesPerAxis);
+  ScoringTruth scoringTruth(int samplesPerAxis,
+                            host::BackgroundEdges backgroundEdges = host::BackgroundEdges::Together);
 };
 
 // A fresh plugin for `host` under `config`, on a context with `disabledFeatures` masked and

@@ -102,11 +102,16 @@ class Engine {
     materialTextures_->setLodBias(bias);
   }
   void setMaterialMapsOn(bool on) { materialTextures_->setMapsOn(on); }
+  // The background's own detail (the FSO-shaped host's stars): whether it has any, and drawing it or only
+  // the plain sky beneath, for a ground truth that tells the background's edges from the models'.
+  virtual bool hasBackgroundDetail() const { return false; }
+  void setBackgroundDetailOn(bool on) { backgroundDetailOn_ = on; }
   const MaterialTextures& materialTextures() const { return *materialTextures_; }
 
  protected:
   void applyTextureLodBias(float moduleBias) { materialTextures_->setLodBias(textureLodBias_ + moduleBias); }
   float textureLodBias_ = 0.0f;
+  bool backgroundDetailOn_ = true;
   HostTimings timings_;
   std::unique_ptr<MaterialTextures> materialTextures_;  // created with the scene's meshes
 };

@@ -231,7 +231,8 @@ std::uintmax_t modelFileBytes(const Reader& field, const std::string& path) {
   std::error_code error;
   std::uintmax_t bytes = std::filesystem::file_size(path, error);
   std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (error || extension != ".gltf" || bytes > kMaxModelFileBytes) return error ? 0 : bytes;
   std::string problem;
   const std::optional<std::string> text = readUserTextFile(path, problem);
@@ -247,8 +248,7 @@ std::uintmax_t modelFileBytes(const Reader& field, const std::string& path) {
     if (!buffer.is_object() || !buffer.contains("uri") || !buffer["uri"].is_string()) continue;
     const std::string uri = buffer["uri"].get<std::string>();
     if (uri.rfind("data:", 0) == 0) continue;
-    const std::uintmax_t size =
-        std::filesystem::file_size(std::filesystem::path(path).parent_path() / uri, error);
+    const std::uintmax_t size = std::filesystem::file_size(std::filesystem::path(path).parent_path() / uri, error);
     if (!error) bytes += size;
   }
   return bytes;

@@ -214,7 +214,7 @@ void Renderer::drawBackground(const glm::mat4& view, const glm::mat4& projection
   setUniform(backgroundProgram_.uniform("uViewToWorld"), glm::mat3(glm::inverse(view)));
   setUniform(backgroundProgram_.uniform("uViewportSize"), viewportSize);
   setUniform(backgroundProgram_.uniform("uSkyColor"), scene_.skyColor);
-  setUniform(backgroundProgram_.uniform("uStarDensity"), scene_.starDensity);
+  setUniform(backgroundProgram_.uniform("uStarDensity"), backgroundDetailOn_ ? scene_.starDensity : 0.0f);
   glBindVertexArray(emptyVertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -40,6 +40,7 @@ class Renderer : public Engine {
   GLuint displayFramebuffer() const override { return targets_.displayFramebuffer; }
   float exposure() const override { return scene_.exposure; }
   GLuint radianceTexture() const override { return targets_.lightTexture; }
+  bool hasBackgroundDetail() const override { return scene_.starDensity > 0.0f; }
   std::string groundTruthDefines() const override { return ""; }
   void present(GLuint radiance) override { tonemap(radiance); }
   void setStockPath(bool stock) override;

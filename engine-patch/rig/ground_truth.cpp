@@ -9,6 +9,18 @@ namespace host {
 
 namespace {
 
+// Accumulated luma moments read back as a spread (standard deviation), top row first.
+std::vector<float> readSpread(GLuint moments, int width, int height) {
+  std::vector<float> momentPixels(size_t(width) * height * 4), spread(size_t(width) * height);
+  glGetTextureImage(moments, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(momentPixels.size() * 4), momentPixels.data());
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float* m = &momentPixels[(size_t(height - 1 - y) * width + x) * 4];  // GL rows run bottom-up
+      spread[size_t(y) * width + x] = std::sqrt(std::fmax(m[1] - m[0] * m[0], 0.0f));
+    }
+  return spread;
+}
+
 // The accumulated radiance, presented for the display image, and the luma moments as a spread, both
 // read back top row first.
 GroundTruth readBack(Engine& renderer, GLuint radiance, GLuint moments, int samplesPerAxis) {
@@ -20,28 +32,21 @@ GroundTruth readBack(Engine& renderer, GLuint radiance, GLuint moments, int samp
   truth.samplesPerAxis = samplesPerAxis;
   truth.display = renderer.readDisplay();
   truth.radiance.resize(size_t(width) * height * 4);
-  std::vector<float> momentPixels(truth.radiance.size());
   glGetTextureImage(radiance, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(truth.radiance.size() * 4),
                     truth.radiance.data());
-  glGetTextureImage(moments, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(momentPixels.size() * 4), momentPixels.data());
-  truth.lumaStdDev.resize(size_t(width) * height);
+  truth.lumaStdDev = readSpread(moments, width, height);
   std::vector<float> flipped(truth.radiance.size());
-  for (int y = 0; y < height; ++y) {
-    const int source = height - 1 - y;  // GL rows run bottom-up
-    std::copy_n(truth.radiance.begin() + size_t(source) * width * 4, width * 4,
+  for (int y = 0; y < height; ++y)  // GL rows run bottom-up
+    std::copy_n(truth.radiance.begin() + size_t(height - 1 - y) * width * 4, width * 4,
                 flipped.begin() + size_t(y) * width * 4);
-    for (int x = 0; x < width; ++x) {
-      const float* m = &momentPixels[(size_t(source) * width + x) * 4];
-      truth.lumaStdDev[size_t(y) * width + x] = std::sqrt(std::fmax(m[1] - m[0] * m[0], 0.0f));
-    }
-  }
   truth.radiance = std::move(flipped);
   return truth;
 }
 
 }  // namespace
 
-GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int samplesPerAxis, TextureFootprint footprint) {
+GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int samplesPerAxis, TextureFootprint footprint,
+                              BackgroundEdges backgroundEdges) {
   const int width = renderer.width(), height = renderer.height();
   renderer.setStockPath(true);
 
@@ -91,6 +96,18 @@ GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int sample
         glDisable(GL_BLEND);
       }
   };
+  // The models' edges alone: the spread again with the background's detail off, accumulated and read
+  // back on its own before the frames that keep it.
+  std::vector<float> modelSpread;
+  if (backgroundEdges == BackgroundEdges::Apart && renderer.hasBackgroundDetail()) {
+    renderer.setMaterialMapsOn(false);
+    renderer.setBackgroundDetailOn(false);
+    accumulatePass(false, true);
+    renderer.setBackgroundDetailOn(true);
+    renderer.setMaterialMapsOn(true);
+    modelSpread = readSpread(moments, width, height);
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
+  }
   if (anyMaps) {
     renderer.setMaterialMapsOn(false);
     accumulatePass(false, true);
@@ -101,6 +118,7 @@ GroundTruth renderGroundTruth(Engine& renderer, const Camera& camera, int sample
   }
 
   GroundTruth truth = readBack(renderer, radiance, moments, samplesPerAxis);
+  truth.modelLumaStdDev = std::move(modelSpread);
   renderer.setTextureLodBias(0.0f);
   renderer.setStockPath(false);
   return truth;
