@@ -13,6 +13,10 @@ void PluginContext::warn(const std::string& message) {
   if (log) log(LogLevel::Warning, message);
 }
 
+void PluginContext::inform(const std::string& message) {
+  if (log) log(LogLevel::Info, message);
+}
+
 float PluginContext::footprintTan(const FrameInfo& frame) const {
   const float aspect = float(layout.width) / float(layout.height);
   const float horizontalFov = 2.0f * std::atan(std::tan(frame.verticalFovRadians * 0.5f) * aspect);

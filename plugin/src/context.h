@@ -40,6 +40,8 @@ struct PluginContext {
   double budgetScale = 1.0;                     // multiplies the refinement of Technique::followsBudget (budget mode)
 
   void warn(const std::string& message);
+  // What the plugin chose from the layout, where the layout is as documented: the log at Info, not a warning.
+  void inform(const std::string& message);
   uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }
   // tan(hfov / width): one pixel's footprint per metre of depth, Eq. 1's scale.
   float footprintTan(const FrameInfo& frame) const;

@@ -125,7 +125,9 @@ class TemporalTechnique : public Technique {
         output = sceneColourTexture(layout);
         t.beforeTonemap_ = true;
       } else {
-        context.warn("temporal_before_tonemap=on: " + why + "; accumulating the display after tonemapping instead");
+        // A layout lit straight into the display is a documented pattern (integration.md's window-lit
+        // example, the second host): where to accumulate follows from it, said at Info, not warned.
+        context.inform("temporal_before_tonemap=on: " + why + "; accumulating the display after tonemapping instead");
       }
     }
     if (!t.beforeTonemap_) {
@@ -432,8 +434,8 @@ std::vector<Key> temporalKeys() {
              "from temporal_lod_bias to this with the share of such pixels, counted frames later"),
       onOff("temporal_before_tonemap", &Config::temporalBeforeTonemap,
             "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather "
-            "than on the display (where the layout has no single float light target, after tonemapping with a "
-            "warning); resets the history"),
+            "than on the display (where the layout has no single float light target, after tonemapping, said in "
+            "the log at Info); resets the history"),
   };
 }
 
