@@ -359,9 +359,13 @@ void writeReferenceImages(const std::string& directory, const Session& session, 
   const int w = session.renderer->width(), h = session.renderer->height();
   std::filesystem::create_directories(directory);
   writeImage8(directory + "/ground-truth.png", w, h, reference.truthRgba, session.metadata("ground-truth"));
+  // White: the models' edges; blue: those only the background's own detail (stars) makes.
   std::vector<uint8_t> mask(size_t(w) * h * 4, 255);
-  for (size_t p = 0; p < reference.edges.size(); ++p)
-    mask[p * 4] = mask[p * 4 + 1] = mask[p * 4 + 2] = reference.edges[p] ? 255 : 0;
+  for (size_t p = 0; p < reference.edges.size(); ++p) {
+    const bool background = !reference.backgroundEdges.empty() && reference.backgroundEdges[p];
+    mask[p * 4] = mask[p * 4 + 1] = reference.edges[p] && !background ? 255 : 0;
+    mask[p * 4 + 2] = reference.edges[p] ? 255 : 0;
+  }
   writeImage8(directory + "/edge-mask.png", w, h, mask);
 }
 
