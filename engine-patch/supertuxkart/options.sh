@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The anti-aliasing choice in SuperTuxKart's graphics settings, as a player makes it: from the menu, the
 # video options' custom settings dialog shows CHOICE and is applied (OUT/options/options.png, the window
-# with the dialog); a race started afterwards renders with the choice saved in config.xml; a saved choice
+# with the dialog, judged by options_check.py); a race started afterwards renders with the choice saved in config.xml; a saved choice
 # this build does not know falls back to off, with one message naming it.
 #   usage: options.sh STK_BINARY CHOICE OUT
 set -euo pipefail
@@ -25,7 +25,11 @@ xvfb-run -a -s "-screen 0 1024x768x24" timeout --kill-after=15 300 "$binary" --s
   { tail -20 "$out/options/stk.log" >&2; echo "options: SuperTuxKart failed in the options dialog ($out/options/stk.log)" >&2; exit 1; }
 saved=$(sed -n 's/.*<retroaa value="\([^"]*\)".*/\1/p; s/^ *retroaa="\([^"]*\)".*/\1/p' "$config" | head -1)
 check "the dialog's Apply saved the choice in config.xml" "$([ "$saved" = "$choice" ] && echo 1)" "retroaa=\"$saved\""
-check "options.png written" "$([ -f "$out/options/options.png" ] && echo 1)" "$out/options/options.png"
+# The picture as the window shows it, judged: the panel drawn, every text on one line inside its box,
+# none over another, every choice's label and hint fitting.
+python3 "$here/options_check.py" "$out/options" | sed 's/^\([0-9]* passed\)/dialog: \1/' | tee "$out/options/check.txt"
+check "the dialog as drawn" "$(grep -q '^dialog: [0-9]* passed, 0 failed' "$out/options/check.txt" && echo 1)" \
+  "$out/options/options.png; $(tail -1 "$out/options/check.txt")"
 
 # A race from the saved choice: the capture's method "chosen" is whatever is in effect.
 bash "$here/capture.sh" "$binary" olivermath 320x240 20 chosen "$out/race" 1 >/dev/null
@@ -39,5 +43,17 @@ spec=$(python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).readline(
 messages=$(grep -c "saved anti-aliasing 'no-such-method'" "$out/home/config/supertuxkart/config-0.10/stdout.log" || true)
 check "an unknown saved choice falls back to off" "$([ "$spec" = off ] && echo 1)" "captured '$spec'"
 check "with one message naming it" "$([ "$messages" = 1 ] && echo 1)" "$messages messages"
-echo "$((5 - failed)) passed, $failed failed"
+# A choice made in config.xml that the dialog's list does not name (a preset): shown as "Custom" and
+# kept by Apply.
+sed -i 's/retroaa="[^"]*"/retroaa="preset=high"/' "$config"
+mkdir -p "$out/custom"
+xvfb-run -a -s "-screen 0 1024x768x24" timeout --kill-after=15 300 "$binary" --screensize=1024x768 --windowed \
+  --no-sound --enable-dynamic-lights --aa-capture="$out/custom" --aa-options=preset=high >"$out/custom/stk.log" 2>&1 ||
+  { tail -20 "$out/custom/stk.log" >&2; echo "options: SuperTuxKart failed in the options dialog ($out/custom/stk.log)" >&2; exit 1; }
+shown=$(python3 -c 'import json,sys; r=json.loads(open(sys.argv[1]).readline()); print(" ".join(t["text"] for t in r["texts"]))' \
+  "$out/custom/capture.jsonl")
+check "a config.xml choice outside the list shows as Custom" "$(case "$shown" in *" Custom "*) echo 1;; esac)" \
+  "$(grep -o 'retroaa="[^"]*"' "$config")"
+check "and Apply keeps it" "$(grep -q 'retroaa="preset=high"' "$config" && echo 1)" "$(grep -o 'retroaa="[^"]*"' "$config")"
+echo "$((7 - failed)) passed, $failed failed"
 [ "$failed" = 0 ]

@@ -43,6 +43,11 @@ void FrameStatistics::beginPass(const char* name, bool measured, uint64_t minimu
   if (!slot || !measured || passDepth_++ > 0) return;
   PassQueries pass{name, 0, 0, 0, minimumBytes, bytesPerInvocation, {}};
   if (timerQueries_) {
+    // A tiling rasterizer (llvmpipe, a mobile GPU) runs a query begun while the previous target's draws
+    // are still binned inside each of their tiles, so the timer would span the whole earlier pass (the
+    // host's G-buffer: STK cornfield_crossing's resolve read 14.3 ms, 3.7 without it). A flush closes
+    // that batch first; it never waits.
+    glFlush();
     pass.time = slot->timePool.next(queries_);
     glBeginQuery(GL_TIME_ELAPSED, pass.time);
   }
