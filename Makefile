@@ -56,6 +56,8 @@ STK_REPORT_METHODS = off stk-mlaa fxaa smaa resolve resolve/front resolve/back r
 # (out/stk/race: STK's AI drives, each method from the start, frames 600-607 at 320x240 against the same
 # frames at 1280x960; the kart and the wires scored apart).
 STK_RACE_METHODS = off fxaa smaa reconstruct resolve edge per-sample temporal reconstruct+temporal
+# Races with three AI opponents on each track (temporal's swing, flicker and karts among other karts).
+STK_OPPONENT_RACE_METHODS = fxaa edge temporal
 STK_RACE_SCORE = --region kart=120,110,80,75 --region wires=160,0,160,70 --crop 128,112,64 --crop 200,20,64
 stk-report: stk
 	for effects in "--particles" "--effects --no-ssao"; do for track in $(STK_TRACKS); do \
@@ -66,6 +68,9 @@ stk-report: stk
 	  $(RETROAA) score $$dir --reference $$dir/reference/off.png --factor 4 --crop $$crop || exit 1; done; done
 	bash $(STK_DIR)/race.sh $(STK) $(RETROAA) cornfield_crossing 320x240 607 8 "$(STK_RACE_METHODS)" out/stk/race \
 	  $(STK_RACE_SCORE)
+	for track in $(STK_TRACKS); do \
+	  bash $(STK_DIR)/race.sh $(STK) $(RETROAA) $$track 320x240 607 8 "$(STK_OPPONENT_RACE_METHODS)" \
+	    out/stk/race-opponents/$$track --karts=4 --region kart=120,110,80,75 || exit 1; done
 
 # What the plugin's own passes cost inside SuperTuxKart, each beside its floor (a pass of the same shape that
 # only moves its bytes), on the report's three tracks at 320x240, 10 timed frames each: out/stk/cost/

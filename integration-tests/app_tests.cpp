@@ -310,3 +310,51 @@ TEST(Cli, ScoreRatesAForeignEnginesCapturesAgainstItsSupersampledReference) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find("capture.jsonl: cannot read"), std::string::npos) << r.output;
 }
+
+TEST(Cli, ScoreTellsTheSkysOwnEdgesFromTheModels) {
+  // A 4x reference: geometry (black) left of x = 8.5 pixels, sky right of it with a step of its own (a
+  // cloud's rim) at x = 12.5, white to grey; background.png marks the sky. The capture `exact` is the
+  // box filter; `cloudless` gets the geometry's edge right and draws the cloud's rim a pixel late in the sky.
+  const std::string dir = temp("score-sky");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/ref");
+  const int w = 16, h = 12, f = 4;
+  std::vector<uint8_t> reference(size_t(w * f) * h * f * 4, 255), background(reference.size(), 255);
+  for (int y = 0; y < h * f; ++y)
+    for (int x = 0; x < w * f; ++x)
+      for (int c = 0; c < 3; ++c) {
+        reference[(size_t(y) * w * f + x) * 4 + c] = x < 34 ? 0 : x < 50 ? 255 : 128;
+        background[(size_t(y) * w * f + x) * 4 + c] = x >= 34 ? 255 : 0;
+      }
+  app::writeImage8(dir + "/ref/reference.png", w * f, h * f, reference);
+  app::writeImage8(dir + "/ref/background.png", w * f, h * f, background);
+  auto capture = [&](const std::string& name, int skyRim) {  // the rim's column in the sky's rows
+    std::vector<uint8_t> rgba(size_t(w) * h * 4, 255);
+    for (int y = 0; y < h; ++y) {
+      const int rim = y == 0 || y == h - 1 ? 12 : skyRim;  // rows 0 and h-1 are not sky: always right
+      for (int x = 0; x < w; ++x)  // the means in linear light: of 0 and 255, 188; of 255 and 128, 205
+        for (int c = 0; c < 3; ++c)
+          rgba[(size_t(y) * w + x) * 4 + c] = x < 8 ? 0 : x == 8 ? 188 : x < rim ? 255 : x == rim ? 205 : 128;
+    }
+    app::writeImage8(dir + "/" + name + ".png", w, h, rgba);
+  };
+  capture("exact", 12);
+  capture("cloudless", 13);
+  std::ofstream(dir + "/capture.jsonl") << R"({"spec": "off", "image": "exact.png"})"
+                                        << "\n"
+                                        << R"({"spec": "late-rim", "image": "cloudless.png"})"
+                                        << "\n";
+  CliRun r = runCli("score " + dir + " --reference " + dir + "/ref/reference.png --factor 4");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  nlohmann::json report;
+  std::ifstream(dir + "/report.json") >> report;
+  ASSERT_EQ(report.size(), 2u);
+  // Sky: x = 10..14 (every 3x3 neighbour marked), rows 1..10; the rim's pixel x = 12 is an edge in it.
+  EXPECT_EQ(report[0]["edge_pixels"], 2 * h);
+  EXPECT_EQ(report[0]["background_edge_pixels"], h - 2);
+  EXPECT_EQ(report[0]["model_edge_pixels"], h + 2) << "the rim's top and bottom rows are not sky";
+  EXPECT_GT(report[1]["model_edge_psnr_db"].get<double>(), 30.0) << "the geometry's edge is right";
+  EXPECT_LT(report[1]["background_edge_psnr_db"].get<double>(), 25.0) << "the rim is a pixel late";
+  EXPECT_LT(report[1]["edge_psnr_db"].get<double>(), report[1]["model_edge_psnr_db"].get<double>());
+  EXPECT_NE(r.output.find("model edge dB"), std::string::npos) << r.output;
+}

@@ -96,6 +96,12 @@ void copyLayoutTexture(const GBufferLayout& layout, GLuint from, GLuint to) {
   glCopyImageSubData(from, GL_TEXTURE_2D, 0, 0, 0, 0, to, GL_TEXTURE_2D, 0, 0, 0, 0, layout.width, layout.height, 1);
 }
 
+bool holdsFloats(GLuint texture) {
+  GLint redType = 0;
+  if (texture && glIsTexture(texture)) glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_RED_TYPE, &redType);
+  return redType == GL_FLOAT;
+}
+
 uint64_t bytesPerTexel(GLenum internalFormat) {
   switch (internalFormat) {
     case GL_RGBA32F: return 16;

@@ -94,6 +94,9 @@ class GlFence {
   GLsync sync_ = nullptr;
 };
 
+// Whether `texture` is a texture whose texels are floats (GL_RGBA16F, GL_R11F_G11F_B10F, ...); false for 0,
+// a name that is not a texture, and normalised formats (a display's RGBA8 or sRGB).
+bool holdsFloats(GLuint texture);
 // Bytes per texel of the formats the plugin allocates (for Stats::bytesHeld).
 uint64_t bytesPerTexel(GLenum internalFormat);
 // Whether a colour target of this format takes image stores (GL 4.5 core, table 8.27: float and

@@ -79,11 +79,6 @@ Status validateLayout(const GBufferLayout& layout) {
   }
   if (!layout.extraLightTextures.empty()) {
     // The slices composite into each light output directly, with blending: every one must hold floats.
-    auto holdsFloats = [](GLuint texture) {
-      GLint redType = 0;
-      if (glIsTexture(texture)) glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_RED_TYPE, &redType);
-      return redType == GL_FLOAT;
-    };
     if (!holdsFloats(layout.lightTexture))
       return invalid("extraLightTextures needs a lightTexture that holds floats (lightTexture " +
                      std::to_string(layout.lightTexture) + " does not)");

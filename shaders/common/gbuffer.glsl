@@ -20,6 +20,17 @@
 layout(binding = 0) uniform GBUFFER_SAMPLER uAttachments[ATTACHMENT_COUNT];
 layout(binding = UNIT_DEPTH_STENCIL) uniform GBUFFER_SAMPLER uDepthBuffer;  // the MSAA depth buffer (encoding-agnostic)
 
+// The G-buffer's size in pixels (a supersampled one holds SUPERSAMPLE² texels a pixel).
+ivec2 gbufferPixels() {
+#if SUPERSAMPLE > 1
+  return textureSize(uDepthBuffer, 0) / SUPERSAMPLE;
+#elif MULTISAMPLED
+  return textureSize(uDepthBuffer);
+#else
+  return textureSize(uDepthBuffer, 0);
+#endif
+}
+
 // View depth of sample s in metres; +inf for background (and for NaN, which reads as background).
 float distanceOfStored(float stored) {
   if (isBackground(stored)) return 1.0 / 0.0;

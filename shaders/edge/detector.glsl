@@ -9,17 +9,6 @@
 uniform float uDepthCloseness;  // c of the depth detector
 uniform float uNormalCosine;    // cos(angle) of the normal detector
 
-// The G-buffer's size in pixels (a supersampled one holds SUPERSAMPLE² texels a pixel).
-ivec2 pixelCount() {
-#if SUPERSAMPLE > 1
-  return textureSize(uDepthBuffer, 0) / SUPERSAMPLE;
-#elif MULTISAMPLED
-  return textureSize(uDepthBuffer);
-#else
-  return textureSize(uDepthBuffer, 0);
-#endif
-}
-
 // The depth slope of the pixel's own surface along one axis, from sample 0 of its two neighbours: the
 // smaller one-sided difference, since the side that crosses a silhouette has the larger one (Lauritzen's
 // dFdx takes whichever side the quad pairs, and a silhouette's then hides every sample behind it). Where
@@ -37,7 +26,7 @@ float surfaceSlope(float before, float centre, float after) {
 bool samplesShareOnePlane(ivec2 pixel) {
   float d0 = sampleDistance(pixel, 0);
   vec3 n0 = sampleNormal(pixel, 0);
-  ivec2 last = pixelCount() - 1;
+  ivec2 last = gbufferPixels() - 1;
   float slope = 0.0;
   if (!isinf(d0)) {
     slope = surfaceSlope(sampleDistance(ivec2(max(pixel.x - 1, 0), pixel.y), 0), d0,

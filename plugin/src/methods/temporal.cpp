@@ -101,9 +101,7 @@ std::string whyNotBeforeTonemap(const GBufferLayout& layout) {
   if (!layout.composedTexture && !layout.extraLightTextures.empty())
     return "the layout's lighting writes " + std::to_string(1 + layout.extraLightTextures.size()) +
            " outputs (extraLightTextures), which tonemapping combines";
-  GLint redType = 0;
-  glGetTextureLevelParameteriv(sceneColourTexture(layout), 0, GL_TEXTURE_RED_TYPE, &redType);
-  if (redType != GL_FLOAT)
+  if (!holdsFloats(sceneColourTexture(layout)))
     return layout.composedTexture ? "the layout's composedTexture holds no floats"
                                   : "the layout's lightTexture holds no floats (lit straight into the display?)";
   return "";

@@ -17,6 +17,16 @@ constexpr std::initializer_list<const char*> kResolveUniforms = {RETROAA_GBUFFER
 // … and of the counting resolve, which adds edge/detector.glsl's.
 constexpr std::initializer_list<const char*> kCountingResolveUniforms = {
     RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness", "uDepthCloseness", "uNormalCosine"};
+
+// The defines every resolve program takes: the G-buffer's, and how an even split is decided. A host that
+// lights into floats is judged against radiance averaged before its tonemap, where a bright near feature
+// dominates a pixel it half covers: the nearer middle sample stays the reference. One that lights into
+// its display's clamped values is judged by the coverage-weighted display value: the pixel's neighbours
+// decide which surface covers more of it (resolve.glsl, splitByNeighbours).
+std::string resolveDefines(const GBufferLayout& layout, const MsaaGBuffer& source, bool withOutputs = true) {
+  return source.shaderDefines(layout, withOutputs) +
+         defineLine("SPLIT_BY_NEIGHBOURS", !holdsFloats(layout.lightTexture));
+}
 }  // namespace
 
 Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context, const MsaaGBuffer& source) {
@@ -25,7 +35,7 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   for (const bool restore : {false, true}) {
     Result<ShaderProgram> program = context.shaders->program(
         "common/fullscreen.vert", "resolve/resolve.frag",
-        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + source.shaderDefines(layout), kResolveUniforms);
+        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + resolveDefines(layout, source), kResolveUniforms);
     if (!program) return program.error();
     (restore ? pass->restoreProgram_ : pass->program_) = std::move(program.value());
   }
@@ -80,7 +90,7 @@ Status ResolvePass::createCompute(PluginContext& context, const MsaaGBuffer& sou
     return Status::ok();
   }
   auto program =
-      context.shaders->computeProgram("resolve/resolve.comp", source.shaderDefines(layout, false), kResolveUniforms);
+      context.shaders->computeProgram("resolve/resolve.comp", resolveDefines(layout, source, false), kResolveUniforms);
   if (!program) return program.error();
   auto writeDepth =
       context.shaders->program("common/fullscreen.vert", "resolve/write_depth.frag", "", {"uResolvedDepth"});
@@ -112,13 +122,13 @@ void drawResolve(PluginContext& context, const ShaderProgram& program, const Msa
 }  // namespace
 
 Result<const ShaderProgram*> ResolvePass::countingProgram(PluginContext& context, const MsaaGBuffer& source,
-                                                         EdgeDetector detector) {
+                                                          EdgeDetector detector) {
   auto found = countingPrograms_.find(detector);
   if (found != countingPrograms_.end()) return &found->second;
   Result<ShaderProgram> program =
       context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag",
                                "#define RESOLVE_COUNTS 1\n" + defineLine("EDGE_DETECTOR", int(detector)) +
-                                   source.shaderDefines(context.layout),
+                                   resolveDefines(context.layout, source),
                                kCountingResolveUniforms);
   if (!program) return program.error();
   return &countingPrograms_.emplace(detector, std::move(program.value())).first->second;
