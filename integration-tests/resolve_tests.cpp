@@ -98,6 +98,19 @@ TEST(Resolve, ImprovesEdgePsnrOnIntraModelAliasing) {
   EXPECT_GT(resolved.ssim, off.ssim);
 }
 
+TEST(Resolve, AnEvenSplitKeepsTheNearerSurfaceWhereTheLayoutLightsIntoFloats) {
+  // This host lights into RGBA16F and its ground truth averages radiance: a greeble half covering a pixel
+  // dominates it, so resolve_even_split=auto takes the nearer middle, and the neighbourhood's pick is worse.
+  PatchedHost host(testDataPath("scenes/intra_model.json"), 160, 120);
+  const ScoringTruth truth = host.scoringTruth(4);
+  const app::DisplayImage automatic = host.render("resolve");
+  const app::DisplayImage nearer = host.render("resolve@resolve_even_split=nearer");
+  const app::DisplayImage neighbours = host.render("resolve@resolve_even_split=neighbours");
+  EXPECT_EQ(automatic.rgb, nearer.rgb);
+  EXPECT_NE(neighbours.rgb, nearer.rgb) << "the scene has pixels split 2 of 4";
+  EXPECT_GT(truth.score(nearer).edgePsnrDb, truth.score(neighbours).edgePsnrDb + 1.0);
+}
+
 TEST(Resolve, StackedWithFxaaIsNoWorseThanFxaaAlone) {
   PatchedHost host("default", 240, 180);
   const ScoringTruth truth = host.scoringTruth(8);

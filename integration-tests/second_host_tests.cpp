@@ -172,6 +172,19 @@ const std::set<std::string> kMatrix = {"off",      "fxaa",      "resolve",  "edg
                                        "adaptive", "aggregate", "coverage", "reconstruct", "smaa",
                                        "smaa-s2x", "ssaa",      "temporal"};
 
+TEST(SecondHost, AnEvenSplitIsDecidedByTheNeighbourhoodWhereTheLayoutLightsIntoItsDisplay) {
+  // This host lights straight into its sRGB display: resolve_even_split=auto asks the 3x3 neighbourhood,
+  // which is at least as good on edges as the nearer middle against its display-averaged ground truth.
+  SecondHost host;
+  const app::DisplayImage automatic = host.render("resolve");
+  const app::DisplayImage neighbours = host.render("resolve@resolve_even_split=neighbours");
+  const app::DisplayImage nearer = host.render("resolve@resolve_even_split=nearer");
+  EXPECT_EQ(automatic.rgb, neighbours.rgb);
+  EXPECT_NE(neighbours.rgb, nearer.rgb) << "the scene has pixels split 2 of 4";
+  const ScoringTruth scoring = scoringTruth(host);
+  EXPECT_GE(scoring.score(neighbours).edgePsnrDb, scoring.score(nearer).edgePsnrDb);
+}
+
 TEST(SecondHost, TheMatrixNamesEveryMethod) {
   for (const retroaa::MethodInfo& row : retroaa::methodTable())
     EXPECT_TRUE(kMatrix.count(row.name)) << row.name << " has no SecondHost test";

@@ -28,6 +28,7 @@ const char* toString(Method method) {
 }
 
 const char* toString(ResolveWeighting weighting) { return nameIn(kWeightings, weighting); }
+const char* toString(ResolveEvenSplit split) { return nameIn(kEvenSplits, split); }
 const char* toString(FxaaQuality quality) { return nameIn(kFxaaQualities, quality); }
 const char* toString(SmaaQuality quality) { return nameIn(kSmaaQualities, quality); }
 const char* toString(SmaaEdgeDetection detection) { return nameIn(kSmaaEdgeDetections, detection); }

@@ -36,6 +36,7 @@ struct PluginContext {
   Stats frameStats;                             // of the frame in flight: what the CPU knows of it (slice count)
   std::unique_ptr<FrameStatistics> statistics;  // what the GPU counts of it, read back frames later
   bool timePasses = false;                      // measure_gpu_time, or a budget that needs the times
+  bool lightsIntoFloats = false;                // the layout's lightTexture holds floats (not display values)
   std::unique_ptr<PassFloors> floors;           // measure_pass_floors: each measured pass's floor (null: off)
   double budgetScale = 1.0;                     // multiplies the refinement of Technique::followsBudget (budget mode)
 

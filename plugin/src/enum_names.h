@@ -21,6 +21,9 @@ inline constexpr Named<EdgeDetector> kEdgeDetectors[] = {
 inline constexpr Named<ResolveWeighting> kWeightings[] = {
     {ResolveWeighting::Median, "median"}, {ResolveWeighting::Front, "front"}, {ResolveWeighting::Back, "back"},
     {ResolveWeighting::Fso, "fso"},       {ResolveWeighting::Mean, "mean"},   {ResolveWeighting::Window, "window"}};
+inline constexpr Named<ResolveEvenSplit> kEvenSplits[] = {{ResolveEvenSplit::Auto, "auto"},
+                                                          {ResolveEvenSplit::Nearer, "nearer"},
+                                                          {ResolveEvenSplit::Neighbours, "neighbours"}};
 inline constexpr Named<FxaaQuality> kFxaaQualities[] = {
     {FxaaQuality::Low, "low"}, {FxaaQuality::Medium, "medium"}, {FxaaQuality::High, "high"}};
 inline constexpr Named<SmaaQuality> kSmaaQualities[] = {{SmaaQuality::Low, "low"},

@@ -244,6 +244,7 @@ Status Plugin::Impl::setLayout(const GBufferLayout& host) {
   }
   if (Status status = validateLayout(layout); !status) return status;
   context.layout = layout;
+  context.lightsIntoFloats = holdsFloats(layout.lightTexture);
   depthMirror.reset();
   return Status::ok();
 }

@@ -35,7 +35,8 @@ namespace {
 
 constexpr uint32_t kSliced = kStorageMsaaGBuffer | kStorageSlices;
 // The resolve's keys, which every method on the MSAA G-buffer reads: each renders into it and runs the resolve.
-const std::vector<const char*> kResolveKeys = {"supersample", "resolve_weighting", "resolve_compute", "closeness"};
+const std::vector<const char*> kResolveKeys = {"supersample", "resolve_weighting", "resolve_even_split",
+                                               "resolve_compute", "closeness"};
 
 // Built once, on first use, and never changed: every plugin, tool and thread reads one table.
 const std::vector<TechniqueRow>& rows() {

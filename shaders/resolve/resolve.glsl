@@ -12,6 +12,7 @@
 #include "common/gbuffer.glsl"
 
 uniform int uWeighting;          // one of WEIGHTING_* (injected from the C++ enum)
+uniform bool uSplitByNeighbours; // resolve_even_split: an even split decided by the 3x3 neighbourhood
 uniform float uFootprintTan;     // tan(hfov / width): Eq. 1's pixel footprint per metre
 uniform float uFsoFootprintTan;  // tan(vfov / height): FreeSpace Open's texelWidthFactor
 uniform float uCloseness;        // c of Eq. 1
@@ -59,7 +60,6 @@ vec4 fetched[SAMPLES][ATTACHMENT_COUNT];
 #define SAMPLE_MARKED_BACKGROUND(s) isBackground(SAMPLE_VALUE(POSITION_ATTACHMENT, s)[DEPTH_CHANNEL])
 #endif
 
-#if SPLIT_BY_NEIGHBOURS
 // A sample's view distance at another pixel, as SAMPLE_DISTANCE gives it here (+inf for background).
 float distanceAt(ivec2 q, int s) {
 #if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
@@ -90,7 +90,6 @@ bool fartherSurfaceCoversMore(ivec2 pixel, float nearMiddle, float farMiddle) {
       }
   return balance <= 0;
 }
-#endif
 
 // The resolved values of `pixel`: one per host attachment, and the value for the host's depth buffer.
 void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float depth) {
@@ -147,9 +146,8 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
     if (s == reference) dRef = distance[s];
     if (s == nextInOrder) dNext = distance[s];
   }
-#if SPLIT_BY_NEIGHBOURS
   // The median of an even count split evenly between two surfaces: each half within Eq. 1 of its middle.
-  if (uWeighting == WEIGHTING_MEDIAN && usableCount % 2 == 0 && !isinf(dRef)) {
+  if (uSplitByNeighbours && uWeighting == WEIGHTING_MEDIAN && usableCount % 2 == 0 && !isinf(dRef)) {
     int nearHalf = 0, farHalf = 0;
     for (int s = 0; s < SAMPLES; ++s)
       if (usable[s]) {
@@ -163,7 +161,6 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
       dRef = dNext;
     }
   }
-#endif
   float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
   bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
 

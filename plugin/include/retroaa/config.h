@@ -53,6 +53,16 @@ enum class ResolveWeighting : uint8_t {
            // weight within ±2.5 footprints, none past ±5
 };
 
+// How the default `median` weighting decides a pixel split evenly between two surfaces (2 of 4 samples on
+// each), which its own samples cannot: which surface is right depends on whether the pixel is judged by
+// the average of its radiance (a bright near feature dominates) or of its display values (the surface
+// covering more of it).
+enum class ResolveEvenSplit : uint8_t {
+  Auto,        // `neighbours` where the layout lights into its display, `nearer` where it lights into floats
+  Nearer,      // the nearer middle sample
+  Neighbours,  // the surface the pixel's 3x3 neighbourhood says covers more of it (the farther where it cannot say)
+};
+
 enum class FxaaQuality : uint8_t {
   Low,     // FXAA 3.11 preset 10: 3 search steps
   Medium,  // preset 20: 6 search steps
@@ -87,6 +97,7 @@ struct Config {
   float cutOutSampleShading = 1.0f;  // `cutout_sample_shading` (the host applies Plugin::cutOutDrawSettings())
   // The resolve, which every MSAA G-buffer method runs.
   ResolveWeighting resolveWeighting = ResolveWeighting::Median;  // `resolve_weighting`
+  ResolveEvenSplit resolveEvenSplit = ResolveEvenSplit::Auto;    // `resolve_even_split`
   bool resolveCompute = false;                                   // `resolve_compute`
   float closeness = 5.0f;                                        // `closeness`
   // `edge`.
@@ -186,6 +197,7 @@ RETROAA_API int historyFrames(const Config& config);
 
 RETROAA_API const char* toString(Method method);
 RETROAA_API const char* toString(ResolveWeighting weighting);
+RETROAA_API const char* toString(ResolveEvenSplit split);
 RETROAA_API const char* toString(FxaaQuality quality);
 RETROAA_API const char* toString(EdgeDetector detector);
 RETROAA_API const char* toString(SmaaQuality quality);

@@ -12,21 +12,16 @@ namespace retroaa {
 
 namespace {
 // The uniforms resolve.glsl declares, for each of its three programs.
-constexpr std::initializer_list<const char*> kResolveUniforms = {RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting",
-                                                                 "uFsoFootprintTan", "uCloseness"};
+constexpr std::initializer_list<const char*> kResolveUniforms = {
+    RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uSplitByNeighbours", "uFsoFootprintTan", "uCloseness"};
 // … and of the counting resolve, which adds edge/detector.glsl's.
-constexpr std::initializer_list<const char*> kCountingResolveUniforms = {
-    RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uFsoFootprintTan", "uCloseness", "uDepthCloseness", "uNormalCosine"};
-
-// The defines every resolve program takes: the G-buffer's, and how an even split is decided. A host that
-// lights into floats is judged against radiance averaged before its tonemap, where a bright near feature
-// dominates a pixel it half covers: the nearer middle sample stays the reference. One that lights into
-// its display's clamped values is judged by the coverage-weighted display value: the pixel's neighbours
-// decide which surface covers more of it (resolve.glsl, splitByNeighbours).
-std::string resolveDefines(const GBufferLayout& layout, const MsaaGBuffer& source, bool withOutputs = true) {
-  return source.shaderDefines(layout, withOutputs) +
-         defineLine("SPLIT_BY_NEIGHBOURS", !holdsFloats(layout.lightTexture));
-}
+constexpr std::initializer_list<const char*> kCountingResolveUniforms = {RETROAA_GBUFFER_PASS_UNIFORMS,
+                                                                         "uWeighting",
+                                                                         "uSplitByNeighbours",
+                                                                         "uFsoFootprintTan",
+                                                                         "uCloseness",
+                                                                         "uDepthCloseness",
+                                                                         "uNormalCosine"};
 }  // namespace
 
 Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context, const MsaaGBuffer& source) {
@@ -35,7 +30,7 @@ Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context,
   for (const bool restore : {false, true}) {
     Result<ShaderProgram> program = context.shaders->program(
         "common/fullscreen.vert", "resolve/resolve.frag",
-        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + resolveDefines(layout, source), kResolveUniforms);
+        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + source.shaderDefines(layout), kResolveUniforms);
     if (!program) return program.error();
     (restore ? pass->restoreProgram_ : pass->program_) = std::move(program.value());
   }
@@ -90,7 +85,7 @@ Status ResolvePass::createCompute(PluginContext& context, const MsaaGBuffer& sou
     return Status::ok();
   }
   auto program =
-      context.shaders->computeProgram("resolve/resolve.comp", resolveDefines(layout, source, false), kResolveUniforms);
+      context.shaders->computeProgram("resolve/resolve.comp", source.shaderDefines(layout, false), kResolveUniforms);
   if (!program) return program.error();
   auto writeDepth =
       context.shaders->program("common/fullscreen.vert", "resolve/write_depth.frag", "", {"uResolvedDepth"});
@@ -109,6 +104,9 @@ void setResolveInputs(PluginContext& context, const ShaderProgram& program, cons
                       const FrameInfo& frame) {
   source.beginPass(program, context, frame);
   program.set("uWeighting", int(context.config.resolveWeighting));
+  const ResolveEvenSplit split = context.config.resolveEvenSplit;
+  program.set("uSplitByNeighbours", int(split == ResolveEvenSplit::Neighbours ||
+                                        (split == ResolveEvenSplit::Auto && !context.lightsIntoFloats)));
   // FreeSpace Open's footprint: tan(fov / height) with the vertical fov it passes (msaa-f.sdr).
   program.set("uFsoFootprintTan", std::tan(frame.verticalFovRadians / float(context.layout.height)));
   program.set("uCloseness", context.config.closeness);
@@ -125,11 +123,10 @@ Result<const ShaderProgram*> ResolvePass::countingProgram(PluginContext& context
                                                           EdgeDetector detector) {
   auto found = countingPrograms_.find(detector);
   if (found != countingPrograms_.end()) return &found->second;
-  Result<ShaderProgram> program =
-      context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag",
-                               "#define RESOLVE_COUNTS 1\n" + defineLine("EDGE_DETECTOR", int(detector)) +
-                                   resolveDefines(context.layout, source),
-                               kCountingResolveUniforms);
+  Result<ShaderProgram> program = context.shaders->program(
+      "common/fullscreen.vert", "resolve/resolve.frag",
+      "#define RESOLVE_COUNTS 1\n" + defineLine("EDGE_DETECTOR", int(detector)) + source.shaderDefines(context.layout),
+      kCountingResolveUniforms);
   if (!program) return program.error();
   return &countingPrograms_.emplace(detector, std::move(program.value())).first->second;
 }
@@ -323,6 +320,11 @@ std::vector<Key> resolveKeys() {
              "reallocates"),
       named("resolve_weighting", &Config::resolveWeighting, kWeightings,
             "how resolve weights a pixel's samples; free per frame"),
+      named("resolve_even_split", &Config::resolveEvenSplit, kEvenSplits,
+            "median's pick where a pixel is split 2 of 4 between two surfaces: nearer (right against a radiance "
+            "average: a bright near feature dominates), neighbours (against a display average: the surface its 3x3 "
+            "neighbourhood says covers more of it), auto (neighbours where the layout lights into its display, "
+            "nearer where it lights into floats); free per frame"),
       onOff("resolve_compute", &Config::resolveCompute,
             "the resolve as a compute pass, the depth through a one-fetch full-screen pass (the same G-buffer; for "
             "GPUs whose pixel shaders run on a small partition; where an attachment's format takes no image stores, "
