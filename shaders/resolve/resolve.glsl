@@ -76,7 +76,7 @@ float distanceAt(ivec2 q, int s) {
 // covers more of it, whatever the edge's slope. Its 3x3 block can: a feature thinner than a pixel, or
 // one ending there, leaves few of the neighbours' samples on its side. True when no more of the eight
 // neighbours' samples lie before the split than beyond it (measured on the hosts that light into their
-// display: with the tie given to the nearer surface the window-lit consumer's model edges were 0.8 dB
+// display: with the tie given to the nearer surface the window-lit consumer's model edges were 0.95 dB
 // worse).
 bool fartherSurfaceCoversMore(ivec2 pixel, float nearMiddle, float farMiddle) {
   float split = isinf(farMiddle) ? farMiddle : 0.5 * (nearMiddle + farMiddle);
