@@ -232,6 +232,7 @@ std::vector<size_t> skyPixels(const ScoreOptions& options, const DisplayImage& b
 // stars off (BackgroundEdges::Apart). Both empty without sky pixels.
 struct EdgesApart {
   std::vector<uint8_t> model, background;
+  size_t modelPixels = 0, backgroundPixels = 0;
 };
 EdgesApart edgesApart(const std::vector<uint8_t>& edges, const std::vector<size_t>& sky) {
   EdgesApart apart;
@@ -239,13 +240,15 @@ EdgesApart edgesApart(const std::vector<uint8_t>& edges, const std::vector<size_
   apart.model = edges;
   apart.background.assign(edges.size(), 0);
   for (const size_t p : sky) std::swap(apart.model[p], apart.background[p]);
+  apart.modelPixels = size_t(std::count(apart.model.begin(), apart.model.end(), 1));
+  apart.backgroundPixels = size_t(std::count(apart.background.begin(), apart.background.end(), 1));
   return apart;
 }
 
-// Edge PSNR over `mask` (null where it marks no pixel).
+// Edge PSNR over `mask`, which marks `pixels` pixels (null where it marks none).
 nlohmann::json maskedEdgePsnr(const DisplayImage& image, const DisplayImage& reference,
-                              const std::vector<uint8_t>& mask) {
-  if (std::count(mask.begin(), mask.end(), 1) == 0) return nlohmann::json();
+                              const std::vector<uint8_t>& mask, size_t pixels) {
+  if (pixels == 0) return nlohmann::json();
   return compare(image, reference, mask).edgePsnrDb;
 }
 
@@ -418,10 +421,11 @@ int score(const ScoreOptions& options) {
         {"interior_psnr_db", method.interiorPsnr / n},
         {"ssim", method.ssim / n},
         {"edge_pixels", method.edgePixels},
-        {"model_edge_psnr_db", maskedEdgePsnr(method.lastFrame, lastReference->image, apart.model)},
-        {"model_edge_pixels", std::count(apart.model.begin(), apart.model.end(), 1)},
-        {"background_edge_psnr_db", maskedEdgePsnr(method.lastFrame, lastReference->image, apart.background)},
-        {"background_edge_pixels", std::count(apart.background.begin(), apart.background.end(), 1)},
+        {"model_edge_psnr_db", maskedEdgePsnr(method.lastFrame, lastReference->image, apart.model, apart.modelPixels)},
+        {"model_edge_pixels", apart.modelPixels},
+        {"background_edge_psnr_db",
+         maskedEdgePsnr(method.lastFrame, lastReference->image, apart.background, apart.backgroundPixels)},
+        {"background_edge_pixels", apart.backgroundPixels},
         {"psnr_swing_db", method.maxPsnr - method.minPsnr},
         {"flicker", method.sequence.flicker()},
         {"lag_psnr_db", lag ? nlohmann::json(*lag) : nlohmann::json()},
@@ -443,10 +447,12 @@ int score(const ScoreOptions& options) {
     std::snprintf(buffer, sizeof buffer, "%.2f | %.2f | ", entry["psnr_db"].get<double>(),
                   entry["edge_psnr_db"].get<double>());
     md << buffer;
-    if (entry["model_edge_psnr_db"].is_null())
+    if (entry["model_edge_psnr_db"].is_null()) {
       md << "– | ";
-    else
-      std::snprintf(buffer, sizeof buffer, "%.2f | ", entry["model_edge_psnr_db"].get<double>()), md << buffer;
+    } else {
+      std::snprintf(buffer, sizeof buffer, "%.2f | ", entry["model_edge_psnr_db"].get<double>());
+      md << buffer;
+    }
     std::snprintf(buffer, sizeof buffer, "%.2f | ", entry["interior_psnr_db"].get<double>());
     md << buffer;
     if (sequence) {
@@ -480,8 +486,7 @@ int score(const ScoreOptions& options) {
                   : "")
      << "; " << sky.size()
      << " sky pixels (no geometry within a pixel of them in the reference), kept = within 1/255 of off; "
-     << "model edges: the " << std::count(apart.model.begin(), apart.model.end(), 1)
-     << " edge pixels outside the sky (the other " << std::count(apart.background.begin(), apart.background.end(), 1)
+     << "model edges: the " << apart.modelPixels << " edge pixels outside the sky (the other " << apart.backgroundPixels
      << " are the sky's own detail; – without a sky mask, as in a race).\n";
   md << floorTable(report);
   std::ofstream(out + "/report.md") << md.str();

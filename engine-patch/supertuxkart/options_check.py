@@ -41,8 +41,7 @@ check("the dialog's panel is drawn over the screen behind", bool(changed) and ch
 
 texts = record["texts"]
 for text in texts:
-    box_w, box_h = text["box"][2], text["box"][3]
-    width, height, lines = text["size"][0], text["size"][1], text["lines"]
+    box_w, width, lines = text["box"][2], text["size"][0], text["lines"]
     check(f"'{text['text']}' fits its box on one line", lines == 1 and width <= box_w,
           f"{width} px wide in {box_w}, {lines} lines")
 
