@@ -12,7 +12,7 @@ constexpr int kUnitSliceCounts = 13;  // the slice counts, for the depth writes 
 constexpr int kUnitSliceWeights = 14;  // a technique's per-pixel input to the slice composite
 constexpr int kUnitDepthStencil = 15;  // the MSAA G-buffer's depth-stencil
 constexpr int kMaxAttachments = 8;     // host G-buffer attachments (units 0..7; a layout may have no more)
-constexpr unsigned kNoSlice = 15u;     // a sample no slice lights (slice assignments: 4 bits per sample)
+constexpr unsigned kNoSlice = 7u;      // a sample no slice lights (slice assignments: 3 bits per sample)
 
 // "#define NAME value\n" for every shared constant and every enum value a shader compares against
 // (WEIGHTING_*, DETECTOR_*, DEPTH_BUFFER_*, DEPTH_SOURCE_*, NORMAL_*), generated from the C++ enums themselves.

@@ -13,6 +13,7 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   limitDepthWriteToSlice(pixel);
   uvec2 assignment = texelFetch(uAssignment, pixel, 0).xy;
+  if ((assignment.y & RESOLVE_HOLDS_AGGREGATE) != 0u) discard;  // the resolved G-buffer is its mean already
   vec4 values[ATTACHMENT_COUNT];
   for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
   float depthSum = 0.0, count = 0.0;

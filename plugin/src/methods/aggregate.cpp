@@ -70,7 +70,7 @@ class AggregateTechnique : public Technique {
 
   SliceRenderer::Plan slicePlan(PluginContext& context, SharedTargets&) override {
     SliceRenderer::Plan plan;
-    plan.firstSliceEverywhere = true;  // aggregate 0 replaces the resolved value of every pixel
+    plan.firstSliceEverywhere = true;  // aggregate 0 replaces the resolved value where it differs
     plan.sliceCount = std::min(aggregateCount_, samples_) + 1;  // + background
     plan.writeProgram = &writeProgram_;
     plan.writeDepthProgram = &writeDepthProgram_;
