@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 
 namespace app {
 
@@ -30,7 +29,7 @@ FrameReference renderReference(Session& session, const host::Camera& camera, int
   reference.truth = DisplayImage::fromRgba8(w, h, truth.display);
   reference.edges = edgeMaskFromSpread(truth.lumaStdDev);
   if (!truth.modelLumaStdDev.empty()) {
-    reference.modelEdges = edgeMaskFromSpread(truth.modelLumaStdDev);
+    reference.modelEdges = modelEdgeMask(truth.lumaStdDev, truth.modelLumaStdDev);
     reference.backgroundEdges.resize(reference.edges.size());
     for (size_t p = 0; p < reference.edges.size(); ++p)
       reference.backgroundEdges[p] = reference.edges[p] && !reference.modelEdges[p];

@@ -116,6 +116,17 @@ std::vector<uint8_t> edgeMaskFromSpread(const std::vector<float>& lumaStdDev, fl
   return mask;
 }
 
+std::vector<uint8_t> modelEdgeMask(const std::vector<float>& lumaStdDev,
+                                   const std::vector<float>& withoutBackgroundDetail) {
+  // Where the background has no detail, both spreads come from the same samples of the same frame: equal
+  // to the bit. A faint star behind an edge changes it by more than this.
+  constexpr float kBackgroundDetailSpread = 1.0f / 512.0f;
+  std::vector<uint8_t> mask = edgeMaskFromSpread(withoutBackgroundDetail);
+  for (size_t i = 0; i < mask.size(); ++i)
+    if (std::fabs(lumaStdDev[i] - withoutBackgroundDetail[i]) > kBackgroundDetailSpread) mask[i] = 0;
+  return mask;
+}
+
 std::vector<uint8_t> errorHeatmap(const DisplayImage& image, const DisplayImage& reference, float scale) {
   std::vector<uint8_t> out(size_t(image.width) * image.height * 4);
   for (size_t p = 0; p < size_t(image.width) * image.height; ++p) {

@@ -58,6 +58,10 @@ class SequenceError {
 
 // Edge pixels of the ground truth: where its supersamples' display luma spread exceeds `threshold`.
 std::vector<uint8_t> edgeMaskFromSpread(const std::vector<float>& lumaStdDev, float threshold = 0.03f);
+// The models' and scene's edges: those of `withoutBackgroundDetail` (the spread with the stars off) except
+// where the background's detail changes the spread (a star behind a silhouette would be measured too).
+std::vector<uint8_t> modelEdgeMask(const std::vector<float>& lumaStdDev,
+                                   const std::vector<float>& withoutBackgroundDetail);
 
 // Per-pixel error magnitude as a heat map (black → red → yellow → white), RGBA8 top-down; `scale`
 // maps an absolute error to the top of the colour ramp.

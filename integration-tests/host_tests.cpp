@@ -216,7 +216,7 @@ TEST(GroundTruth, ConvergesFrom8x8To16x16) {
 
 // The stars are the background's own detail, not model edges: a sky alone has edge pixels (its stars) and
 // no model edges; with the demo's models, every model-edge pixel but those the stars' light changes is
-// an edge pixel too, and the stars' pixels are not model edges.
+// an edge pixel too, the stars' pixels are not model edges, and neither is a silhouette a star shows behind.
 TEST(GroundTruth, TellsTheBackgroundsStarsFromTheModelsEdges) {
   PatchedHost sky(host::parseScene(R"({"camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "objects": [],
                                       "star_density": 2})",
@@ -241,6 +241,22 @@ TEST(GroundTruth, TellsTheBackgroundsStarsFromTheModelsEdges) {
   EXPECT_GT(both, 200u);
   EXPECT_LT(modelOnly, both / 20) << "a star behind a silhouette only adds to its spread";
   EXPECT_LT(count(truth.modelEdges), count(truth.edges)) << "the demo's stars are edges, not model edges";
+
+  // A silhouette with a star behind it is measured as the background's: every model edge left has the
+  // spread it has without the stars, and some of the starless frame's edges were left out for a star.
+  const host::GroundTruth gt = host::renderGroundTruth(
+      *demo.renderer, demo.scene.camera, 4, host::TextureFootprint::Supersample, host::BackgroundEdges::Apart);
+  const std::vector<uint8_t> geometryEdges = app::edgeMaskFromSpread(gt.modelLumaStdDev);
+  size_t starBehind = 0;
+  for (size_t p = 0; p < truth.modelEdges.size(); ++p) {
+    starBehind += geometryEdges[p] && !truth.modelEdges[p];
+    if (truth.modelEdges[p]) {
+      ASSERT_NEAR(gt.lumaStdDev[p], gt.modelLumaStdDev[p], 1.0f / 512.0f) << "pixel " << p;
+    }
+  }
+  std::printf("demo 96x72: %zu silhouette pixels with a star behind them\n", starBehind);
+  EXPECT_GT(starBehind, 0u);
+  EXPECT_LT(starBehind, size_t(count(geometryEdges)) / 4);
 }
 
 // The sky is the same colour at every aspect ratio (16:10 once came out black: the background was

@@ -58,7 +58,7 @@ ScoringTruth PatchedHost::scoringTruth(int samplesPerAxis, host::BackgroundEdges
   const host::GroundTruth gt = host::renderGroundTruth(*renderer, scene.camera, samplesPerAxis,
                                                        host::TextureFootprint::Supersample, backgroundEdges);
   return {app::DisplayImage::fromRgba8(gt.width, gt.height, gt.display), app::edgeMaskFromSpread(gt.lumaStdDev),
-          gt.modelLumaStdDev.empty() ? std::vector<uint8_t>{} : app::edgeMaskFromSpread(gt.modelLumaStdDev)};
+          gt.modelLumaStdDev.empty() ? std::vector<uint8_t>{} : app::modelEdgeMask(gt.lumaStdDev, gt.modelLumaStdDev)};
 }
 
 float throughHalf(float value) { return glm::unpackHalf1x16(glm::packHalf1x16(value)); }
