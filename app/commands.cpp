@@ -16,8 +16,10 @@
 #include <malloc.h>
 #include <unistd.h>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -497,6 +499,34 @@ double residentMiB() {
 // What malloc has handed out and not had back: beside the resident figure, it tells live allocations
 // (ours, or the driver's through malloc) from freed memory the heap keeps and the driver's own mappings.
 double heapInUseMiB() { return double(mallinfo2().uordblks) / (1024.0 * 1024.0); }
+// Freed memory malloc keeps in its arenas for reuse (resident where it was touched).
+double heapFreeHeldMiB() { return double(mallinfo2().fordblks) / (1024.0 * 1024.0); }
+
+// Resident memory by kind of mapping (/proc/self/smaps): the main heap (brk), anonymous mappings (malloc's
+// large blocks and its threads' arenas, llvmpipe's compiled shader code and buffers) and files.
+struct ResidentSplit {
+  double heapMiB = 0, anonymousMiB = 0, filesMiB = 0;
+};
+ResidentSplit residentSplit() {
+  ResidentSplit split;
+  std::ifstream smaps("/proc/self/smaps");
+  double* current = nullptr;
+  for (std::string line; std::getline(smaps, line);) {
+    if (line.empty()) continue;
+    if (std::isxdigit(static_cast<unsigned char>(line[0])) && line.find('-') < line.find(' ')) {
+      // "start-end perms offset dev inode [path]": the path is the sixth field.
+      std::istringstream fields(line);
+      std::string range, perms, offset, device, inode, path;
+      fields >> range >> perms >> offset >> device >> inode >> path;
+      current = path == "[heap]"                 ? &split.heapMiB
+                : path.empty() || path[0] == '[' ? &split.anonymousMiB
+                                                 : &split.filesMiB;
+    } else if (current && line.rfind("Rss:", 0) == 0) {
+      *current += std::atof(line.c_str() + 4) / 1024.0;
+    }
+  }
+  return split;
+}
 }  // namespace
 
 int runSoak(const SoakOptions& options) {
@@ -531,9 +561,14 @@ int runSoak(const SoakOptions& options) {
     // The settings above repeat every 4200 frames (their periods' least common multiple, with the sizes'): a
     // cache that fills while new combinations come (the driver's shader variants) flattens after one period,
     // a leak does not.
-    if ((frame + 1) % 1050 == 0)
-      std::printf("soak: frame %d, resident %.1f MiB, heap in use %.2f MiB\n", frame + 1, residentMiB(),
-                  heapInUseMiB());
+    if ((frame + 1) % 1050 == 0) {
+      const ResidentSplit split = residentSplit();
+      std::printf(
+          "soak: frame %d, resident %.1f MiB (heap %.1f, anonymous %.1f, files %.1f), heap in use %.2f MiB, "
+          "free in malloc's arenas %.2f MiB\n",
+          frame + 1, residentMiB(), split.heapMiB, split.anonymousMiB, split.filesMiB, heapInUseMiB(),
+          heapFreeHeldMiB());
+    }
   }
   session.renderer->resize(options.width, options.height);
   session.configure(retroaa::Config{});
