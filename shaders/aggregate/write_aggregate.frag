@@ -15,12 +15,14 @@ void main() {
   uvec2 assignment = texelFetch(uAssignment, pixel, 0).xy;
   if ((assignment.y & RESOLVE_HOLDS_AGGREGATE) != 0u) discard;  // the resolved G-buffer is its mean already
   vec4 values[ATTACHMENT_COUNT];
-  for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
+#define CLEAR_ATTACHMENT(a) values[a] = vec4(0.0);
+  FOR_EACH_ATTACHMENT(CLEAR_ATTACHMENT)
   float depthSum = 0.0, count = 0.0;
   vec3 normalSum = vec3(0.0);
   for (int s = 0; s < SAMPLES; ++s) {
     if (sliceOfSample(assignment, s) != uint(uSlice)) continue;
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += FETCH(uAttachments[a], pixel, s);
+#define ADD_SAMPLE(a) values[a] += FETCH(uAttachments[a], pixel, s);
+    FOR_EACH_ATTACHMENT(ADD_SAMPLE)
     depthSum += sampleDistance(pixel, s);
 #if NORMAL_ATTACHMENT >= 0
     vec3 n = sampleNormal(pixel, s);
@@ -29,7 +31,8 @@ void main() {
     count += 1.0;
   }
   if (count == 0.0) discard;
-  for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] /= count;
+#define DIVIDE_ATTACHMENT(a) values[a] /= count;
+  FOR_EACH_ATTACHMENT(DIVIDE_ATTACHMENT)
   float meanDepth = depthSum / count;
   STORE_SLICE_DEPTH(isinf(meanDepth) ? kDepthBufferFar : metresToDepthBuffer(meanDepth));
   if (!isinf(meanDepth)) {  // background aggregates keep their (averaged) marker

@@ -1,7 +1,8 @@
 // Access to the plugin's multisampled copy of the host G-buffer. The plugin prepends the layout's
 // #defines (MsaaGBuffer::shaderDefines): SAMPLES, MULTISAMPLED, ATTACHMENT_COUNT, the attachment
 // indices by role, DEPTH_SOURCE, DEPTH_CHANNEL, DEPTH_ENCODING, DEPTH_BUFFER_ENCODING, NORMAL_ENCODING,
-// the outputs out0..outK and STORE_OUTPUTS(values).
+// the outputs out0..outK, STORE_OUTPUTS(values) and FOR_EACH_ATTACHMENT(M) (M(0) M(1) ...: constant
+// indices, which an array of the attachments needs to stay in registers).
 #include "common/depth.glsl"
 #include "common/depth_buffer.glsl"
 #include "common/normal.glsl"
@@ -77,7 +78,8 @@ vec3 sampleNormal(ivec2 pixel, int s) {
 
 bool sampleIsFinite(ivec2 pixel, int s) {
   uvec4 nonFinite = uvec4(0u);
-  for (int a = 0; a < ATTACHMENT_COUNT; ++a) nonFinite |= nonFiniteLanes(FETCH(uAttachments[a], pixel, s));
+#define OR_NON_FINITE_ATTACHMENT(a) nonFinite |= nonFiniteLanes(FETCH(uAttachments[a], pixel, s));
+  FOR_EACH_ATTACHMENT(OR_NON_FINITE_ATTACHMENT)
   return all(equal(nonFinite, uvec4(0u)));
 }
 

@@ -56,7 +56,8 @@ bool isEdge(ivec2 pixel) {
   // unrolled exit and run under each one's lanes).
   bool differs = false;
   for (int s = 1; s < SAMPLES; ++s)
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) differs = differs || DETECTOR_VALUE(a, s) != DETECTOR_VALUE(a, 0);
+#define DIFFERS_FROM_FIRST(a) differs = differs || DETECTOR_VALUE(a, s) != DETECTOR_VALUE(a, 0);
+    FOR_EACH_ATTACHMENT(DIFFERS_FROM_FIRST)
   return differs && !samplesShareOnePlane(pixel);
 #else
   float d0 = sampleDistance(pixel, 0);

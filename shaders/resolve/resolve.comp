@@ -14,6 +14,7 @@ void main() {
   vec4 values[ATTACHMENT_COUNT];
   float depth;
   resolvePixel(pixel, values, depth);
-  for (int a = 0; a < ATTACHMENT_COUNT; ++a) imageStore(uOutputs[a], pixel, values[a]);
+#define STORE_ATTACHMENT(a) imageStore(uOutputs[a], pixel, values[a]);
+  FOR_EACH_ATTACHMENT(STORE_ATTACHMENT)
   imageStore(uResolvedDepth, pixel, vec4(depth));
 }

@@ -95,7 +95,8 @@ bool fartherSurfaceCoversMore(ivec2 pixel, float nearMiddle, float farMiddle) {
 void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float depth) {
 #if SAMPLES <= 8
   for (int s = 0; s < SAMPLES; ++s)
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) fetched[s][a] = FETCH(uAttachments[a], pixel, s);
+#define FETCH_ATTACHMENT(a) fetched[s][a] = FETCH(uAttachments[a], pixel, s);
+    FOR_EACH_ATTACHMENT(FETCH_ATTACHMENT)
 #endif
   bool fso = uWeighting == WEIGHTING_FSO;
   float distance[SAMPLES];  // metres in front of the camera; +inf for background
@@ -106,15 +107,17 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
   int usableCount = 0;
   for (int s = 0; s < SAMPLES; ++s) {
     uvec4 nonFinite = uvec4(0u);
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) nonFinite |= nonFiniteLanes(SAMPLE_VALUE(a, s));
+#define OR_NON_FINITE_VALUE(a) nonFinite |= nonFiniteLanes(SAMPLE_VALUE(a, s));
+    FOR_EACH_ATTACHMENT(OR_NON_FINITE_VALUE)
     usable[s] = all(equal(nonFinite, uvec4(0u)));
     distance[s] = SAMPLE_DISTANCE(s);
     sortKey[s] = fso && isinf(distance[s]) ? 0.0 : distance[s];
     if (usable[s]) ++usableCount;
   }
 
+#define CLEAR_VALUE(a) values[a] = vec4(0.0);
   if (usableCount == 0) {  // every sample corrupt: write an empty background pixel
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
+    FOR_EACH_ATTACHMENT(CLEAR_VALUE)
 #if DEPTH_SOURCE == DEPTH_SOURCE_POSITION_CHANNEL
     values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = backgroundStoredDepth();
 #endif
@@ -171,9 +174,11 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
   // writes (the reference's; the farthest for background). FSO's weighting averages depths: not here.
   bool identical = usableCount == SAMPLES && !fso;
   for (int s = 1; s < SAMPLES; ++s)
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) identical = identical && all(equal(fetched[s][a], fetched[0][a]));
+#define SAME_AS_FIRST(a) identical = identical && all(equal(fetched[s][a], fetched[0][a]));
+    FOR_EACH_ATTACHMENT(SAME_AS_FIRST)
   if (identical) {
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = fetched[0][a];
+#define FIRST_SAMPLE(a) values[a] = fetched[0][a];
+    FOR_EACH_ATTACHMENT(FIRST_SAMPLE)
     if (referenceIsBackground) {
       depth = 0.0;
       for (int s = 0; s < SAMPLES; ++s) depth = max(depth, FETCH(uDepthBuffer, pixel, s).r);
@@ -220,7 +225,8 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
     bool markedBackground = false;
     for (int s = 0; s < SAMPLES; ++s)
       if (s == lastContributor) {
-        for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = SAMPLE_VALUE(a, s);
+#define CONTRIBUTOR_VALUE(a) values[a] = SAMPLE_VALUE(a, s);
+        FOR_EACH_ATTACHMENT(CONTRIBUTOR_VALUE)
         markedBackground = SAMPLE_MARKED_BACKGROUND(s);
       }
 #if NORMAL_ATTACHMENT >= 0
@@ -233,11 +239,12 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
   float depthSum = 0.0;
   float depthBufferMean = 0.0, depthBufferMax = 0.0;
   vec3 normal = vec3(0.0);  // the weighted mean of the decoded normals
-  for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = vec4(0.0);
+  FOR_EACH_ATTACHMENT(CLEAR_VALUE)
   for (int s = 0; s < SAMPLES; ++s) {
     float w = weight[s] / weightSum;
     if (w <= 0.0) continue;
-    for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] += w * SAMPLE_VALUE(a, s);
+#define ADD_WEIGHTED(a) values[a] += w * SAMPLE_VALUE(a, s);
+    FOR_EACH_ATTACHMENT(ADD_WEIGHTED)
 #if NORMAL_ATTACHMENT >= 0
     normal += w * decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
 #endif

@@ -12,7 +12,8 @@ void main() {
   limitDepthWriteToSlice(pixel);
   if (!sampleIsFinite(pixel, uSample)) discard;
   vec4 values[ATTACHMENT_COUNT];
-  for (int a = 0; a < ATTACHMENT_COUNT; ++a) values[a] = FETCH(uAttachments[a], pixel, uSample);
+#define COPY_SAMPLE(a) values[a] = FETCH(uAttachments[a], pixel, uSample);
+  FOR_EACH_ATTACHMENT(COPY_SAMPLE)
 #if NORMAL_ATTACHMENT >= 0
   values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], sampleMarkedBackground(pixel, uSample));
 #endif
