@@ -237,6 +237,38 @@ TEST(ForeignLayout, TheResolveKeepsASpheremapNormalThroughDecodeAndReencode) {
   }
 }
 
+// SuperTuxKart's depth holds stencil bits, and the slices write their samples' depth into it: after
+// shade() it holds the resolved depth again, bit for bit, and the stencil is the host's. The restore
+// copies the attachments back and writes the depth from the floats the resolve wrote beside it, rather
+// than resolving the whole G-buffer again, and never copies the depth-stencil back over the stencil.
+TEST(ForeignLayout, AfterShadeTheDepthIsTheResolvedOneAndTheStencilTheHosts) {
+  testing_support::context();
+  auto depthStencilBits = [](GLuint texture) {
+    std::vector<uint32_t> bits(size_t(kWidth) * kHeight);
+    glGetTextureImage(texture, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, GLsizei(bits.size() * 4), bits.data());
+    return bits;
+  };
+  for (const char* spec : {"edge@samples=4@measure_gpu_time=on", "per-sample@samples=4@measure_gpu_time=on",
+                           "aggregate@samples=4@measure_gpu_time=on"}) {  // the passes listed
+    MiniatureStk host;
+    auto plugin = createPlugin(host, spec);
+    ASSERT_TRUE(plugin);
+    host.solidPass(plugin->geometryFramebuffer());
+    ASSERT_TRUE(plugin->resolve({1.396f, 1.0f, 1200.0f}));
+    const GLint hostStencil = 0x5A;
+    glClearNamedFramebufferiv(host.gbuffer, GL_STENCIL, 0, &hostStencil);  // the host's own marks
+    const std::vector<uint32_t> resolved = depthStencilBits(host.depth);
+    ASSERT_TRUE(plugin->shade([&](GLuint target) { host.lighting(target); }));
+    EXPECT_EQ(depthStencilBits(host.depth), resolved) << spec;
+    EXPECT_EQ(resolved[0] & 0xFFu, 0x5Au) << spec;
+    const retroaa::Stats stats = plugin->waitForStats();
+    bool kept = false;
+    for (const retroaa::PassStats& pass : stats.passes) kept = kept || pass.name == "resolve.keep";
+    EXPECT_TRUE(kept) << spec << ": the attachments copied before the slices, not resolved again after them";
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
+}
+
 TEST(ForeignLayout, ExtraLightTexturesMustHoldFloats) {
   testing_support::context();
   MiniatureStk host;

@@ -156,7 +156,10 @@ Status Plugin::resolve(const FrameInfo& frame) {
   SharedTargets shared = impl_->shared();
   Technique* method = impl_->methodTechnique();
   const std::optional<ResolveCounts> counts = method ? method->resolveCounts(context, shared) : std::nullopt;
-  if (Status status = impl_->resolvePass->run(context, *impl_->msaa, frame, counts ? &*counts : nullptr); !status)
+  const bool depthForRestore = impl_->slices && ResolvePass::restoreNeedsDepthFloats(context, *impl_->slices);
+  if (Status status =
+          impl_->resolvePass->run(context, *impl_->msaa, frame, counts ? &*counts : nullptr, depthForRestore);
+      !status)
     return status;
   if (impl_->depthMirror) impl_->depthMirror->copy(true);  // the resolved depth into the host's renderbuffer
   for (ActiveTechnique& active : impl_->techniques)

@@ -9,6 +9,11 @@
 #include "edge/detector.glsl"
 layout(location = ATTACHMENT_COUNT) out uint outCount;
 #endif
+#ifdef RESOLVE_KEPT_DEPTH_LOCATION
+// The depth as written below, for the restore after the slices (ResolvePass::keepForRestore):
+// write_depth.frag writes these very floats again, and the depth buffer stores them as it did here.
+layout(location = RESOLVE_KEPT_DEPTH_LOCATION) out float outKeptDepth;
+#endif
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -23,5 +28,8 @@ void main() {
   // stencil test that limits it to the slices' pixels runs before the shader.
 #ifndef RESOLVE_RESTORE
   gl_FragDepth = depth;
+#endif
+#ifdef RESOLVE_KEPT_DEPTH_LOCATION
+  outKeptDepth = depth;
 #endif
 }

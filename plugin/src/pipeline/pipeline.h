@@ -6,6 +6,8 @@
 #include "../context.h"
 
 #include <functional>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace retroaa {
@@ -82,18 +84,25 @@ class ResolvePass {
   static Result<std::unique_ptr<ResolvePass>> create(PluginContext& context, const MsaaGBuffer& source);
   // With `counts` (and the full-screen resolve: the compute one does not count), the counts as well
   // (wroteCounts() says whether this frame's did).
+  // `keepDepthForRestore`: the depth as written also into floats, which restore() writes back where the
+  // host's depth holds stencil bits (see keepForRestore).
   Status run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
-             const ResolveCounts* counts = nullptr);
+             const ResolveCounts* counts = nullptr, bool keepDepthForRestore = false);
   bool wroteCounts() const { return wroteCounts_; }
   // The same resolve into the host's attachments only (its depth holds the resolved depth already),
   // where `slices` overwrote them: after the slices, so that the host's G-buffer holds the resolved
-  // surface again. Where the slices wrote the host's depth too (writesHostDepth), the whole resolve again.
+  // surface again (from keepForRestore's copies where it took them; else the whole resolve again).
   Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
                  const SliceRenderer& slices);
   // Before the slices overwrite the host's attachments: a copy of them (and of its depth where the slices
-  // write it and it holds no stencil of the host's), which restore() then copies back: two copies instead
-  // of a second resolve, and whatever the host drew into its G-buffer since resolve() is kept too.
+  // write it), which restore() then copies back: copies instead of a second resolve, and whatever the host
+  // drew into its G-buffer since resolve() is kept too. A depth with stencil bits cannot be copied back
+  // without undoing the host's stencil: restore() writes the resolve's own depth floats back through
+  // gl_FragDepth instead (run()'s keepDepthForRestore; a depth read back from the buffer as floats and
+  // written again can come back one unit off on llvmpipe, these come back as the resolve stored them).
   void keepForRestore(PluginContext& context, const SliceRenderer& slices);
+  // Whether run() must keep its depth floats for a restore after `slices`.
+  static bool restoreNeedsDepthFloats(const PluginContext& context, const SliceRenderer& slices);
   bool computeRequested() const { return computeRequested_; }  // resolve_compute as created
   // Frees what one config's slices asked of the resolve (its counting programs and target, the restore's
   // kept copies): a new config asks again, so what it holds follows it, not the configs before it.
@@ -102,9 +111,16 @@ class ResolvePass {
     countingTarget_ = GlFramebuffer();
     countingTargetCounts_ = 0;
     kept_.clear();
+    keepingProgram_ = ShaderProgram();
+    keepingTarget_ = GlFramebuffer();
+    if (!computes()) {
+      resolvedDepth_ = GlTexture();
+      bytes_ -= depthFloatBytes_;
+      depthFloatBytes_ = 0;
+    }
     bytes_ -= keptBytes_;
     keptBytes_ = 0;
-    keptThisFrame_ = keptDepth_ = false;
+    keptThisFrame_ = keptDepth_ = depthFloatsWritten_ = false;
   }
   bool computes() const { return computeProgram_.get() != 0; }  // … and the layout allowed it
   uint64_t bytes() const { return bytes_; }
@@ -120,20 +136,31 @@ class ResolvePass {
   void checkLayout(PluginContext& context, const MsaaGBuffer& source);
   // The counting resolve's program for a detector (built when first asked) and its target: the host's
   // attachments, the counts after them, the host's depth.
-  Result<const ShaderProgram*> countingProgram(PluginContext& context, const MsaaGBuffer& source,
-                                               EdgeDetector detector);
-  Result<GLuint> countingTarget(PluginContext& context, GLuint counts);
+  Result<const ShaderProgram*> countingProgram(PluginContext& context, const MsaaGBuffer& source, EdgeDetector detector,
+                                               bool keepDepth);
+  Result<GLuint> countingTarget(PluginContext& context, GLuint counts, bool keepDepth);
+  // The full-screen resolve that also writes its depth floats, and its target (built when first asked).
+  Result<GLuint> keepingTarget(PluginContext& context, const MsaaGBuffer& source);
+  // depthTarget_ and writeDepthProgram_, once: write_depth.frag into the host's depth alone.
+  Status createDepthWriter(PluginContext& context);
+  // resolvedDepth_ for the full-screen resolve, once (counted in the kept copies' bytes).
+  void createDepthFloats(PluginContext& context);
   std::vector<GlTexture> kept_;  // keepForRestore()'s copies: each attachment, then the depth where kept
   bool keptThisFrame_ = false, keptDepth_ = false;
+  bool depthFloatsWritten_ = false;  // this frame's run() wrote resolvedDepth_
+  uint64_t depthFloatBytes_ = 0;     // the full-screen resolve's resolvedDepth_, in bytes_
+  ShaderProgram keepingProgram_;
+  GlFramebuffer keepingTarget_;
   uint64_t keptBytes_ = 0;  // their share of bytes_
   ShaderProgram program_, restoreProgram_, layoutCheck_;
   GlFramebuffer hostTarget_;  // the host's attachments + depth, without its stencil bits
-  std::map<EdgeDetector, ShaderProgram> countingPrograms_;
+  std::map<std::pair<EdgeDetector, bool>, ShaderProgram> countingPrograms_;  // by detector, keeping the depth
   GlFramebuffer countingTarget_;
   GLuint countingTargetCounts_ = 0;  // the counts texture countingTarget_ holds
+  bool countingTargetKeepsDepth_ = false;
   bool wroteCounts_ = false;
   ShaderProgram computeProgram_, writeDepthProgram_;
-  GlTexture resolvedDepth_;    // R32F: the compute resolve's depth, for writeDepthProgram_
+  GlTexture resolvedDepth_;    // R32F: the resolve's depth as written (compute, or keepDepthForRestore)
   GlFramebuffer depthTarget_;  // the host's depth alone
   bool computeRequested_ = false;
   uint64_t bytes_ = 0;

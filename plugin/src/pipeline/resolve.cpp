@@ -87,16 +87,30 @@ Status ResolvePass::createCompute(PluginContext& context, const MsaaGBuffer& sou
   auto program =
       context.shaders->computeProgram("resolve/resolve.comp", source.shaderDefines(layout, false), kResolveUniforms);
   if (!program) return program.error();
+  if (Status status = createDepthWriter(context); !status) return status;
+  computeProgram_ = std::move(program.value());
+  resolvedDepth_ = makeTexture(context, GL_R32F, layout.width, layout.height, 0, "resolve.depth", bytes_);
+  return Status::ok();
+}
+
+Status ResolvePass::createDepthWriter(PluginContext& context) {
+  if (writeDepthProgram_.get() != 0) return Status::ok();
   auto writeDepth =
       context.shaders->program("common/fullscreen.vert", "resolve/write_depth.frag", "", {"uResolvedDepth"});
   if (!writeDepth) return writeDepth.error();
-  computeProgram_ = std::move(program.value());
-  writeDepthProgram_ = std::move(writeDepth.value());
-  resolvedDepth_ = makeTexture(context, GL_R32F, layout.width, layout.height, 0, "resolve.depth", bytes_);
   depthTarget_ = makeFramebuffer(context, "resolve.depth_target");
   glNamedFramebufferDrawBuffer(depthTarget_.get(), GL_NONE);
-  glNamedFramebufferTexture(depthTarget_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
-  return checkFramebuffer(depthTarget_.get(), "resolve.depth_target");
+  glNamedFramebufferTexture(depthTarget_.get(), GL_DEPTH_ATTACHMENT, context.layout.depthStencilTexture, 0);
+  if (Status status = checkFramebuffer(depthTarget_.get(), "resolve.depth_target"); !status) return status;
+  writeDepthProgram_ = std::move(writeDepth.value());
+  return Status::ok();
+}
+
+void ResolvePass::createDepthFloats(PluginContext& context) {
+  if (resolvedDepth_.get() != 0) return;
+  resolvedDepth_ = makeTexture(context, GL_R32F, context.layout.width, context.layout.height, 0,
+                               "resolve.kept_depth_floats", depthFloatBytes_);
+  bytes_ += depthFloatBytes_;
 }
 
 namespace {
@@ -120,24 +134,53 @@ void drawResolve(PluginContext& context, const ShaderProgram& program, const Msa
 }  // namespace
 
 Result<const ShaderProgram*> ResolvePass::countingProgram(PluginContext& context, const MsaaGBuffer& source,
-                                                          EdgeDetector detector) {
-  auto found = countingPrograms_.find(detector);
+                                                          EdgeDetector detector, bool keepDepth) {
+  auto found = countingPrograms_.find({detector, keepDepth});
   if (found != countingPrograms_.end()) return &found->second;
-  Result<ShaderProgram> program = context.shaders->program(
-      "common/fullscreen.vert", "resolve/resolve.frag",
-      "#define RESOLVE_COUNTS 1\n" + defineLine("EDGE_DETECTOR", int(detector)) + source.shaderDefines(context.layout),
-      kCountingResolveUniforms);
+  const int keptDepthLocation = int(context.layout.attachments.size()) + 1;  // after the counts
+  Result<ShaderProgram> program =
+      context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag",
+                               "#define RESOLVE_COUNTS 1\n" + defineLine("EDGE_DETECTOR", int(detector)) +
+                                   (keepDepth ? defineLine("RESOLVE_KEPT_DEPTH_LOCATION", keptDepthLocation) : "") +
+                                   source.shaderDefines(context.layout),
+                               kCountingResolveUniforms);
   if (!program) return program.error();
-  return &countingPrograms_.emplace(detector, std::move(program.value())).first->second;
+  return &countingPrograms_.emplace(std::make_pair(detector, keepDepth), std::move(program.value())).first->second;
 }
 
-Result<GLuint> ResolvePass::countingTarget(PluginContext& context, GLuint counts) {
-  if (countingTarget_ && countingTargetCounts_ == counts) return countingTarget_.get();
+Result<GLuint> ResolvePass::keepingTarget(PluginContext& context, const MsaaGBuffer& source) {
+  if (keepingTarget_) return keepingTarget_.get();
   const GBufferLayout& layout = context.layout;
-  countingTarget_ = makeFramebuffer(context, "resolve.counting_target");
+  Result<ShaderProgram> program = context.shaders->program(
+      "common/fullscreen.vert", "resolve/resolve.frag",
+      defineLine("RESOLVE_KEPT_DEPTH_LOCATION", int(layout.attachments.size())) + source.shaderDefines(layout),
+      kResolveUniforms);
+  if (!program) return program.error();
+  keepingProgram_ = std::move(program.value());
+  createDepthFloats(context);
+  keepingTarget_ = makeFramebuffer(context, "resolve.keeping_target");
   std::vector<GLenum> drawBuffers;
   for (size_t i = 0; i <= layout.attachments.size(); ++i) {
-    const GLuint texture = i < layout.attachments.size() ? layout.attachments[i].texture : counts;
+    const GLuint texture = i < layout.attachments.size() ? layout.attachments[i].texture : resolvedDepth_.get();
+    glNamedFramebufferTexture(keepingTarget_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i), texture, 0);
+    drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+  }
+  glNamedFramebufferDrawBuffers(keepingTarget_.get(), GLsizei(drawBuffers.size()), drawBuffers.data());
+  glNamedFramebufferTexture(keepingTarget_.get(), GL_DEPTH_ATTACHMENT, layout.depthStencilTexture, 0);
+  if (Status status = checkFramebuffer(keepingTarget_.get(), "resolve.keeping_target"); !status) return status.error();
+  return keepingTarget_.get();
+}
+
+Result<GLuint> ResolvePass::countingTarget(PluginContext& context, GLuint counts, bool keepDepth) {
+  if (countingTarget_ && countingTargetCounts_ == counts && countingTargetKeepsDepth_ == keepDepth)
+    return countingTarget_.get();
+  const GBufferLayout& layout = context.layout;
+  if (keepDepth) createDepthFloats(context);
+  countingTarget_ = makeFramebuffer(context, "resolve.counting_target");
+  std::vector<GLenum> drawBuffers;
+  const size_t n = layout.attachments.size();
+  for (size_t i = 0; i <= n + (keepDepth ? 1 : 0); ++i) {
+    const GLuint texture = i < n ? layout.attachments[i].texture : i == n ? counts : resolvedDepth_.get();
     glNamedFramebufferTexture(countingTarget_.get(), GLenum(GL_COLOR_ATTACHMENT0 + i), texture, 0);
     drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
   }
@@ -146,12 +189,14 @@ Result<GLuint> ResolvePass::countingTarget(PluginContext& context, GLuint counts
   if (Status status = checkFramebuffer(countingTarget_.get(), "resolve.counting_target"); !status)
     return status.error();
   countingTargetCounts_ = counts;
+  countingTargetKeepsDepth_ = keepDepth;
   return countingTarget_.get();
 }
 
 Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
-                        const ResolveCounts* counts) {
+                        const ResolveCounts* counts, bool keepDepthForRestore) {
   wroteCounts_ = false;
+  depthFloatsWritten_ = keepDepthForRestore && computes();  // the compute resolve writes them anyway
   {
     // Every sample of every attachment and of the depth read once, one value of each written (and a count).
     uint64_t written = bytesPerTexel(sizedDepthFormat(context.layout.depthStencilTexture));
@@ -159,9 +204,9 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
     if (counts && !computes()) written += 1;
     ScopedPass timed(context, "resolve", source.bytes() + written * context.pixelCount());
     if (counts && !computes()) {
-      Result<const ShaderProgram*> program = countingProgram(context, source, counts->detector);
+      Result<const ShaderProgram*> program = countingProgram(context, source, counts->detector, keepDepthForRestore);
       if (!program) return program.error();
-      Result<GLuint> target = countingTarget(context, counts->counts);
+      Result<GLuint> target = countingTarget(context, counts->counts, keepDepthForRestore);
       if (!target) return target.error();
       context.beginDepthWritingPass(target.value());
       const ShaderProgram& counting = *program.value();
@@ -170,6 +215,7 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
       counting.set("uNormalCosine", counts->normalCosine);
       context.drawFullscreen();
       wroteCounts_ = true;
+      depthFloatsWritten_ = keepDepthForRestore;
     } else if (computes()) {
       const GBufferLayout& layout = context.layout;
       setResolveInputs(context, computeProgram_, source, frame);
@@ -182,6 +228,12 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
       writeDepthProgram_.use();
       writeDepthProgram_.bindTexture("uResolvedDepth", resolvedDepth_.get());
       context.drawFullscreen();
+    } else if (keepDepthForRestore) {
+      Result<GLuint> target = keepingTarget(context, source);
+      if (!target) return target.error();
+      context.beginDepthWritingPass(target.value());
+      drawResolve(context, keepingProgram_, source, frame);
+      depthFloatsWritten_ = true;
     } else {
       context.beginDepthWritingPass(hostTarget_.get());
       drawResolve(context, program_, source, frame);
@@ -257,12 +309,19 @@ void ResolvePass::checkLayout(PluginContext& context, const MsaaGBuffer& source)
                  ")" + (fromDepthBuffer || fromWorld ? "" : ", or the depth is in another channel"));
 }
 
+bool ResolvePass::restoreNeedsDepthFloats(const PluginContext& context, const SliceRenderer& slices) {
+  return context.config.restoreGBufferAfterShade && slices.writesHostDepth() &&
+         hasStencil(sizedDepthFormat(context.layout.depthStencilTexture));
+}
+
 void ResolvePass::keepForRestore(PluginContext& context, const SliceRenderer& slices) {
   const GBufferLayout& layout = context.layout;
   const GLenum depthFormat = sizedDepthFormat(layout.depthStencilTexture);
-  const bool keepDepth = slices.writesHostDepth() && !hasStencil(depthFormat);
-  keptThisFrame_ = !slices.writesHostDepth() || keepDepth;
-  if (!keptThisFrame_) return;  // restore() resolves again: copying back would undo the host's stencil
+  const bool depthFloats = restoreNeedsDepthFloats(context, slices);
+  const bool keepDepth = slices.writesHostDepth() && !depthFloats;
+  keptThisFrame_ = false;
+  if (depthFloats && !(depthFloatsWritten_ && createDepthWriter(context)))
+    return;  // restore() resolves again: copying the depth back would undo the host's stencil
   if (kept_.empty() || keptDepth_ != keepDepth) {
     kept_.clear();
     bytes_ -= keptBytes_;  // the copies' bytes are counted anew below
@@ -280,6 +339,7 @@ void ResolvePass::keepForRestore(PluginContext& context, const SliceRenderer& sl
   for (size_t i = 0; i < layout.attachments.size(); ++i)
     copyLayoutTexture(layout, layout.attachments[i].texture, kept_[i].get());
   if (keepDepth) copyLayoutTexture(layout, layout.depthStencilTexture, kept_.back().get());
+  keptThisFrame_ = true;
 }
 
 Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
@@ -290,10 +350,17 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
     const GBufferLayout& layout = context.layout;
     for (size_t i = 0; i < layout.attachments.size(); ++i)
       copyLayoutTexture(layout, kept_[i].get(), layout.attachments[i].texture);
-    if (keptDepth_) copyLayoutTexture(layout, kept_.back().get(), layout.depthStencilTexture);
+    if (keptDepth_) {
+      copyLayoutTexture(layout, kept_.back().get(), layout.depthStencilTexture);
+    } else if (slices.writesHostDepth()) {  // the resolve's depth floats, written as it wrote them; no stencil test
+      context.beginDepthWritingPass(depthTarget_.get());
+      writeDepthProgram_.use();
+      writeDepthProgram_.bindTexture("uResolvedDepth", resolvedDepth_.get());
+      context.drawFullscreen();
+    }
     return Status::ok();
   }
-  if (slices.writesHostDepth()) {  // the slices wrote the host's depth as well: the whole resolve again
+  if (slices.writesHostDepth()) {  // the depth could not be kept: the whole resolve again
     context.beginDepthWritingPass(hostTarget_.get());
     drawResolve(context, program_, source, frame);
     return Status::ok();
