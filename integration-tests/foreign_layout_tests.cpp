@@ -248,8 +248,10 @@ TEST(ForeignLayout, AfterShadeTheDepthIsTheResolvedOneAndTheStencilTheHosts) {
     glGetTextureImage(texture, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, GLsizei(bits.size() * 4), bits.data());
     return bits;
   };
-  for (const char* spec : {"edge@samples=4@measure_gpu_time=on", "per-sample@samples=4@measure_gpu_time=on",
-                           "aggregate@samples=4@measure_gpu_time=on"}) {  // the passes listed
+  for (const char* spec :
+       {"edge@samples=4@measure_gpu_time=on@measure_pass_floors=on",
+        "per-sample@samples=4@measure_gpu_time=on@measure_pass_floors=on",
+        "aggregate@samples=4@measure_gpu_time=on@measure_pass_floors=on"}) {  // the passes listed, with floors
     MiniatureStk host;
     auto plugin = createPlugin(host, spec);
     ASSERT_TRUE(plugin);
@@ -263,8 +265,18 @@ TEST(ForeignLayout, AfterShadeTheDepthIsTheResolvedOneAndTheStencilTheHosts) {
     EXPECT_EQ(resolved[0] & 0xFFu, 0x5Au) << spec;
     const retroaa::Stats stats = plugin->waitForStats();
     bool kept = false;
-    for (const retroaa::PassStats& pass : stats.passes) kept = kept || pass.name == "resolve.keep";
+    const retroaa::PassStats *resolve = nullptr, *resolveFloor = nullptr;
+    for (const retroaa::PassStats& pass : stats.passes) {
+      kept = kept || pass.name == "resolve.keep";
+      if (pass.name == "resolve") resolve = &pass;
+      if (pass.name == "resolve.floor") resolveFloor = &pass;
+    }
     EXPECT_TRUE(kept) << spec << ": the attachments copied before the slices, not resolved again after them";
+    // The traffic the resolve states counts the depth floats it writes, as its floor (its real targets) does.
+    ASSERT_TRUE(resolve && resolveFloor) << spec;
+    EXPECT_EQ(resolveFloor->minimumBytes,
+              resolveFloor->fragmentInvocations * (resolve->minimumBytes / (uint64_t(kWidth) * kHeight)))
+        << spec;
     ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   }
 }

@@ -202,6 +202,7 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
     uint64_t written = bytesPerTexel(sizedDepthFormat(context.layout.depthStencilTexture));
     for (const Attachment& attachment : context.layout.attachments) written += bytesPerTexel(attachment.internalFormat);
     if (counts && !computes()) written += 1;
+    if (keepDepthForRestore && !computes()) written += 4;  // the depth floats (R32F)
     ScopedPass timed(context, "resolve", source.bytes() + written * context.pixelCount());
     if (counts && !computes()) {
       Result<const ShaderProgram*> program = countingProgram(context, source, counts->detector, keepDepthForRestore);
