@@ -143,8 +143,10 @@ class ResolvePass {
   Result<GLuint> keepingTarget(PluginContext& context, const MsaaGBuffer& source);
   // depthTarget_ and writeDepthProgram_, once: write_depth.frag into the host's depth alone.
   Status createDepthWriter(PluginContext& context);
-  // resolvedDepth_ for the full-screen resolve, once (counted in the kept copies' bytes).
+  // resolvedDepth_ for the full-screen resolve, once (its bytes in depthFloatBytes_).
   void createDepthFloats(PluginContext& context);
+  // resolvedDepth_ into the host's depth alone (write_depth.frag; the stencil test off).
+  void writeResolvedDepth(PluginContext& context) const;
   std::vector<GlTexture> kept_;  // keepForRestore()'s copies: each attachment, then the depth where kept
   bool keptThisFrame_ = false, keptDepth_ = false;
   bool depthFloatsWritten_ = false;  // this frame's run() wrote resolvedDepth_

@@ -106,6 +106,13 @@ Status ResolvePass::createDepthWriter(PluginContext& context) {
   return Status::ok();
 }
 
+void ResolvePass::writeResolvedDepth(PluginContext& context) const {
+  context.beginDepthWritingPass(depthTarget_.get());
+  writeDepthProgram_.use();
+  writeDepthProgram_.bindTexture("uResolvedDepth", resolvedDepth_.get());
+  context.drawFullscreen();
+}
+
 void ResolvePass::createDepthFloats(PluginContext& context) {
   if (resolvedDepth_.get() != 0) return;
   resolvedDepth_ = makeTexture(context, GL_R32F, context.layout.width, context.layout.height, 0,
@@ -225,10 +232,7 @@ Status ResolvePass::run(PluginContext& context, const MsaaGBuffer& source, const
         outputs.push_back({attachment.texture, attachment.internalFormat});
       outputs.push_back({resolvedDepth_.get(), GL_R32F});
       context.dispatchOverScreen(outputs, kTileSize);
-      context.beginDepthWritingPass(depthTarget_.get());
-      writeDepthProgram_.use();
-      writeDepthProgram_.bindTexture("uResolvedDepth", resolvedDepth_.get());
-      context.drawFullscreen();
+      writeResolvedDepth(context);
     } else if (keepDepthForRestore) {
       Result<GLuint> target = keepingTarget(context, source);
       if (!target) return target.error();
@@ -354,10 +358,7 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
     if (keptDepth_) {
       copyLayoutTexture(layout, kept_.back().get(), layout.depthStencilTexture);
     } else if (slices.writesHostDepth()) {  // the resolve's depth floats, written as it wrote them; no stencil test
-      context.beginDepthWritingPass(depthTarget_.get());
-      writeDepthProgram_.use();
-      writeDepthProgram_.bindTexture("uResolvedDepth", resolvedDepth_.get());
-      context.drawFullscreen();
+      writeResolvedDepth(context);
     }
     return Status::ok();
   }
