@@ -78,17 +78,22 @@ float distanceAt(ivec2 q, int s) {
 // neighbours' samples lie before the split than beyond it (measured on the hosts that light into their
 // display: with the tie given to the nearer surface the window-lit consumer's model edges were 0.95 dB
 // worse).
-bool fartherSurfaceCoversMore(ivec2 pixel, float nearMiddle, float farMiddle) {
+//
+// One neighbour's sample per iteration, `fetches` of them (0 where the pixel is not such a split): a
+// branch costs llvmpipe both of its sides under a mask, so 8 x SAMPLES fetches written out, or inside an
+// `if`, cost every pixel; a loop that no lane of a group enters costs it one iteration. False where
+// `fetches` is 0.
+bool fartherSurfaceCoversMore(ivec2 pixel, float nearMiddle, float farMiddle, int fetches) {
   float split = isinf(farMiddle) ? farMiddle : 0.5 * (nearMiddle + farMiddle);
   ivec2 last = gbufferPixels() - 1;
   int balance = 0;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx)
-      if (dx != 0 || dy != 0) {
-        ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), last);
-        for (int s = 0; s < SAMPLES; ++s) balance += distanceAt(q, s) < split ? 1 : -1;  // NaN: beyond
-      }
-  return balance <= 0;
+  for (int k = 0; k < fetches; ++k) {
+    int neighbour = k / SAMPLES;
+    neighbour += neighbour >= 4 ? 1 : 0;  // the 3x3 block's cells but its centre (4)
+    ivec2 q = clamp(pixel + ivec2(neighbour % 3 - 1, neighbour / 3 - 1), ivec2(0), last);
+    balance += distanceAt(q, k % SAMPLES) < split ? 1 : -1;  // NaN: beyond
+  }
+  return fetches > 0 && balance <= 0;
 }
 
 // The resolved values of `pixel`: one per host attachment, and the value for the host's depth buffer.
@@ -150,6 +155,7 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
     if (s == nextInOrder) dNext = distance[s];
   }
   // The median of an even count split evenly between two surfaces: each half within Eq. 1 of its middle.
+  bool evenSplit = false;
   if (uSplitByNeighbours && uWeighting == WEIGHTING_MEDIAN && usableCount % 2 == 0 && !isinf(dRef)) {
     int nearHalf = 0, farHalf = 0;
     for (int s = 0; s < SAMPLES; ++s)
@@ -159,10 +165,11 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
                          : abs(distance[s] - dNext) <= min(distance[s], dNext) * uFootprintTan * uCloseness)
           ++farHalf;
       }
-    if (nearHalf == usableCount / 2 && farHalf == usableCount / 2 && fartherSurfaceCoversMore(pixel, dRef, dNext)) {
-      reference = nextInOrder;
-      dRef = dNext;
-    }
+    evenSplit = nearHalf == usableCount / 2 && farHalf == usableCount / 2;
+  }
+  if (fartherSurfaceCoversMore(pixel, dRef, dNext, evenSplit ? 8 * SAMPLES : 0)) {
+    reference = nextInOrder;
+    dRef = dNext;
   }
   float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
   bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
