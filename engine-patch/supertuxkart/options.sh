@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The anti-aliasing choice in SuperTuxKart's graphics settings, as a player makes it: from the menu, the
 # video options' custom settings dialog shows CHOICE and is applied (OUT/options/options.png, the window
-# with the dialog, judged by options_check.py); a race started afterwards renders with the choice saved in config.xml; a saved choice
-# this build does not know falls back to off, with one message naming it.
+# with the dialog, judged by options_check.py), its hint the expected cost; a race started afterwards
+# renders with the choice saved in config.xml and keeps what it cost there, which the dialog then shows
+# (OUT/measured/options.png); a saved choice this build does not know falls back to off, with one message
+# naming it.
 #   usage: options.sh STK_BINARY CHOICE OUT
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -15,26 +17,49 @@ export RETROAA_STK_HOME=$out/home HOME=$out/home XDG_CONFIG_HOME=$out/home/confi
 export XDG_CACHE_HOME=$out/home/cache SUPERTUXKART_DATADIR=$data LP_NUM_THREADS=${LP_NUM_THREADS:-2}
 export MESA_SHADER_CACHE_DIR=${RETROAA_STK_SHADER_CACHE:-/var/cache/retroaa/mesa-shader-cache}
 config=$out/home/config/supertuxkart/config-0.10/config.xml
-failed=0
+failed=0 checks=0
 check() {  # NAME OK DETAIL
+  checks=$((checks + 1))
   if [ "$2" = 1 ]; then echo "ok    $1: $3"; else echo "FAIL  $1: $3"; failed=$((failed + 1)); fi
 }
-# The dialog wants a menu at least 768 high to lay its rows out (STK's own warns below that).
-xvfb-run -a -s "-screen 0 1024x768x24" timeout --kill-after=15 300 "$binary" --screensize=1024x768 --windowed \
-  --no-sound --enable-dynamic-lights --aa-capture="$out/options" --aa-options="$choice" >"$out/options/stk.log" 2>&1 ||
-  { tail -20 "$out/options/stk.log" >&2; echo "options: SuperTuxKart failed in the options dialog ($out/options/stk.log)" >&2; exit 1; }
+dialog() {  # DIR CHOICE: STK from its menu into the dialog showing CHOICE, written to DIR, then Apply
+  mkdir -p "$1"
+  # The dialog wants a menu at least 768 high to lay its rows out (STK's own warns below that).
+  xvfb-run -a -s "-screen 0 1024x768x24" timeout --kill-after=15 300 "$binary" --screensize=1024x768 --windowed \
+    --no-sound --enable-dynamic-lights --aa-capture="$1" --aa-options="$2" >"$1/stk.log" 2>&1 ||
+    { tail -20 "$1/stk.log" >&2; echo "options: SuperTuxKart failed in the options dialog ($1/stk.log)" >&2; exit 1; }
+}
+judge() {  # DIR: the picture as the window shows it, judged: the panel drawn, every text on one line
+  # inside its box, none over another, every choice's label and hint fitting.
+  python3 "$here/options_check.py" "$1" | sed 's/^\([0-9]* passed\)/dialog: \1/' | tee "$1/check.txt"
+  check "the dialog as drawn" "$(grep -q '^dialog: [0-9]* passed, 0 failed' "$1/check.txt" && echo 1)" \
+    "$1/options.png; $(tail -1 "$1/check.txt")"
+}
+shown() {  # DIR: every text the dialog drew, on one line
+  python3 -c 'import json,sys; r=json.loads(open(sys.argv[1]).readline()); print(" | ".join(t["text"] for t in r["texts"]))' \
+    "$1/capture.jsonl"
+}
+dialog "$out/options" "$choice"
 saved=$(sed -n 's/.*<retroaa value="\([^"]*\)".*/\1/p; s/^ *retroaa="\([^"]*\)".*/\1/p' "$config" | head -1)
 check "the dialog's Apply saved the choice in config.xml" "$([ "$saved" = "$choice" ] && echo 1)" "retroaa=\"$saved\""
-# The picture as the window shows it, judged: the panel drawn, every text on one line inside its box,
-# none over another, every choice's label and hint fitting.
-python3 "$here/options_check.py" "$out/options" | sed 's/^\([0-9]* passed\)/dialog: \1/' | tee "$out/options/check.txt"
-check "the dialog as drawn" "$(grep -q '^dialog: [0-9]* passed, 0 failed' "$out/options/check.txt" && echo 1)" \
-  "$out/options/options.png; $(tail -1 "$out/options/check.txt")"
+judge "$out/options"
+check "before it has run, the choice's hint gives its expected cost" \
+  "$(case "$(shown "$out/options")" in *"Expected: "*) echo 1;; esac)" "$(shown "$out/options" | grep -o '[^|]*Expected[^|]*')"
 
-# A race from the saved choice: the capture's method "chosen" is whatever is in effect.
-bash "$here/capture.sh" "$binary" olivermath 320x240 20 chosen "$out/race" 1 >/dev/null
+# A race from the saved choice (the capture's method "chosen" is whatever is in effect), long enough for
+# its cost to be read (every 30 frames, never waited for).
+bash "$here/capture.sh" "$binary" olivermath 320x240 40 chosen "$out/race" 1 >/dev/null
 spec=$(python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).readline())["spec"])' "$out/race/capture.jsonl")
 check "a race renders with the saved choice" "$([ "$spec" = "$choice" ] && echo 1)" "captured '$spec'"
+# What the race measured is kept in config.xml: the dialog, opened after a restart, shows it.
+measured=$(sed -n 's/^ *retroaa_measured="\([^"]*\)".*/\1/p' "$config" | head -1)
+check "the race's measured cost is kept in config.xml" "$(case ";$measured" in *";$choice "*) echo 1;; esac)" \
+  "retroaa_measured=\"$measured\""
+dialog "$out/measured" "$choice"
+judge "$out/measured"
+check "after it has run, the choice's hint gives its measured cost" \
+  "$(case "$(shown "$out/measured")" in *"Measured here: "*) echo 1;; esac)" \
+  "$(shown "$out/measured" | grep -o '[^|]*Measured here[^|]*' || echo 'no measured cost shown')"
 
 # An old or foreign config.xml: a choice this build does not know.
 sed -i 's/retroaa="[^"]*"/retroaa="no-such-method"/' "$config"
@@ -46,14 +71,9 @@ check "with one message naming it" "$([ "$messages" = 1 ] && echo 1)" "$messages
 # A choice made in config.xml that the dialog's list does not name (a preset): shown as "Custom" and
 # kept by Apply.
 sed -i 's/retroaa="[^"]*"/retroaa="preset=high"/' "$config"
-mkdir -p "$out/custom"
-xvfb-run -a -s "-screen 0 1024x768x24" timeout --kill-after=15 300 "$binary" --screensize=1024x768 --windowed \
-  --no-sound --enable-dynamic-lights --aa-capture="$out/custom" --aa-options=preset=high >"$out/custom/stk.log" 2>&1 ||
-  { tail -20 "$out/custom/stk.log" >&2; echo "options: SuperTuxKart failed in the options dialog ($out/custom/stk.log)" >&2; exit 1; }
-shown=$(python3 -c 'import json,sys; r=json.loads(open(sys.argv[1]).readline()); print(" ".join(t["text"] for t in r["texts"]))' \
-  "$out/custom/capture.jsonl")
-check "a config.xml choice outside the list shows as Custom" "$(case "$shown" in *" Custom "*) echo 1;; esac)" \
+dialog "$out/custom" preset=high
+check "a config.xml choice outside the list shows as Custom" "$(case " | $(shown "$out/custom") | " in *" | Custom | "*) echo 1;; esac)" \
   "$(grep -o 'retroaa="[^"]*"' "$config")"
 check "and Apply keeps it" "$(grep -q 'retroaa="preset=high"' "$config" && echo 1)" "$(grep -o 'retroaa="[^"]*"' "$config")"
-echo "$((7 - failed)) passed, $failed failed"
+echo "$((checks - failed)) passed, $failed failed"
 [ "$failed" = 0 ]
