@@ -94,18 +94,25 @@ float lanczos2(float x) {
   return 2.0 * sin(px) * sin(0.5 * px) / (px * px);
 }
 // `fromInput`: the image is uInput, read as linear light (inputToLinear); the history is stored so.
-vec3 lanczos(sampler2D image, vec2 uv, bool fromInput) {
+// `wanted`: false where the pixel does not use it (it returns 0 there). A branch costs llvmpipe both of
+// its sides under a mask, so a fetch inside an `if` costs every pixel; rows counted from `wanted` cost a
+// group of pixels none of which wants it one row's loop instead of the 16 fetches.
+vec3 lanczos(sampler2D image, vec2 uv, bool fromInput, bool wanted) {
   ivec2 size = textureSize(image, 0);
   vec2 position = uv * vec2(size) - 0.5;  // in texel centres
   ivec2 first = ivec2(floor(position)) - 1;
   vec2 f = position - floor(position);
   vec3 sum = vec3(0.0), nearestLow = vec3(1e30), nearestHigh = vec3(-1e30);
   float weight = 0.0;
-  for (int y = 0; y < 4; ++y)
+  float wx[4];  // the kernel is separable
+  for (int x = 0; x < 4; ++x) wx[x] = lanczos2(float(x - 1) - f.x);
+  int rows = wanted ? 4 : 0;
+  for (int y = 0; y < rows; ++y) {
+    float wy = lanczos2(float(y - 1) - f.y);
     for (int x = 0; x < 4; ++x) {
       vec3 c = texelFetch(image, clamp(first + ivec2(x, y), ivec2(0), size - 1), 0).rgb;
       if (fromInput) c = inputToLinear(c);
-      float w = lanczos2(float(x - 1) - f.x) * lanczos2(float(y - 1) - f.y);
+      float w = wx[x] * wy;
       sum += c * w;
       weight += w;
       if (x >= 1 && x <= 2 && y >= 1 && y <= 2) {
@@ -113,7 +120,8 @@ vec3 lanczos(sampler2D image, vec2 uv, bool fromInput) {
         nearestHigh = max(nearestHigh, c);
       }
     }
-  return clamp(sum / weight, nearestLow, nearestHigh);
+  }
+  return wanted ? clamp(sum / weight, nearestLow, nearestHigh) : vec3(0.0);
 }
 
 // Where the history is not the same surface: no texel of the 3×3 footprint around `uv`'s nearest holds a
@@ -211,9 +219,18 @@ void main() {
   bool usable = uHistoryValid > 0.5 && previousClip.w > 0.0 && all(greaterThanEqual(previousUv, vec2(0.0))) &&
                 all(lessThanEqual(previousUv, vec2(1.0))) && !disoccluded(previousUv, expectedDepth);
   if (uHistoryValid > 0.5 && !usable) atomicCounterIncrement(uShortHistory);
-  if (!usable && accumulating) result = lanczos(uInput, centreUv, true);
+  // Still, the frame as sampled (the jitter is how the history gathers the pixel's area); moving, half
+  // centred: centring moves edges back where they are, but resampling blurs texture. Against the frame
+  // as sampled, on the space-battle and engine paths (retroaa regress): fully centred +1.5 and +2.0 dB
+  // edge, -2.7 and -0.4 interior; half +1.3 and +1.7 edge, -1.4 and -0.2 interior; in STK's race half
+  // or full alike (edge 24.3, 24.5 against 23.8).
+  float centring = 0.5 * clamp(motion / kMotionForFullBlend, 0.0, 1.0);
+  // (A still view reprojects to within rounding of the pixel: no resampling below a hundredth of a pixel.)
+  bool centres = accumulating && (!usable || centring > 0.01);
+  vec3 centred = lanczos(uInput, centreUv, true, centres);
+  if (!usable && accumulating) result = centred;
+  vec3 history = lanczos(uHistory, previousUv, false, usable);
   if (usable) {
-    vec3 history = lanczos(uHistory, previousUv, false);
     if (finite3(history)) {
       // Clip towards the box's centre (Salvi), not per channel: keeps the history's hue.
       vec3 h = toYCoCg(compress(history));
@@ -237,14 +254,7 @@ void main() {
       // to the pixel's mean (this weighting biases it dark: -0.4 dB edge on the demo frame). Recorded
       // paths: +0.1-0.6 dB interior, flicker down on all five, the still frame unchanged.
       vec3 clipped = expand(fromYCoCg(h));
-      // Still, the frame as sampled (the jitter is how the history gathers the pixel's area); moving, half
-      // centred: centring moves edges back where they are, but resampling blurs texture. Against the frame
-      // as sampled, on the space-battle and engine paths (retroaa regress): fully centred +1.5 and +2.0 dB
-      // edge, -2.7 and -0.4 interior; half +1.3 and +1.7 edge, -1.4 and -0.2 interior; in STK's race half
-      // or full alike (edge 24.3, 24.5 against 23.8).
-      float centring = 0.5 * clamp(motion / kMotionForFullBlend, 0.0, 1.0);
-      // (A still view reprojects to within rounding of the pixel: no resampling below a hundredth of a pixel.)
-      vec3 arriving = centring > 0.01 && accumulating ? mix(current, lanczos(uInput, centreUv, true), centring) : current;
+      vec3 arriving = centres ? mix(current, centred, centring) : current;
       float weighting = clamp(motion, 0.0, 1.0);
       float currentWeight = blend / (1.0 + weighting * lumaOf(arriving));
       float historyWeight = (1.0 - blend) / (1.0 + weighting * lumaOf(clipped));
