@@ -95,7 +95,7 @@ class ResolvePass {
   Status restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
                  const SliceRenderer& slices);
   // Before the slices overwrite the host's attachments: a copy of them (and of its depth where the slices
-  // write it), which restore() then copies back: copies instead of a second resolve, and whatever the host
+  // write it), which restore() then writes back: copies instead of a second resolve, and whatever the host
   // drew into its G-buffer since resolve() is kept too. A depth with stencil bits cannot be copied back
   // without undoing the host's stencil: restore() writes the resolve's own depth floats back through
   // gl_FragDepth instead (run()'s keepDepthForRestore; a depth read back from the buffer as floats and
@@ -112,6 +112,7 @@ class ResolvePass {
     countingTargetCounts_ = 0;
     kept_.clear();
     keepingProgram_ = ShaderProgram();
+    for (ShaderProgram& writer : keptWriters_) writer = ShaderProgram();
     keepingTarget_ = GlFramebuffer();
     if (!computes()) {
       resolvedDepth_ = GlTexture();
@@ -147,11 +148,15 @@ class ResolvePass {
   void createDepthFloats(PluginContext& context);
   // resolvedDepth_ into the host's depth alone (write_depth.frag; the stencil test off).
   void writeResolvedDepth(PluginContext& context) const;
+  // restore_kept.frag (built when first asked): kept_'s attachments back into the host's, and with
+  // `depthFloats` resolvedDepth_ into its depth, in one draw.
+  Result<const ShaderProgram*> keptWriter(PluginContext& context, const MsaaGBuffer& source, bool depthFloats);
   std::vector<GlTexture> kept_;  // keepForRestore()'s copies: each attachment, then the depth where kept
   bool keptThisFrame_ = false, keptDepth_ = false;
   bool depthFloatsWritten_ = false;  // this frame's run() wrote resolvedDepth_
   uint64_t depthFloatBytes_ = 0;     // the full-screen resolve's resolvedDepth_, in bytes_
   ShaderProgram keepingProgram_;
+  ShaderProgram keptWriters_[2];  // keptWriter()'s, without and with the depth floats
   GlFramebuffer keepingTarget_;
   uint64_t keptBytes_ = 0;  // their share of bytes_
   ShaderProgram program_, restoreProgram_, layoutCheck_;

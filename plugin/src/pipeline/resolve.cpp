@@ -353,13 +353,16 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
   if (keptThisFrame_) {
     keptThisFrame_ = false;
     const GBufferLayout& layout = context.layout;
-    for (size_t i = 0; i < layout.attachments.size(); ++i)
-      copyLayoutTexture(layout, kept_[i].get(), layout.attachments[i].texture);
-    if (keptDepth_) {
-      copyLayoutTexture(layout, kept_.back().get(), layout.depthStencilTexture);
-    } else if (slices.writesHostDepth()) {  // the resolve's depth floats, written as it wrote them; no stencil test
-      writeResolvedDepth(context);
-    }
+    // The resolve's depth floats, written as it wrote them (no stencil test), where the depth was not copied.
+    const bool depthFloats = !keptDepth_ && slices.writesHostDepth();
+    Result<const ShaderProgram*> program = keptWriter(context, source, depthFloats);
+    if (!program) return program.error();
+    depthFloats ? context.beginDepthWritingPass(hostTarget_.get()) : context.beginFullscreenPass(hostTarget_.get());
+    program.value()->use();
+    for (size_t i = 0; i < layout.attachments.size(); ++i) glBindTextureUnit(GLuint(i), kept_[i].get());
+    if (depthFloats) glBindTextureUnit(GLuint(layout.attachments.size()), resolvedDepth_.get());
+    context.drawFullscreen();
+    if (keptDepth_) copyLayoutTexture(layout, kept_.back().get(), layout.depthStencilTexture);
     return Status::ok();
   }
   if (slices.writesHostDepth()) {  // the depth could not be kept: the whole resolve again
@@ -378,6 +381,18 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
   }
   drawResolve(context, restoreProgram_, source, frame);
   return Status::ok();
+}
+
+Result<const ShaderProgram*> ResolvePass::keptWriter(PluginContext& context, const MsaaGBuffer& source,
+                                                     bool depthFloats) {
+  ShaderProgram& program = keptWriters_[depthFloats ? 1 : 0];
+  if (program.get() != 0) return &program;
+  Result<ShaderProgram> built = context.shaders->program(
+      "common/fullscreen.vert", "resolve/restore_kept.frag",
+      (depthFloats ? "#define RESTORE_DEPTH_FLOATS 1\n" : "") + source.shaderDefines(context.layout), {});
+  if (!built) return built.error();
+  program = std::move(built.value());
+  return &program;
 }
 
 // The config keys of every MSAA G-buffer method's resolve (its registry row lists them: registry.cpp).
