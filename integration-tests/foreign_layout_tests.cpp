@@ -239,8 +239,9 @@ TEST(ForeignLayout, TheResolveKeepsASpheremapNormalThroughDecodeAndReencode) {
 
 // SuperTuxKart's depth holds stencil bits, and the slices write their samples' depth into it: after
 // shade() it holds the resolved depth again, bit for bit, and the stencil is the host's. The restore
-// copies the attachments back and writes the depth from the floats the resolve wrote beside it, rather
-// than resolving the whole G-buffer again, and never copies the depth-stencil back over the stencil.
+// writes the kept attachments back and the depth from the floats the resolve wrote beside it, in one
+// draw, rather than resolving the whole G-buffer again, and never copies the depth-stencil back over the
+// stencil.
 TEST(ForeignLayout, AfterShadeTheDepthIsTheResolvedOneAndTheStencilTheHosts) {
   testing_support::context();
   auto depthStencilBits = [](GLuint texture) {
@@ -265,11 +266,12 @@ TEST(ForeignLayout, AfterShadeTheDepthIsTheResolvedOneAndTheStencilTheHosts) {
     EXPECT_EQ(resolved[0] & 0xFFu, 0x5Au) << spec;
     const retroaa::Stats stats = plugin->waitForStats();
     bool kept = false;
-    const retroaa::PassStats *resolve = nullptr, *resolveFloor = nullptr;
+    const retroaa::PassStats *resolve = nullptr, *resolveFloor = nullptr, *restoreFloor = nullptr;
     for (const retroaa::PassStats& pass : stats.passes) {
       kept = kept || pass.name == "resolve.keep";
       if (pass.name == "resolve") resolve = &pass;
       if (pass.name == "resolve.floor") resolveFloor = &pass;
+      if (pass.name == "resolve.restore.floor") restoreFloor = &pass;
     }
     EXPECT_TRUE(kept) << spec << ": the attachments copied before the slices, not resolved again after them";
     // The traffic the resolve states counts the depth floats it writes, as its floor (its real targets) does.
@@ -277,6 +279,12 @@ TEST(ForeignLayout, AfterShadeTheDepthIsTheResolvedOneAndTheStencilTheHosts) {
     EXPECT_EQ(resolveFloor->minimumBytes,
               resolveFloor->fragmentInvocations * (resolve->minimumBytes / (uint64_t(kWidth) * kHeight)))
         << spec;
+    // The restore is one draw over every pixel that moves the two RGBA8 attachments (read from the kept
+    // copies, written to the host's) as well as the depth: a copy per attachment is no draw, and a floor
+    // that replays draws would see the depth alone (8 B a pixel).
+    ASSERT_TRUE(restoreFloor) << spec;
+    EXPECT_EQ(restoreFloor->fragmentInvocations, resolveFloor->fragmentInvocations) << spec;  // full-screen
+    EXPECT_GE(restoreFloor->minimumBytes, restoreFloor->fragmentInvocations * (2 * (4 + 4) + 4 + 4)) << spec;
     ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   }
 }
