@@ -80,9 +80,10 @@ float distanceAt(ivec2 q, int s) {
 // worse).
 //
 // One neighbour's sample per iteration, `fetches` of them (0 where the pixel is not such a split): a
-// branch costs llvmpipe both of its sides under a mask, so 8 x SAMPLES fetches written out, or inside an
-// `if`, cost every pixel; a loop that no lane of a group enters costs it one iteration. False where
-// `fetches` is 0.
+// branch costs llvmpipe both of its sides under a mask, so 8 x SAMPLES fetches written out, inside an
+// `if`, or in a loop that runs at most once (NIR makes it an `if`), cost every pixel; a loop whose count
+// the compiler cannot know is skipped by a group of pixels none of which enters it. False where `fetches`
+// is 0.
 bool fartherSurfaceCoversMore(ivec2 pixel, float nearMiddle, float farMiddle, int fetches) {
   float split = isinf(farMiddle) ? farMiddle : 0.5 * (nearMiddle + farMiddle);
   ivec2 last = gbufferPixels() - 1;

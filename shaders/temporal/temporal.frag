@@ -95,8 +95,8 @@ float lanczos2(float x) {
 }
 // `fromInput`: the image is uInput, read as linear light (inputToLinear); the history is stored so.
 // `wanted`: false where the pixel does not use it (it returns 0 there). A branch costs llvmpipe both of
-// its sides under a mask, so a fetch inside an `if` costs every pixel; rows counted from `wanted` cost a
-// group of pixels none of which wants it one row's loop instead of the 16 fetches.
+// its sides under a mask, so a fetch inside an `if` costs every pixel; a loop over rows counted from
+// `wanted` is skipped by a group of pixels none of which wants it (the resolve's even split does the same).
 vec3 lanczos(sampler2D image, vec2 uv, bool fromInput, bool wanted) {
   ivec2 size = textureSize(image, 0);
   vec2 position = uv * vec2(size) - 0.5;  // in texel centres

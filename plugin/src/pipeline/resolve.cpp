@@ -325,7 +325,7 @@ void ResolvePass::keepForRestore(PluginContext& context, const SliceRenderer& sl
   const bool depthFloats = restoreNeedsDepthFloats(context, slices);
   const bool keepDepth = slices.writesHostDepth() && !depthFloats;
   keptThisFrame_ = false;
-  if (depthFloats && !(depthFloatsWritten_ && createDepthWriter(context)))
+  if (depthFloats && !depthFloatsWritten_)
     return;  // restore() resolves again: copying the depth back would undo the host's stencil
   if (kept_.empty() || keptDepth_ != keepDepth) {
     kept_.clear();
@@ -357,7 +357,10 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
     const bool depthFloats = !keptDepth_ && slices.writesHostDepth();
     Result<const ShaderProgram*> program = keptWriter(context, source, depthFloats);
     if (!program) return program.error();
-    depthFloats ? context.beginDepthWritingPass(hostTarget_.get()) : context.beginFullscreenPass(hostTarget_.get());
+    if (depthFloats)
+      context.beginDepthWritingPass(hostTarget_.get());
+    else
+      context.beginFullscreenPass(hostTarget_.get());
     program.value()->use();
     for (size_t i = 0; i < layout.attachments.size(); ++i) glBindTextureUnit(GLuint(i), kept_[i].get());
     if (depthFloats) glBindTextureUnit(GLuint(layout.attachments.size()), resolvedDepth_.get());
