@@ -39,17 +39,25 @@ shown() {  # DIR: every text the dialog drew, on one line
   python3 -c 'import json,sys; r=json.loads(open(sys.argv[1]).readline()); print(" | ".join(t["text"] for t in r["texts"]))' \
     "$1/capture.jsonl"
 }
+hint_says() {  # DIR PHRASE NAME: one of the dialog's texts (the shown choice's hint) holds PHRASE
+  local texts
+  texts=$(shown "$1")
+  check "$3" "$(case "$texts" in *"$2"*) echo 1;; esac)" \
+    "$(grep -o "[^|]*$2[^|]*" <<<"$texts" || echo "no text holds '$2'")"
+}
+captured_spec() {  # DIR: the method a capture rendered
+  python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).readline())["spec"])' "$1/capture.jsonl"
+}
 dialog "$out/options" "$choice"
 saved=$(sed -n 's/.*<retroaa value="\([^"]*\)".*/\1/p; s/^ *retroaa="\([^"]*\)".*/\1/p' "$config" | head -1)
 check "the dialog's Apply saved the choice in config.xml" "$([ "$saved" = "$choice" ] && echo 1)" "retroaa=\"$saved\""
 judge "$out/options"
-check "before it has run, the choice's hint gives its expected cost" \
-  "$(case "$(shown "$out/options")" in *"Expected: "*) echo 1;; esac)" "$(shown "$out/options" | grep -o '[^|]*Expected[^|]*')"
+hint_says "$out/options" "Expected: " "before it has run, the choice's hint gives its expected cost"
 
 # A race from the saved choice (the capture's method "chosen" is whatever is in effect), long enough for
 # its cost to be read (every 30 frames, never waited for).
 bash "$here/capture.sh" "$binary" olivermath 320x240 40 chosen "$out/race" 1 >/dev/null
-spec=$(python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).readline())["spec"])' "$out/race/capture.jsonl")
+spec=$(captured_spec "$out/race")
 check "a race renders with the saved choice" "$([ "$spec" = "$choice" ] && echo 1)" "captured '$spec'"
 # What the race measured is kept in config.xml: the dialog, opened after a restart, shows it.
 measured=$(sed -n 's/^ *retroaa_measured="\([^"]*\)".*/\1/p' "$config" | head -1)
@@ -57,14 +65,12 @@ check "the race's measured cost is kept in config.xml" "$(case ";$measured" in *
   "retroaa_measured=\"$measured\""
 dialog "$out/measured" "$choice"
 judge "$out/measured"
-check "after it has run, the choice's hint gives its measured cost" \
-  "$(case "$(shown "$out/measured")" in *"Measured here: "*) echo 1;; esac)" \
-  "$(shown "$out/measured" | grep -o '[^|]*Measured here[^|]*' || echo 'no measured cost shown')"
+hint_says "$out/measured" "Measured here: " "after it has run, the choice's hint gives its measured cost"
 
 # An old or foreign config.xml: a choice this build does not know.
 sed -i 's/retroaa="[^"]*"/retroaa="no-such-method"/' "$config"
 bash "$here/capture.sh" "$binary" olivermath 320x240 20 chosen "$out/unknown" 1 >/dev/null
-spec=$(python3 -c 'import json,sys; print(json.loads(open(sys.argv[1]).readline())["spec"])' "$out/unknown/capture.jsonl")
+spec=$(captured_spec "$out/unknown")
 messages=$(grep -c "saved anti-aliasing 'no-such-method'" "$out/home/config/supertuxkart/config-0.10/stdout.log" || true)
 check "an unknown saved choice falls back to off" "$([ "$spec" = off ] && echo 1)" "captured '$spec'"
 check "with one message naming it" "$([ "$messages" = 1 ] && echo 1)" "$messages messages"
