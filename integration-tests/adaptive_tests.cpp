@@ -3,6 +3,11 @@
 #include "pipeline/pipeline.h"
 #include "test_support.h"
 
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <numeric>
 
 using namespace testing_support;
@@ -202,4 +207,92 @@ TEST(Adaptive, DemoSceneWithinTheBudgetNearPerSampleQuality) {
   EXPECT_EQ(stats.lightingEvaluations, std::accumulate(counts.begin(), counts.end(), uint64_t(0)));
   EXPECT_LE(stats.evaluationsPerPixel(), 0.6 * perSampleEvaluations);
   EXPECT_GE(psnr, 40.0);
+}
+
+// The shading metric takes two of a pixel's four neighbours from its quad (common/quad_exchange.glsl)
+// instead of fetching them: each pixel's partners across x and y, bit for bit, at an odd size (the last
+// column's and row's partners are helper fragments, fetching at the clamped pixel) and on floats a
+// difference would round (NaN, infinities, denormals, 1e30 beside 1e-30, negative zero).
+TEST(QuadExchange, GivesEachPixelItsQuadPartnersValuesBitForBit) {
+  PatchedHost host("default", 32, 24);
+  constexpr int kW = 7, kH = 5;
+  const float specials[] = {0.0f,
+                            -0.0f,
+                            1.0f,
+                            -1.0f,
+                            1e-40f,
+                            -3e-39f,
+                            3.4e38f,
+                            1e30f,
+                            1e-30f,
+                            std::numeric_limits<float>::infinity(),
+                            -std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN(),
+                            3.14159265f,
+                            65504.0f,
+                            1.0f / 3.0f};
+  std::vector<float> values(kW * kH);
+  for (size_t i = 0; i < values.size(); ++i)
+    values[i] = i < std::size(specials) ? specials[i] : float(i) * 0.7310585f - 9.0f;
+  GLuint input = 0, output = 0, framebuffer = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &input);
+  glTextureStorage2D(input, 1, GL_R32F, kW, kH);
+  glTextureSubImage2D(input, 0, 0, 0, kW, kH, GL_RED, GL_FLOAT, values.data());
+  glCreateTextures(GL_TEXTURE_2D, 1, &output);
+  glTextureStorage2D(output, 1, GL_RGBA32UI, kW, kH);
+  glCreateFramebuffers(1, &framebuffer);
+  glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, output, 0);
+  ASSERT_EQ(glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  std::ifstream file(std::string(RETROAA_SOURCE_DIR) + "/shaders/common/quad_exchange.glsl");
+  const std::string exchange((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(exchange.empty());
+  const std::string source = "#version 450 core\n" + exchange + R"(
+layout(binding = 0) uniform sampler2D uValues;
+layout(location = 0) out uvec4 outPartners;
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float own = texelFetch(uValues, clamp(pixel, ivec2(0), textureSize(uValues, 0) - 1), 0).r;
+  int sideX = quadPartnerSideX(), sideY = quadPartnerSideY();
+  vec2 acrossX = quadPartnerX(vec2(own, -own), sideX), acrossY = quadPartnerY(vec2(-own, own), sideY);
+  outPartners = uvec4(floatBitsToUint(acrossX), floatBitsToUint(acrossY.y), uint(sideX + 2) | uint(sideY + 2) << 4u);
+})";
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, kW, kH);
+  glBindTextureUnit(0, input);
+  drawWithFragment(source.c_str(), [](GLuint) {});
+  std::vector<uint32_t> partners(size_t(kW) * kH * 4);
+  glReadPixels(0, 0, kW, kH, GL_RGBA_INTEGER, GL_UNSIGNED_INT, partners.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &framebuffer);
+  glDeleteTextures(1, &input);
+  glDeleteTextures(1, &output);
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+
+  auto bits = [&values](int x, int y) {
+    uint32_t b;
+    std::memcpy(&b, &values[size_t(std::clamp(y, 0, kH - 1)) * kW + size_t(std::clamp(x, 0, kW - 1))], 4);
+    return b;
+  };
+  auto side = [&partners](int x, int y, int shift) {
+    return int((partners[(size_t(y) * kW + x) * 4 + 3] >> shift) & 15u) - 2;
+  };
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const uint32_t* p = &partners[(size_t(y) * kW + x) * 4];
+      const int sideX = side(x, y, 0), sideY = side(x, y, 4);
+      ASSERT_TRUE(std::abs(sideX) == 1 && std::abs(sideY) == 1) << x << "," << y;
+      const int partnerX = x + sideX, partnerY = y + sideY;
+      // Partners pair up: a partner inside the image names this pixel back; one outside is a helper.
+      if (partnerX >= 0 && partnerX < kW)
+        EXPECT_EQ(side(partnerX, y, 0), -sideX) << x << "," << y;
+      else
+        EXPECT_EQ(partnerX, kW) << x << "," << y;
+      if (partnerY >= 0 && partnerY < kH)
+        EXPECT_EQ(side(x, partnerY, 4), -sideY) << x << "," << y;
+      else
+        EXPECT_EQ(partnerY, kH) << x << "," << y;
+      EXPECT_EQ(p[0], bits(partnerX, y)) << "across x at " << x << "," << y;
+      EXPECT_EQ(p[1], bits(partnerX, y) ^ 0x80000000u) << "across x, negated, at " << x << "," << y;
+      EXPECT_EQ(p[2], bits(x, partnerY)) << "across y at " << x << "," << y;
+    }
 }

@@ -16,26 +16,38 @@ uniform float uTextureScale;
 uniform int uMinSamples;
 layout(location = 0) out uint outCount;
 
+#include "common/quad_exchange.glsl"
+
+// A pixel's first lit luma and albedo luma (clamped to the image: a helper fragment's too).
+ivec2 clampedToImage(ivec2 pixel) { return clamp(pixel, ivec2(0), textureSize(uFirstLight, 0) - 1); }
+vec2 lumaAndAlbedo(ivec2 pixel) {
+  ivec2 at = clampedToImage(pixel);
+  return vec2(linearLuma(texelFetch(uFirstLight, at, 0).rgb), texelFetch(uGeometryK, at, 0).a);
+}
+
 // A neighbour's first lit luma as if it had this pixel's albedo luma `ownAlbedo` (both known, else 0):
 // texture contrast between pixels is no shading to refine, the albedo term below sees texture inside
 // the window.
-float luma(ivec2 pixel, float ownAlbedo) {
-  ivec2 at = clamp(pixel, ivec2(0), textureSize(uFirstLight, 0) - 1);
-  float albedo = texelFetch(uGeometryK, at, 0).a;
-  float scale = ownAlbedo > 0.0 && albedo > 0.0 ? clamp(ownAlbedo / albedo, 1.0 / 64.0, 64.0) : 1.0;
-  return toDisplay(linearLuma(texelFetch(uFirstLight, at, 0).rgb) * scale);
+float lumaAtOwnAlbedo(vec2 neighbour, float ownAlbedo) {
+  float scale = ownAlbedo > 0.0 && neighbour.y > 0.0 ? clamp(ownAlbedo / neighbour.y, 1.0 / 64.0, 64.0) : 1.0;
+  return toDisplay(neighbour.x * scale);
 }
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 geometry = texelFetch(uGeometryK, pixel, 0);
-  float ownAlbedo = geometry.a;
-  float l0 = luma(pixel, ownAlbedo), lN = luma(pixel + ivec2(0, 1), ownAlbedo);
-  float lS = luma(pixel - ivec2(0, 1), ownAlbedo), lE = luma(pixel + ivec2(1, 0), ownAlbedo);
-  float lW = luma(pixel - ivec2(1, 0), ownAlbedo);
-  float lMax = max(l0, max(max(lN, lS), max(lE, lW)));
-  float kShading = shadingK(min(l0, min(min(lN, lS), min(lE, lW))), lMax);
-  float firstLuma = linearLuma(texelFetch(uFirstLight, pixel, 0).rgb);
+  vec4 geometry = texelFetch(uGeometryK, clampedToImage(pixel), 0);
+  vec2 own = vec2(linearLuma(texelFetch(uFirstLight, clampedToImage(pixel), 0).rgb), geometry.a);
+  float ownAlbedo = own.y;
+  // Of the four neighbours two are in this pixel's quad; the other two are fetched.
+  int sideX = quadPartnerSideX(), sideY = quadPartnerSideY();
+  vec2 partnerX = quadPartnerX(own, sideX), partnerY = quadPartnerY(own, sideY);
+  vec2 outsideX = lumaAndAlbedo(pixel - ivec2(sideX, 0)), outsideY = lumaAndAlbedo(pixel - ivec2(0, sideY));
+  float l0 = lumaAtOwnAlbedo(own, ownAlbedo);
+  float l1 = lumaAtOwnAlbedo(partnerX, ownAlbedo), l2 = lumaAtOwnAlbedo(outsideX, ownAlbedo);
+  float l3 = lumaAtOwnAlbedo(partnerY, ownAlbedo), l4 = lumaAtOwnAlbedo(outsideY, ownAlbedo);
+  float lMax = max(l0, max(max(l1, l2), max(l3, l4)));
+  float kShading = shadingK(min(l0, min(min(l1, l2), min(l3, l4))), lMax);
+  float firstLuma = own.x;
   float kTexture = shadingK(toDisplay(firstLuma * geometry.g), toDisplay(firstLuma * geometry.b), uTextureScale);
   float k = max(geometry.r, max(kShading, kTexture));
   int count = clamp(int(ceil(k)), max(uMinSamples, 1), SAMPLES);
