@@ -12,7 +12,7 @@ layout(location = 0) out uint outCount;
 #include "edge/detector.glsl"
 
 void main() {
-  int count = isEdge(ivec2(gl_FragCoord.xy)) ? SAMPLES : 1;
+  int count = isEdge(min(ivec2(gl_FragCoord.xy), gbufferPixels() - 1)) ? SAMPLES : 1;
   outCount = uint(count);
 #if STENCIL_EXPORT
   gl_FragStencilRefARB = count;

@@ -6,6 +6,8 @@
 #define DETECTOR_VALUE(a, s) FETCH(uAttachments[a], pixel, s)
 #endif
 
+#include "common/quad_exchange.glsl"
+
 uniform float uDepthCloseness;  // c of the depth detector
 uniform float uNormalCosine;    // cos(angle) of the normal detector
 
@@ -23,16 +25,23 @@ float surfaceSlope(float before, float centre, float after) {
 // Whether every sample lies on sample 0's plane, with its normal: depth within the surface's slope across
 // one pixel (sample offsets are under a pixel), normals within 8 degrees. Samples of one surface shaded per
 // sample (a cut-out's texture read at each sample, interpolated normals) pass; a second surface does not.
-bool samplesShareOnePlane(ivec2 pixel) {
-  float d0 = sampleDistance(pixel, 0);
+// `quad`: sample 0's distance here and at the pixel's quad partners (planeInputs).
+struct PlaneInputs {
+  float d0;
+  vec2 partnerD0;  // across x, across y
+  ivec2 side;      // where each partner lies: +1 after this pixel, -1 before
+};
+bool samplesShareOnePlane(ivec2 pixel, PlaneInputs quad) {
+  float d0 = quad.d0;
   vec3 n0 = sampleNormal(pixel, 0);
   ivec2 last = gbufferPixels() - 1;
   float slope = 0.0;
   if (!isinf(d0)) {
-    slope = surfaceSlope(sampleDistance(ivec2(max(pixel.x - 1, 0), pixel.y), 0), d0,
-                         sampleDistance(ivec2(min(pixel.x + 1, last.x), pixel.y), 0)) +
-            surfaceSlope(sampleDistance(ivec2(pixel.x, max(pixel.y - 1, 0)), 0), d0,
-                         sampleDistance(ivec2(pixel.x, min(pixel.y + 1, last.y)), 0));
+    // Per axis the neighbour beyond the quad is fetched; the one inside it came with the quad.
+    slope = surfaceSlope(sampleDistance(ivec2(clamp(pixel.x - quad.side.x, 0, last.x), pixel.y), 0), d0,
+                         quad.partnerD0.x) +
+            surfaceSlope(sampleDistance(ivec2(pixel.x, clamp(pixel.y - quad.side.y, 0, last.y)), 0), d0,
+                         quad.partnerD0.y);
   }
   for (int s = 1; s < SAMPLES; ++s) {
     float d = sampleDistance(pixel, s);
@@ -43,22 +52,34 @@ bool samplesShareOnePlane(ivec2 pixel) {
   return true;
 }
 
+// The plane test's inputs, taken in uniform control flow (the quad exchange needs every fragment of the
+// quad, helpers included): two of its four neighbour fetches come from the quad instead.
+PlaneInputs planeInputs(ivec2 pixel) {
+  PlaneInputs quad;
+  quad.d0 = sampleDistance(pixel, 0);
+  quad.side = ivec2(quadPartnerSideX(), quadPartnerSideY());
+  quad.partnerD0 = vec2(quadPartnerX(vec2(quad.d0), quad.side.x).x, quadPartnerY(vec2(quad.d0), quad.side.y).x);
+  return quad;
+}
+
+// `pixel` inside the G-buffer: a helper fragment beyond its last column or row passes the last one's.
 bool isEdge(ivec2 pixel) {
 #if EDGE_DETECTOR == DETECTOR_EVERY_PIXEL
   return true;
 #elif EDGE_DETECTOR == DETECTOR_PLANE
-  return !samplesShareOnePlane(pixel);
+  return !samplesShareOnePlane(pixel, planeInputs(pixel));
 #elif EDGE_DETECTOR == DETECTOR_COVERAGE
   // A model shader run once per pixel and primitive writes the same outputs into every sample the
   // primitive covers, so bit-identical samples are one surface. Different ones are a second primitive,
   // or one surface shaded per sample (cut-out draws, `sample_shading`, a driver's 16x mode): the plane
   // test tells them apart. It runs once, after the loops (inside them it would be inlined at every
   // unrolled exit and run under each one's lanes).
+  PlaneInputs quad = planeInputs(pixel);
   bool differs = false;
   for (int s = 1; s < SAMPLES; ++s)
 #define DIFFERS_FROM_FIRST(a) differs = differs || DETECTOR_VALUE(a, s) != DETECTOR_VALUE(a, 0);
     FOR_EACH_ATTACHMENT(DIFFERS_FROM_FIRST)
-  return differs && !samplesShareOnePlane(pixel);
+  return differs && !samplesShareOnePlane(pixel, quad);
 #else
   float d0 = sampleDistance(pixel, 0);
   vec3 n0 = sampleNormal(pixel, 0);

@@ -16,7 +16,8 @@ layout(location = RESOLVE_KEPT_DEPTH_LOCATION) out float outKeptDepth;
 #endif
 
 void main() {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  // A helper fragment beyond the last column or row reads the last one (the detector's quad exchange).
+  ivec2 pixel = min(ivec2(gl_FragCoord.xy), gbufferPixels() - 1);
   vec4 values[ATTACHMENT_COUNT];
   float depth;
   resolvePixel(pixel, values, depth);
