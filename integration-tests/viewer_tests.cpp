@@ -94,7 +94,7 @@ TEST(Viewer, ResizeStormLeavesNoObjectAndNoGlError) {
   }
   script << 201 << " quit\n";
   expectRun(viewScript("storm", script.str(), 96, 72), 0,
-            "view: 0 GL errors; plugin GL objects 1 at start, 1 at the end");
+            "view: 0 GL errors; plugin GL objects 2 at start, 2 at the end");
 }
 
 TEST(Viewer, ABadScriptLineIsNamed) {

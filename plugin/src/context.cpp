@@ -24,9 +24,17 @@ float PluginContext::footprintTan(const FrameInfo& frame) const {
 }
 
 void PluginContext::drawFullscreen() const {
-  if (floors) floors->recordDraw(layout.width, layout.height);
-  glBindVertexArray(emptyVertexArray.get());
+  if (floors) floors->recordDraw();
+  glBindVertexArray(wholeScreenVertexArray.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void PluginContext::drawTiles(const TileDraw& tiles) const {
+  if (!tiles.vertexArray) return drawFullscreen();
+  if (floors) floors->recordDraw(tiles);
+  glBindVertexArray(tiles.vertexArray);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, tiles.commands);
+  glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(tiles.offset));
 }
 
 void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
@@ -42,11 +50,14 @@ void PluginContext::beginFullscreenPass(GLuint framebuffer) const {
 }
 
 void PluginContext::dispatchOverScreen(const std::vector<ImageOutput>& outputs, int tileSize) const {
-  if (floors) floors->recordDispatch(outputs, layout.width, layout.height, tileSize);
+  dispatchOver(outputs, layout.width, layout.height, tileSize);
+}
+
+void PluginContext::dispatchOver(const std::vector<ImageOutput>& outputs, int width, int height, int tileSize) const {
+  if (floors) floors->recordDispatch(outputs, width, height, tileSize);
   for (size_t unit = 0; unit < outputs.size(); ++unit)
     glBindImageTexture(GLuint(unit), outputs[unit].texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, outputs[unit].format);
-  glDispatchCompute(GLuint((layout.width + tileSize - 1) / tileSize), GLuint((layout.height + tileSize - 1) / tileSize),
-                    1);
+  glDispatchCompute(GLuint((width + tileSize - 1) / tileSize), GLuint((height + tileSize - 1) / tileSize), 1);
   // Whatever reads the output next (a texture fetch, a blend, a copy, the host's readback) sees the stores.
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   for (size_t unit = 0; unit < outputs.size(); ++unit)
@@ -69,7 +80,7 @@ ScopedPass::ScopedPass(PluginContext& context, const char* name, uint64_t minimu
 
 ScopedPass::~ScopedPass() {
   context_.statistics->endPass();
-  if (context_.floors) context_.floors->close(*context_.statistics, context_.emptyVertexArray.get());
+  if (context_.floors) context_.floors->close(*context_.statistics, context_.wholeScreenVertexArray.get());
   glPopDebugGroup();
 }
 
@@ -276,6 +287,29 @@ GlFramebuffer makeFramebuffer(PluginContext& context, const char* label) {
   const std::string fullLabel = std::string("retroaa.") + label;
   glObjectLabel(GL_FRAMEBUFFER, name, -1, fullLabel.c_str());
   return GlFramebuffer(context.objects, name);
+}
+
+GlBuffer makeBuffer(PluginContext& context, GLsizeiptr bytes, const void* data, const char* label, uint64_t& total) {
+  GLuint name = 0;
+  glCreateBuffers(1, &name);
+  glNamedBufferStorage(name, bytes, data, GL_DYNAMIC_STORAGE_BIT);
+  const std::string fullLabel = std::string("retroaa.") + label;
+  glObjectLabel(GL_BUFFER, name, -1, fullLabel.c_str());
+  total += uint64_t(bytes);
+  return GlBuffer(context.objects, name);
+}
+
+GlVertexArray makeRectangleArray(PluginContext& context, GLuint rectangles, const char* label) {
+  GLuint name = 0;
+  glCreateVertexArrays(1, &name);
+  glEnableVertexArrayAttrib(name, 0);
+  glVertexArrayAttribFormat(name, 0, 4, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(name, 0, 0);
+  glVertexArrayVertexBuffer(name, 0, rectangles, 0, 4 * sizeof(float));
+  glVertexArrayBindingDivisor(name, 0, 1);
+  const std::string fullLabel = std::string("retroaa.") + label;
+  glObjectLabel(GL_VERTEX_ARRAY, name, -1, fullLabel.c_str());
+  return GlVertexArray(context.objects, name);
 }
 
 }  // namespace retroaa

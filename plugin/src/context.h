@@ -32,7 +32,9 @@ struct PluginContext {
   LogCallback log;
   std::vector<std::string> warnings;
   std::unique_ptr<ShaderLibrary> shaders;
-  GlVertexArray emptyVertexArray;               // full-screen passes draw without vertex buffers
+  // Full-screen passes draw through it: attribute 0 the rectangle (-1, -1, 3, 3) (common/fullscreen.vert).
+  GlVertexArray wholeScreenVertexArray;
+  GlBuffer wholeScreenRectangle;
   Stats frameStats;                             // of the frame in flight: what the CPU knows of it (slice count)
   std::unique_ptr<FrameStatistics> statistics;  // what the GPU counts of it, read back frames later
   bool timePasses = false;                      // measure_gpu_time, or a budget that needs the times
@@ -46,7 +48,9 @@ struct PluginContext {
   uint64_t pixelCount() const { return uint64_t(layout.width) * uint64_t(layout.height); }
   // tan(hfov / width): one pixel's footprint per metre of depth, Eq. 1's scale.
   float footprintTan(const FrameInfo& frame) const;
-  void drawFullscreen() const;  // one triangle with the empty vertex array bound
+  void drawFullscreen() const;  // one triangle over the viewport
+  // The tiles `tiles` names (two triangles each), or the whole screen where it names none.
+  void drawTiles(const TileDraw& tiles) const;
   // Binds `framebuffer` (0: leave the binding) with the layout's viewport and plain state: no blend,
   // depth or stencil test, culling or scissor; all colour channels written.
   void beginFullscreenPass(GLuint framebuffer) const;
@@ -57,6 +61,8 @@ struct PluginContext {
   // `outputs` (level 0 of each, in a format that takesImageStores) bound write-only as image units 0, 1, …
   using ImageOutput = retroaa::ImageOutput;
   void dispatchOverScreen(const std::vector<ImageOutput>& outputs, int tileSize) const;
+  // The same over a width x height grid of invocations (a pass over tiles, not pixels).
+  void dispatchOver(const std::vector<ImageOutput>& outputs, int width, int height, int tileSize) const;
 };
 
 // Measures one pass into the frame's statistics when the config asks for it (GPU time, fragment
@@ -97,6 +103,11 @@ void copyLayoutTexture(const GBufferLayout& layout, GLuint from, GLuint to);
 GlTexture makeTexture(PluginContext& context, GLenum internalFormat, int width, int height, int samples,
                       const char* label, uint64_t& bytes);
 GlFramebuffer makeFramebuffer(PluginContext& context, const char* label);
+// A buffer of `bytes` (GL_DYNAMIC_STORAGE_BIT), `data` in it where given; adds its size to `total`.
+GlBuffer makeBuffer(PluginContext& context, GLsizeiptr bytes, const void* data, const char* label, uint64_t& total);
+// A vertex array whose attribute 0 gives each instance one rectangle (four floats) of `rectangles`:
+// common/fullscreen.vert's input.
+GlVertexArray makeRectangleArray(PluginContext& context, GLuint rectangles, const char* label);
 
 // The sized depth format of the host's depth texture: its internal format when sized, else the one its
 // depth and stencil sizes and depth type say (an unsized GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL). 0 when

@@ -161,7 +161,8 @@ void PassFloors::readInputs(Shape& shape, int width, int height) const {
       glGetTextureLevelParameteriv(input.texture, 0, GL_TEXTURE_WIDTH, &textureWidth);
       glGetTextureLevelParameteriv(input.texture, 0, GL_TEXTURE_HEIGHT, &textureHeight);
       input.format = GLenum(format);
-      input.samplesRead = multisampledSampler(type) ? (samplesRead_ > 0 ? std::min(samplesRead_, samples) : samples) : 1;
+      input.samplesRead =
+          multisampledSampler(type) ? (samplesRead_ > 0 ? std::min(samplesRead_, samples) : samples) : 1;
       // A supersampled input holds m × m texels a pixel; a smaller one (or a lookup table) one at most.
       const int across = std::max(1, textureWidth / std::max(width, 1));
       const int down = std::max(1, textureHeight / std::max(height, 1));
@@ -173,11 +174,15 @@ void PassFloors::readInputs(Shape& shape, int width, int height) const {
   }
 }
 
-void PassFloors::recordDraw(int width, int height) {
+void PassFloors::recordDraw(const TileDraw& tiles) {
   if (depth_ == 0) return;
+  GLint viewport[4] = {};
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  const int width = viewport[2], height = viewport[3];
   Shape shape;
   shape.width = width;
   shape.height = height;
+  shape.tiles = tiles;
   GLint framebuffer = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
   if (framebuffer == 0) {
@@ -256,7 +261,7 @@ void PassFloors::recordDispatch(const std::vector<ImageOutput>& outputs, int wid
   shapes_.push_back(shape);
 }
 
-void PassFloors::close(FrameStatistics& statistics, GLuint emptyVertexArray) {
+void PassFloors::close(FrameStatistics& statistics, GLuint wholeScreenVertexArray) {
   if (depth_ == 0 || --depth_ > 0) return;
   const std::string floorName = pass_ + ".floor";
   if (shapes_.empty()) {
@@ -269,7 +274,7 @@ void PassFloors::close(FrameStatistics& statistics, GLuint emptyVertexArray) {
       statistics.addUnmeasuredPass(floorName, shape.unmeasured);
       continue;
     }
-    replay(shape, statistics, emptyVertexArray);
+    replay(shape, statistics, wholeScreenVertexArray);
   }
   shapes_.clear();
 }
@@ -279,10 +284,11 @@ const ShaderProgram* PassFloors::program(const Shape& shape) {
   for (size_t i = 0; i < shape.inputs.size(); ++i) {
     const Input& input = shape.inputs[i];
     const std::string name = "uIn" + std::to_string(i);
-    inputs += "layout(binding = " + std::to_string(i) + ") uniform " + samplerName(input.samplerType) + " " + name + "; ";
+    inputs +=
+        "layout(binding = " + std::to_string(i) + ") uniform " + samplerName(input.samplerType) + " " + name + "; ";
     const int across = input.texelsPerPixel > 1 ? int(std::lround(std::sqrt(double(input.texelsPerPixel)))) : 1;
-    const std::string size = multisampledSampler(input.samplerType) ? "textureSize(" + name + ")"
-                                                                     : "textureSize(" + name + ", 0)";
+    const std::string size =
+        multisampledSampler(input.samplerType) ? "textureSize(" + name + ")" : "textureSize(" + name + ", 0)";
     reads += "for (int t = 0; t < " + std::to_string(input.texelsPerPixel) + "; ++t) for (int s = 0; s < " +
              std::to_string(input.samplesRead) + "; ++s) sum += vec4(texelFetch(" + name + ", min(pixel * " +
              std::to_string(across) + " + ivec2(t % " + std::to_string(across) + ", t / " + std::to_string(across) +
@@ -307,8 +313,8 @@ const ShaderProgram* PassFloors::program(const Shape& shape) {
   }
   if (!shape.compute && shape.depthStencil && shape.depthTest && shape.depthMask)
     writes += "gl_FragDepth = fract(abs(sum.x)); ";
-  std::string defines = "#define FLOOR_INPUTS " + inputs + "\n#define FLOOR_READ " + reads + "\n#define FLOOR_OUTPUTS " +
-                        outputs + "\n#define FLOOR_WRITE " + writes + "\n";
+  std::string defines = "#define FLOOR_INPUTS " + inputs + "\n#define FLOOR_READ " + reads +
+                        "\n#define FLOOR_OUTPUTS " + outputs + "\n#define FLOOR_WRITE " + writes + "\n";
   if (shape.compute)
     defines += "#define FLOOR_TILE " + std::to_string(shape.tileSize) + "\n#define FLOOR_SIZE ivec2(" +
                std::to_string(shape.width) + ", " + std::to_string(shape.height) + ")\n";
@@ -349,8 +355,8 @@ GLuint PassFloors::scratchFramebuffer(const Shape& shape) {
   GLuint depthStencil = shape.depthStencil;
   if (writesDepthStencil) {
     depthStencil = scratchTexture(shape.depthStencilFormat, shape.width, shape.height, shape.samples, -1);
-    const bool testReadsIt = (shape.depthTest && shape.depthFunc != GL_ALWAYS) ||
-                             (shape.stencilTest && shape.stencilFunc != GL_ALWAYS);
+    const bool testReadsIt =
+        (shape.depthTest && shape.depthFunc != GL_ALWAYS) || (shape.stencilTest && shape.stencilFunc != GL_ALWAYS);
     if (testReadsIt)  // outside the floor's timer: the pass found these values in place
       glCopyImageSubData(shape.depthStencil, shape.samples > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, 0, 0, 0, 0,
                          depthStencil, shape.samples > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, 0, 0, 0, 0,
@@ -382,7 +388,7 @@ GLuint PassFloors::scratchFramebuffer(const Shape& shape) {
   return framebuffers_.emplace(key, GlFramebuffer(objects_, framebuffer)).first->second.get();
 }
 
-void PassFloors::replay(const Shape& shape, FrameStatistics& statistics, GLuint emptyVertexArray) {
+void PassFloors::replay(const Shape& shape, FrameStatistics& statistics, GLuint wholeScreenVertexArray) {
   const std::string floorName = pass_ + ".floor";
   const ShaderProgram* floor = program(shape);
   if (!floor) {
@@ -422,13 +428,16 @@ void PassFloors::replay(const Shape& shape, FrameStatistics& statistics, GLuint 
     shape.framebufferSrgb ? glEnable(GL_FRAMEBUFFER_SRGB) : glDisable(GL_FRAMEBUFFER_SRGB);
     shape.sampleShading ? glEnable(GL_SAMPLE_SHADING) : glDisable(GL_SAMPLE_SHADING);
     glMinSampleShading(shape.minSampleShading);
-    glBindVertexArray(emptyVertexArray);
+    glBindVertexArray(shape.tiles.vertexArray ? shape.tiles.vertexArray : wholeScreenVertexArray);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, shape.tiles.commands);
   }
   statistics.beginPass(floorName.c_str(), true, 0, shape.bytesPerInvocation);
   if (shape.compute) {
     glDispatchCompute(GLuint((shape.width + shape.tileSize - 1) / shape.tileSize),
                       GLuint((shape.height + shape.tileSize - 1) / shape.tileSize), 1);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  } else if (shape.tiles.vertexArray) {
+    glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(shape.tiles.offset));
   } else {
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }

@@ -1,6 +1,6 @@
 // Each measured pass's floor (measure_pass_floors): a pass of the same shape that moves the same bytes
 // and does nothing else, timed in the same frame. Every draw and dispatch of a pass is recorded where the
-// plugin issues it (PluginContext::drawFullscreen, dispatchOverScreen): the bound targets' formats and
+// plugin issues it (PluginContext::drawFullscreen, drawTiles, dispatchOverScreen): the bound targets' formats and
 // sample counts, the fixed-function state (stencil mask, depth writes, blending, sample shading) and the
 // textures its program reads. After the pass, each is replayed with a generated shader (shaders/floor/)
 // that fetches every texel and sample of those textures once per invocation (or the samples the pass
@@ -20,6 +20,15 @@ namespace retroaa {
 
 class FrameStatistics;
 
+// A sparse pass's tiles (SliceRenderer::tilesWhereCountAtLeast): a vertex array whose attribute 0 gives
+// each instance one tile's rectangle (common/fullscreen.vert), and the indirect draw command in `commands`
+// at `offset` that draws them. No vertex array: the whole screen.
+struct TileDraw {
+  GLuint vertexArray = 0;
+  GLuint commands = 0;
+  GLintptr offset = 0;
+};
+
 // A texture a compute pass writes through an image unit.
 struct ImageOutput {
   GLuint texture;
@@ -34,11 +43,11 @@ class PassFloors {
   // each timed as "<pass>.floor"; a pass whose draws the floor cannot reproduce, or that drew nothing of
   // its own (the host's lighting, clears and copies), is reported as unmeasured with the reason.
   void open(const char* passName);
-  void close(FrameStatistics& statistics, GLuint emptyVertexArray);
+  void close(FrameStatistics& statistics, GLuint wholeScreenVertexArray);
   // The samples per pixel the open pass reads of each multisampled input (0: every sample).
   void setSamplesRead(int samples) { samplesRead_ = samples; }
 
-  void recordDraw(int width, int height);
+  void recordDraw(const TileDraw& tiles = {});  // over the viewport as set
   void recordDispatch(const std::vector<ImageOutput>& outputs, int width, int height, int tileSize);
 
   // The scratch targets and programs held (counted in the plugin's objects; freed with the plugin's
@@ -50,13 +59,13 @@ class PassFloors {
     GLuint texture = 0;
     GLenum samplerType = 0;
     GLenum format = 0;
-    int samplesRead = 1;        // per texel
-    int texelsPerPixel = 1;     // a supersampled input: m² texels per pixel
+    int samplesRead = 1;     // per texel
+    int texelsPerPixel = 1;  // a supersampled input: m² texels per pixel
   };
   struct Output {
     int location = 0;  // draw buffer index, or image unit
     GLenum format = 0;
-    int samples = 0;   // 0: a single-sample texture
+    int samples = 0;  // 0: a single-sample texture
   };
   struct Shape {
     bool compute = false;
@@ -67,16 +76,17 @@ class PassFloors {
     int width = 0, height = 0, samples = 0, tileSize = 0;
     // Fixed-function state as the pass drew.
     GLboolean depthTest = 0, depthMask = 0, stencilTest = 0, blend = 0, framebufferSrgb = 0, sampleShading = 0;
-    GLint depthFunc = GL_ALWAYS, stencilFunc = GL_ALWAYS, stencilRef = 0, stencilValueMask = 0xFF,
-          stencilWriteMask = 0, stencilFail = GL_KEEP, stencilDepthFail = GL_KEEP, stencilPass = GL_KEEP;
+    GLint depthFunc = GL_ALWAYS, stencilFunc = GL_ALWAYS, stencilRef = 0, stencilValueMask = 0xFF, stencilWriteMask = 0,
+          stencilFail = GL_KEEP, stencilDepthFail = GL_KEEP, stencilPass = GL_KEEP;
     GLint blendSrcRgb = GL_ONE, blendDstRgb = GL_ZERO, blendSrcAlpha = GL_ONE, blendDstAlpha = GL_ZERO,
           blendEquationRgb = GL_FUNC_ADD, blendEquationAlpha = GL_FUNC_ADD;
     GLfloat minSampleShading = 0;
+    TileDraw tiles;          // the tiles the pass drew (none: the whole screen)
     std::string unmeasured;  // why the floor cannot reproduce it (empty: it can)
     uint64_t bytesPerInvocation = 0;
   };
   void readInputs(Shape& shape, int width, int height) const;
-  void replay(const Shape& shape, FrameStatistics& statistics, GLuint emptyVertexArray);
+  void replay(const Shape& shape, FrameStatistics& statistics, GLuint wholeScreenVertexArray);
   const ShaderProgram* program(const Shape& shape);
   GLuint scratchFramebuffer(const Shape& shape);
   GLuint scratchTexture(GLenum format, int width, int height, int samples, int slot);

@@ -94,9 +94,10 @@ Result<std::unique_ptr<Plugin>> Plugin::create(const Description& description) {
                                                     [&context](const std::string& m) { context.warn(m); });
   context.statistics =
       std::make_unique<FrameStatistics>(context.capabilities.timerQuery, context.capabilities.pipelineStatistics);
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  context.emptyVertexArray = GlVertexArray(context.objects, vao);
+  const float wholeScreen[4] = {-1.0f, -1.0f, 3.0f, 3.0f};
+  uint64_t rectangleBytes = 0;
+  context.wholeScreenRectangle = makeBuffer(context, sizeof wholeScreen, wholeScreen, "whole_screen", rectangleBytes);
+  context.wholeScreenVertexArray = makeRectangleArray(context, context.wholeScreenRectangle.get(), "whole_screen");
   if (Status status = impl->allocate(true); !status) return status.error();
   impl->configureBudget(Config{});
   impl->configureFloors(false);

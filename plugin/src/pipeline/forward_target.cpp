@@ -49,8 +49,8 @@ void ForwardTarget::beginFrame(const PluginContext& context) const {
   glClearNamedFramebufferfv(framebuffer_.get(), GL_COLOR, 0, nothingKept);
 }
 
-void ForwardTarget::keepSample(PluginContext& context, GLuint sliceColour, GLuint counts, int minCount,
-                               int sample) const {
+void ForwardTarget::keepSample(PluginContext& context, GLuint sliceColour, GLuint counts, int minCount, int sample,
+                               const TileDraw& tiles) const {
   ScopedPass timed(context, "forward.keep");
   context.beginFullscreenPass(framebuffer_.get());
   glEnable(GL_MULTISAMPLE);  // gl_SampleMask counts only with it (Irrlicht, for one, turns it off)
@@ -61,7 +61,7 @@ void ForwardTarget::keepSample(PluginContext& context, GLuint sliceColour, GLuin
   keep_.bindTexture("uSliceCounts", counts);
   keep_.set("uMinCount", minCount);
   keep_.set("uSample", sample);
-  context.drawFullscreen();
+  context.drawTiles(tiles);
 }
 
 void ForwardTarget::keepShadedColour(const GBufferLayout& layout) const {

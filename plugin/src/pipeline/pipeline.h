@@ -239,6 +239,10 @@ class SliceRenderer {
   Status shade(PluginContext& context, const MsaaGBuffer& source, const ComposingFunction& compose, const Plan& plan,
                const ForwardTarget* forward);
   std::vector<uint8_t> readCounts() const;
+  // Where the pixels with a count of at least `minCount` lie: the tiles that hold one, once shade() has
+  // listed this frame's (counts that vary over the frame); the whole screen otherwise, or for
+  // `minCount` <= 1. A pass limited to those pixels (by the stencil, or by discarding) draws these.
+  TileDraw tilesWhereCountAtLeast(int minCount) const;
   GLuint firstSliceLight() const { return light_.get(); }  // slice 0's light, inside maskAfterFirstSlice
   // What the last shade() overwrote in the host's G-buffer: every pixel, or those with count > 1; and the
   // framebuffer of the host's attachments over the count stencil.
@@ -263,7 +267,12 @@ class SliceRenderer {
   void copyResolvedDepthIntoMask(PluginContext& context);  // a composing layout's depth for slice 0
   Status compositeSlice(PluginContext& context, const Plan& plan, int slice);
   void presentAccumulation(PluginContext& context);
+  // The tile lists of this frame's counts (list_tiles.comp), for tilesWhereCountAtLeast().
+  Status createTileLists(PluginContext& context);
+  void listTiles(PluginContext& context);
 
+  static constexpr int kTileSize = 16;  // pixels across a tile of list_tiles.comp
+  static constexpr int kTileGroup = 8;  // tiles across its work group
   GlTexture light_, mask_, counts_;
   // lightTarget_: where the callback lights (the plugin's light_ and extraLight_; with a composing layout the
   // host's own light textures); composeTarget_: where a composing callback composes (light_), else none.
@@ -282,6 +291,14 @@ class SliceRenderer {
   ShaderProgram writeSlice_, writeSliceDepth_, composite_, markPixels_, presentLight_;
   ShaderProgram stencilFromCounts_;  // with stencil export: the counts into the stencil in one pass
   int maxCount_ = 1;
+  // The tile lists: maxCount_ - 1 indirect draws over tileRectangles_ (list t - 1: tiles with a count above
+  // t), reset from tileCommandsReset_ each frame they are listed; each tile's largest count in tileMaxima_.
+  GlBuffer tileCommands_, tileCommandsReset_, tileRectangles_;
+  GlTexture tileMaxima_;
+  GlVertexArray tileArray_;
+  ShaderProgram listTiles_;
+  bool countsVary_ = false;   // the mask was written per pixel (writeMask, writeStencilFromCounts)
+  bool tilesListed_ = false;  // this frame's tile lists are in tileCommands_ and tileRectangles_
   bool lastWriteEverywhere_ = true;
   uint64_t bytes_ = 0;
 };
@@ -308,8 +325,10 @@ class ForwardTarget {
   static Result<std::unique_ptr<ForwardTarget>> create(PluginContext& context, const MsaaGBuffer& source);
   GLuint framebuffer() const { return framebuffer_.get(); }
   void beginFrame(const PluginContext& context) const;  // at shade(): no sample kept yet
-  // During the slices: the colour of the slice that lit `sample` where the pixel's count is at least minCount.
-  void keepSample(PluginContext& context, GLuint sliceColour, GLuint counts, int minCount, int sample) const;
+  // During the slices: the colour of the slice that lit `sample` where the pixel's count is at least minCount
+  // (drawn over `tiles`, which hold those pixels).
+  void keepSample(PluginContext& context, GLuint sliceColour, GLuint counts, int minCount, int sample,
+                  const TileDraw& tiles) const;
   void keepShadedColour(const GBufferLayout& layout) const;  // at shade()'s end: the scene colour it composed
   // What the host drew into the scene colour since shade() into every sample kept, then the pixel's scene
   // colour into every sample not kept.

@@ -134,9 +134,9 @@ void setResolveInputs(PluginContext& context, const ShaderProgram& program, cons
 }
 
 void drawResolve(PluginContext& context, const ShaderProgram& program, const MsaaGBuffer& source,
-                 const FrameInfo& frame) {
+                 const FrameInfo& frame, const TileDraw& tiles = {}) {
   setResolveInputs(context, program, source, frame);
-  context.drawFullscreen();
+  context.drawTiles(tiles);
 }
 }  // namespace
 
@@ -350,6 +350,9 @@ void ResolvePass::keepForRestore(PluginContext& context, const SliceRenderer& sl
 Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, const FrameInfo& frame,
                             const SliceRenderer& slices) {
   ScopedPass timed(context, "resolve.restore");
+  // Where slice 0 wrote only the pixels lit more than once, the others still hold the resolve: only the
+  // tiles of those pixels are drawn.
+  const TileDraw overwritten = slices.lastWriteEverywhere() ? TileDraw{} : slices.tilesWhereCountAtLeast(2);
   if (keptThisFrame_) {
     keptThisFrame_ = false;
     const GBufferLayout& layout = context.layout;
@@ -364,13 +367,13 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
     program.value()->use();
     for (size_t i = 0; i < layout.attachments.size(); ++i) glBindTextureUnit(GLuint(i), kept_[i].get());
     if (depthFloats) glBindTextureUnit(GLuint(layout.attachments.size()), resolvedDepth_.get());
-    context.drawFullscreen();
+    context.drawTiles(overwritten);
     if (keptDepth_) copyLayoutTexture(layout, kept_.back().get(), layout.depthStencilTexture);
     return Status::ok();
   }
   if (slices.writesHostDepth()) {  // the depth could not be kept: the whole resolve again
     context.beginDepthWritingPass(hostTarget_.get());
-    drawResolve(context, program_, source, frame);
+    drawResolve(context, program_, source, frame, overwritten);
     return Status::ok();
   }
   // Depth test off: the depth is left as it is. Only where a slice wrote: through the slices' writer
@@ -382,7 +385,7 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0x00);
   }
-  drawResolve(context, restoreProgram_, source, frame);
+  drawResolve(context, restoreProgram_, source, frame, overwritten);
   return Status::ok();
 }
 

@@ -28,7 +28,54 @@ Result<std::unique_ptr<SliceRenderer>> SliceRenderer::create(PluginContext& cont
 
   if (Status status = slices->createTargets(context); !status) return status.error();
   if (Status status = slices->createPrograms(context, source); !status) return status.error();
+  if (Status status = slices->createTileLists(context); !status) return status.error();
   return slices;
+}
+
+Status SliceRenderer::createTileLists(PluginContext& context) {
+  const int lists = maxCount_ - 1;
+  if (lists < 1) return Status::ok();
+  const GBufferLayout& layout = context.layout;
+  const int across = (layout.width + kTileSize - 1) / kTileSize, down = (layout.height + kTileSize - 1) / kTileSize;
+  std::vector<GLuint> commands;
+  for (int list = 0; list < lists; ++list) commands.insert(commands.end(), {6u, 0u, 0u, GLuint(list * across * down)});
+  const GLsizeiptr commandBytes = GLsizeiptr(commands.size() * sizeof(GLuint));
+  tileCommandsReset_ = makeBuffer(context, commandBytes, commands.data(), "slices.tile_commands_reset", bytes_);
+  tileCommands_ = makeBuffer(context, commandBytes, commands.data(), "slices.tile_commands", bytes_);
+  tileRectangles_ = makeBuffer(context, GLsizeiptr(lists) * across * down * 4 * GLsizeiptr(sizeof(float)), nullptr,
+                               "slices.tiles", bytes_);
+  tileArray_ = makeRectangleArray(context, tileRectangles_.get(), "slices.tiles");
+  tileMaxima_ = makeTexture(context, GL_R8UI, across, down, 0, "slices.tile_maxima", bytes_);
+  auto list = context.shaders->computeProgram(
+      "slices/list_tiles.comp",
+      defineLine("TILE", kTileSize) + defineLine("GROUP", kTileGroup) + defineLine("SAMPLES", maxCount_),
+      {"uSliceCounts"});
+  if (!list) return list.error();
+  listTiles_ = std::move(list.value());
+  return Status::ok();
+}
+
+void SliceRenderer::listTiles(PluginContext& context) {
+  if (!listTiles_.get()) return;
+  ScopedPass timed(context, "slices.tiles");
+  GLint commandBytes = 0, across = 0, down = 0;
+  glGetNamedBufferParameteriv(tileCommands_.get(), GL_BUFFER_SIZE, &commandBytes);
+  glCopyNamedBufferSubData(tileCommandsReset_.get(), tileCommands_.get(), 0, 0, commandBytes);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glGetTextureLevelParameteriv(tileMaxima_.get(), 0, GL_TEXTURE_WIDTH, &across);
+  glGetTextureLevelParameteriv(tileMaxima_.get(), 0, GL_TEXTURE_HEIGHT, &down);
+  listTiles_.use();
+  listTiles_.bindTexture("uSliceCounts", counts_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, tileCommands_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileRectangles_.get());
+  context.dispatchOver({{tileMaxima_.get(), GL_R8UI}}, across, down, kTileGroup);
+  tilesListed_ = true;
+}
+
+TileDraw SliceRenderer::tilesWhereCountAtLeast(int minCount) const {
+  if (!tilesListed_ || minCount <= 1) return {};
+  const int list = std::min(minCount, maxCount_) - 2;  // list t - 1 holds the tiles with a count above t
+  return {tileArray_.get(), tileCommands_.get(), GLintptr(list) * 4 * GLintptr(sizeof(GLuint))};
 }
 
 // The framebuffers over the mask, the light and the host's targets; the half-float sum where needed.
@@ -206,6 +253,7 @@ Status SliceRenderer::writeMask(PluginContext& context, GLuint maskProgram, bool
   glUseProgram(maskProgram);
   context.drawFullscreen();
   if (!stencilExport) stencilFromCounts(context);
+  countsVary_ = true;
   return Status::ok();
 }
 
@@ -216,10 +264,14 @@ Status SliceRenderer::writeStencilFromCounts(PluginContext& context) {
   glClearNamedFramebufferfi(maskTarget_.get(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glDepthMask(GL_FALSE);
   stencilFromCounts(context);
+  countsVary_ = true;
   return Status::ok();
 }
 
-void SliceRenderer::writeUniformMask(PluginContext& context, int count) { clearMask(context, maskTarget_.get(), count); }
+void SliceRenderer::writeUniformMask(PluginContext& context, int count) {
+  clearMask(context, maskTarget_.get(), count);
+  countsVary_ = false;
+}
 
 namespace {
 
@@ -246,6 +298,8 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
   const int sliceCount = plan.sliceCount > 0 ? plan.sliceCount : maxCount_;
   context.frameStats.slices = sliceCount;
   lastWriteEverywhere_ = plan.firstSliceEverywhere;
+  tilesListed_ = false;
+  if (countsVary_ && !plan.maskAfterFirstSlice) listTiles(context);
   if (keepsSliceDepth()) copyResolvedDepthIntoMask(context);
   GLuint previousPixels = 0;  // the last slice's occlusion query (none for slice 0)
   for (int slice = 0; slice < sliceCount; ++slice) {
@@ -264,11 +318,14 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     lightSlice(context, compose, slice);
     if (slice == 0 && plan.maskAfterFirstSlice) {
       if (Status status = plan.maskAfterFirstSlice(); !status) return status;
+      if (countsVary_) listTiles(context);
     }
     const Status composited = compositeSlice(context, plan, slice);
     if (keepsSamples) {  // a pixel one slice lit is that slice's colour in every sample: fill.frag gives it
-      forward->keepSample(context, light_.get(), counts_.get(), std::max(leastCountLitBy(plan, slice), 2),
-                          plan.sampleOrder.empty() ? slice : plan.sampleOrder[size_t(slice)]);
+      const int keptCount = std::max(leastCountLitBy(plan, slice), 2);
+      forward->keepSample(context, light_.get(), counts_.get(), keptCount,
+                          plan.sampleOrder.empty() ? slice : plan.sampleOrder[size_t(slice)],
+                          tilesWhereCountAtLeast(keptCount));
     }
     if (skippable) glEndConditionalRender();
     if (!composited) return composited;
@@ -304,7 +361,8 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
   // its occlusion query counts the slice's evaluations, without a pass of its own.
   const bool countOnGpu = slice > 0;
   const GLuint slicePixels = countOnGpu ? context.statistics->beginEvaluationCount() : 0;
-  context.drawFullscreen();
+  const TileDraw tiles = tilesWhereCountAtLeast(leastCountLitBy(plan, slice));
+  context.drawTiles(tiles);
   if (countOnGpu)
     context.statistics->endEvaluationCount();
   else
@@ -317,7 +375,7 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
     const ShaderProgram* program = useWriter(plan.writeDepthProgram, writeSliceDepth_);
     program->set("uMinCount", leastCountLitBy(plan, slice));
     glBindTextureUnit(kUnitSliceCounts, counts_.get());
-    context.drawFullscreen();
+    context.drawTiles(tiles);
   }
   return slicePixels;
 }
@@ -375,7 +433,7 @@ Status SliceRenderer::compositeSlice(PluginContext& context, const Plan& plan, i
     } else {
       composite_.bindTexture("uSliceCounts", counts_.get());
     }
-    context.drawFullscreen();
+    context.drawTiles(tilesWhereCountAtLeast(slice + 1));
   }
   return Status::ok();
 }
