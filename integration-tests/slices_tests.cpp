@@ -36,6 +36,23 @@ TEST(Slices, EdgeMarkingEveryPixelEqualsPerSample) {
   EXPECT_EQ(host.hooks->plugin().waitForStats().evaluationsPerPixel(), double(host.hooks->plugin().stats().samples));
 }
 
+// The slices past the first draw only the 16 x 16 tiles that hold their pixels (SliceRenderer::
+// tilesWhereCountAtLeast), partial ones along the right and top edges here: each slice's occlusion query
+// counts what its write drew, so a marked pixel no tile covers, or one two tiles draw, shows in the total.
+TEST(Slices, SparseSlicesTilesCoverEveryMarkedPixelOnce) {
+  PatchedHost host("default", 157, 119);
+  for (const char* spec : {"edge", "adaptive", "aggregate"}) {
+    host.render(spec);
+    const retroaa::Stats stats = host.hooks->plugin().waitForStats();
+    const std::vector<uint8_t> counts = host.hooks->plugin().readSliceCounts();
+    ASSERT_EQ(counts.size(), size_t(157 * 119)) << spec;
+    const uint64_t marked = std::count_if(counts.begin(), counts.end(), [](uint8_t c) { return c > 1; });
+    EXPECT_GT(marked, 0u) << spec;
+    EXPECT_LT(marked, counts.size() / 2) << spec;
+    EXPECT_EQ(stats.lightingEvaluations, std::accumulate(counts.begin(), counts.end(), uint64_t(0))) << spec;
+  }
+}
+
 TEST(Slices, EdgeMatchesPerSampleAndCountsEvaluationsExactly) {
   PatchedHost host("default", 320, 240);
   const app::DisplayImage reference = host.render("per-sample");
