@@ -50,6 +50,11 @@ TEST(Slices, SparseSlicesTilesCoverEveryMarkedPixelOnce) {
     EXPECT_GT(marked, 0u) << spec;
     EXPECT_LT(marked, counts.size() / 2) << spec;
     EXPECT_EQ(stats.lightingEvaluations, std::accumulate(counts.begin(), counts.end(), uint64_t(0))) << spec;
+    // slice_tiles=off: full screens the stencil limits, the same image.
+    const app::DisplayImage tiled = host.render(spec);
+    retroaa::Config fullScreens;
+    fullScreens.sliceTiles = false;
+    EXPECT_EQ(host.render(spec, fullScreens).rgb, tiled.rgb) << spec;
   }
 }
 

@@ -43,8 +43,7 @@ Key presetKey() {
     std::istringstream in(found->second);
     for (std::string line; std::getline(in, line);)
       if (line.rfind("shader_override_dir", 0) != 0 && line.rfind("measure_gpu_time", 0) != 0 &&
-          line.rfind("measure_pass_floors", 0) != 0 &&
-          line.rfind("preset", 0) != 0)
+          line.rfind("measure_pass_floors", 0) != 0 && line.rfind("preset", 0) != 0)
         lines += line + "\n";
     return applyConfigText(c, lines, "preset " + v);
   };
@@ -78,6 +77,10 @@ std::vector<Key> buildKeys() {
       onOff("restore_gbuffer_after_shade", &Config::restoreGBufferAfterShade,
             "after a slice method's lighting, resolve into your G-buffer again so later passes read the resolved "
             "surface, not the last slice; off saves one resolve pass"));
+  keys.push_back(onOff("slice_tiles", &Config::sliceTiles,
+                       "a slice method's passes limited to the pixels lit more than once draw only the 16x16 tiles "
+                       "that hold them (listed on the GPU each frame); off draws full screens the stencil limits, "
+                       "the same image"));
   keys.push_back(presetKey());
   keys.push_back(
       number("budget_ms", &Config::budgetMs, 0, 1000,
@@ -89,10 +92,10 @@ std::vector<Key> buildKeys() {
       onOff("measure_gpu_time", &Config::measureGpuTime,
             "timer and fragment-invocation queries per plugin pass, read back frames later (stats() never waits; "
             "waitForStats() does)"));
-  keys.push_back(onOff(
-      "measure_pass_floors", &Config::measurePassFloors,
-      "with measure_gpu_time: after each plugin pass, a pass of the same shape that only fetches and writes the "
-      "same bytes, timed as <pass>.floor (its floor on this device; adds that GPU work to the frame)"));
+  keys.push_back(
+      onOff("measure_pass_floors", &Config::measurePassFloors,
+            "with measure_gpu_time: after each plugin pass, a pass of the same shape that only fetches and writes the "
+            "same bytes, timed as <pass>.floor (its floor on this device; adds that GPU work to the frame)"));
   for (const TechniqueRow& row : techniqueRegistry())  // the keys a method reads besides its own
     for (const char* name : row.otherKeys) {
       auto key =

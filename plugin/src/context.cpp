@@ -35,6 +35,7 @@ void PluginContext::drawTiles(const TileDraw& tiles) const {
   glBindVertexArray(tiles.vertexArray);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, tiles.commands);
   glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(tiles.offset));
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);  // the host's lighting callback finds none of ours bound
 }
 
 void PluginContext::beginFullscreenPass(GLuint framebuffer) const {

@@ -135,6 +135,7 @@ struct Config {
   bool temporalBeforeTonemap = true;     // `temporal_before_tonemap`
   // Shared by every method.
   bool restoreGBufferAfterShade = true;  // `restore_gbuffer_after_shade`
+  bool sliceTiles = true;                // `slice_tiles`
   float budgetMs = 0.0f;                 // `budget_ms`
   // `fxaa`, and FXAA stacked on any method (`resolve+fxaa`; FreeSpace Open users combine -msaa and FXAA).
   bool fxaa = false;                            // `fxaa`

@@ -69,6 +69,7 @@ void SliceRenderer::listTiles(PluginContext& context) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, tileCommands_.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileRectangles_.get());
   context.dispatchOver({{tileMaxima_.get(), GL_R8UI}}, across, down, kTileGroup);
+  for (GLuint binding : {0u, 1u}) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);  // as for the indirect buffer
   tilesListed_ = true;
 }
 
@@ -299,7 +300,8 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
   context.frameStats.slices = sliceCount;
   lastWriteEverywhere_ = plan.firstSliceEverywhere;
   tilesListed_ = false;
-  if (countsVary_ && !plan.maskAfterFirstSlice) listTiles(context);
+  const bool listsTiles = countsVary_ && context.config.sliceTiles;
+  if (listsTiles && !plan.maskAfterFirstSlice) listTiles(context);
   if (keepsSliceDepth()) copyResolvedDepthIntoMask(context);
   GLuint previousPixels = 0;  // the last slice's occlusion query (none for slice 0)
   for (int slice = 0; slice < sliceCount; ++slice) {
@@ -318,7 +320,7 @@ Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, c
     lightSlice(context, compose, slice);
     if (slice == 0 && plan.maskAfterFirstSlice) {
       if (Status status = plan.maskAfterFirstSlice(); !status) return status;
-      if (countsVary_) listTiles(context);
+      if (listsTiles) listTiles(context);
     }
     const Status composited = compositeSlice(context, plan, slice);
     if (keepsSamples) {  // a pixel one slice lit is that slice's colour in every sample: fill.frag gives it
