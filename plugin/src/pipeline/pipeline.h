@@ -295,6 +295,8 @@ class SliceRenderer {
   // t), reset from tileCommandsReset_ each frame they are listed; each tile's largest count in tileMaxima_.
   GlBuffer tileCommands_, tileCommandsReset_, tileRectangles_;
   GlTexture tileMaxima_;
+  int tilesAcross_ = 0, tilesDown_ = 0;
+  GLsizeiptr tileCommandBytes_ = 0;
   GlVertexArray tileArray_;
   ShaderProgram listTiles_;
   bool countsVary_ = false;   // the mask was written per pixel (writeMask, writeStencilFromCounts)

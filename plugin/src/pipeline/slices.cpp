@@ -36,10 +36,11 @@ Status SliceRenderer::createTileLists(PluginContext& context) {
   const int lists = maxCount_ - 1;
   if (lists < 1) return Status::ok();
   const GBufferLayout& layout = context.layout;
-  const int across = (layout.width + kTileSize - 1) / kTileSize, down = (layout.height + kTileSize - 1) / kTileSize;
+  const int across = tilesAcross_ = (layout.width + kTileSize - 1) / kTileSize;
+  const int down = tilesDown_ = (layout.height + kTileSize - 1) / kTileSize;
   std::vector<GLuint> commands;
   for (int list = 0; list < lists; ++list) commands.insert(commands.end(), {6u, 0u, 0u, GLuint(list * across * down)});
-  const GLsizeiptr commandBytes = GLsizeiptr(commands.size() * sizeof(GLuint));
+  const GLsizeiptr commandBytes = tileCommandBytes_ = GLsizeiptr(commands.size() * sizeof(GLuint));
   tileCommandsReset_ = makeBuffer(context, commandBytes, commands.data(), "slices.tile_commands_reset", bytes_);
   tileCommands_ = makeBuffer(context, commandBytes, commands.data(), "slices.tile_commands", bytes_);
   tileRectangles_ = makeBuffer(context, GLsizeiptr(lists) * across * down * 4 * GLsizeiptr(sizeof(float)), nullptr,
@@ -58,17 +59,13 @@ Status SliceRenderer::createTileLists(PluginContext& context) {
 void SliceRenderer::listTiles(PluginContext& context) {
   if (!listTiles_.get()) return;
   ScopedPass timed(context, "slices.tiles");
-  GLint commandBytes = 0, across = 0, down = 0;
-  glGetNamedBufferParameteriv(tileCommands_.get(), GL_BUFFER_SIZE, &commandBytes);
-  glCopyNamedBufferSubData(tileCommandsReset_.get(), tileCommands_.get(), 0, 0, commandBytes);
+  glCopyNamedBufferSubData(tileCommandsReset_.get(), tileCommands_.get(), 0, 0, tileCommandBytes_);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glGetTextureLevelParameteriv(tileMaxima_.get(), 0, GL_TEXTURE_WIDTH, &across);
-  glGetTextureLevelParameteriv(tileMaxima_.get(), 0, GL_TEXTURE_HEIGHT, &down);
   listTiles_.use();
   listTiles_.bindTexture("uSliceCounts", counts_.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, tileCommands_.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tileRectangles_.get());
-  context.dispatchOver({{tileMaxima_.get(), GL_R8UI}}, across, down, kTileGroup);
+  context.dispatchOver({{tileMaxima_.get(), GL_R8UI}}, tilesAcross_, tilesDown_, kTileGroup);
   for (GLuint binding : {0u, 1u}) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);  // as for the indirect buffer
   tilesListed_ = true;
 }
