@@ -1,6 +1,6 @@
 // Each measured pass's floor (measure_pass_floors): a pass of the same shape that moves the same bytes
 // and does nothing else, timed in the same frame. Every draw and dispatch of a pass is recorded where the
-// plugin issues it (PluginContext::drawFullscreen, drawTiles, dispatchOverScreen): the bound targets' formats and
+// plugin issues it (PluginContext::drawFullscreen, drawTiles, dispatchOver): the bound targets' formats and
 // sample counts, the fixed-function state (stencil mask, depth writes, blending, sample shading) and the
 // textures its program reads. After the pass, each is replayed with a generated shader (shaders/floor/)
 // that fetches every texel and sample of those textures once per invocation (or the samples the pass

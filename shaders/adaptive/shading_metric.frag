@@ -18,8 +18,9 @@ layout(location = 0) out uint outCount;
 
 #include "common/quad_exchange.glsl"
 
-// A pixel's first lit luma and albedo luma (clamped to the image: a helper fragment's too).
+// Inside the image: a helper fragment's too.
 ivec2 clampedToImage(ivec2 pixel) { return clamp(pixel, ivec2(0), textureSize(uFirstLight, 0) - 1); }
+// A pixel's first lit luma and albedo luma.
 vec2 lumaAndAlbedo(ivec2 pixel) {
   ivec2 at = clampedToImage(pixel);
   return vec2(linearLuma(texelFetch(uFirstLight, at, 0).rgb), texelFetch(uGeometryK, at, 0).a);

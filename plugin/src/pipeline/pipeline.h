@@ -243,6 +243,9 @@ class SliceRenderer {
   // listed this frame's (counts that vary over the frame); the whole screen otherwise, or for
   // `minCount` <= 1. A pass limited to those pixels (by the stencil, or by discarding) draws these.
   TileDraw tilesWhereCountAtLeast(int minCount) const;
+  // The same pixels as the stencil test over this renderer's mask (none where `minCount` <= 1), and the
+  // tiles that hold them: what a pass drawn over the mask passes to drawTiles.
+  TileDraw limitToCountAtLeast(int minCount) const;
   GLuint firstSliceLight() const { return light_.get(); }  // slice 0's light, inside maskAfterFirstSlice
   // What the last shade() overwrote in the host's G-buffer: every pixel, or those with count > 1; and the
   // framebuffer of the host's attachments over the count stencil.

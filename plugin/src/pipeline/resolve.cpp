@@ -379,12 +379,7 @@ Status ResolvePass::restore(PluginContext& context, const MsaaGBuffer& source, c
   // Depth test off: the depth is left as it is. Only where a slice wrote: through the slices' writer
   // (the host's attachments over the count stencil) where count > 1, unless slice 0 wrote everywhere.
   context.beginFullscreenPass(slices.lastWriteEverywhere() ? hostTarget_.get() : slices.writer());
-  if (!slices.lastWriteEverywhere()) {
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_LESS, 1, 0xFF);  // 1 < count
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glStencilMask(0x00);
-  }
+  if (!slices.lastWriteEverywhere()) slices.limitToCountAtLeast(2);
   drawResolve(context, restoreProgram_, source, frame, overwritten);
   return Status::ok();
 }

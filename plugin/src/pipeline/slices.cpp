@@ -70,6 +70,14 @@ void SliceRenderer::listTiles(PluginContext& context) {
   tilesListed_ = true;
 }
 
+TileDraw SliceRenderer::limitToCountAtLeast(int minCount) const {
+  if (minCount <= 1)
+    glDisable(GL_STENCIL_TEST);  // every pixel's count is at least 1
+  else
+    stencilPassWhereCountAbove(minCount - 1);
+  return tilesWhereCountAtLeast(minCount);
+}
+
 TileDraw SliceRenderer::tilesWhereCountAtLeast(int minCount) const {
   if (!tilesListed_ || minCount <= 1) return {};
   const int list = std::min(minCount, maxCount_) - 2;  // list t - 1 holds the tiles with a count above t
@@ -279,14 +287,6 @@ int leastCountLitBy(const SliceRenderer::Plan& plan, int slice) {
   return slice > 0 ? slice + 1 : plan.firstSliceEverywhere ? 0 : 2;
 }
 
-// Stencil for slice s: count > s; slice 0 covers every pixel.
-void sliceStencil(int slice) {
-  if (slice == 0)
-    glDisable(GL_STENCIL_TEST);
-  else
-    stencilPassWhereCountAbove(slice);
-}
-
 }  // namespace
 
 Status SliceRenderer::shade(PluginContext& context, const MsaaGBuffer& source, const ComposingFunction& compose,
@@ -338,10 +338,7 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
   ScopedPass timed(context, "slices.write");
   if (!plan.writeProgram) timed.floorReadsSamples(1);  // the stock writer copies one sample of each attachment
   context.beginFullscreenPass(sliceWriter_.get());
-  if (slice == 0 && !plan.firstSliceEverywhere)
-    stencilPassWhereCountAbove(1);  // slice 0 keeps the resolved G-buffer of single-count pixels
-  else
-    sliceStencil(slice);
+  const TileDraw tiles = limitToCountAtLeast(leastCountLitBy(plan, slice));
   auto useWriter = [&](const ShaderProgram* own, const ShaderProgram& stock) {
     const ShaderProgram& program = plan.writeProgram ? *own : stock;
     program.use();
@@ -360,7 +357,6 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
   // its occlusion query counts the slice's evaluations, without a pass of its own.
   const bool countOnGpu = slice > 0;
   const GLuint slicePixels = countOnGpu ? context.statistics->beginEvaluationCount() : 0;
-  const TileDraw tiles = tilesWhereCountAtLeast(leastCountLitBy(plan, slice));
   context.drawTiles(tiles);
   if (countOnGpu)
     context.statistics->endEvaluationCount();
@@ -398,7 +394,7 @@ void SliceRenderer::lightSlice(PluginContext& context, const ComposingFunction& 
   for (GLint buffer = 0; buffer < lightOutputs; ++buffer)
     glClearNamedFramebufferfv(lightTarget_.get(), GL_COLOR, buffer, black);
   if (composeTarget_) glClearNamedFramebufferfv(composeTarget_.get(), GL_COLOR, 0, black);
-  sliceStencil(slice);
+  limitToCountAtLeast(slice + 1);  // slice s lights the pixels with count > s
   compose({lightTarget_.get(), composeTarget_.get()});
 }
 
@@ -417,7 +413,7 @@ Status SliceRenderer::compositeSlice(PluginContext& context, const Plan& plan, i
   for (size_t output = 0; output < lights.size(); ++output) {
     // weight × light into the output's target: slice 0 overwrites the whole target, later slices add.
     context.beginFullscreenPass(output == 0 ? compositeTarget_.get() : extraCompositeTarget_[output - 1].get());
-    sliceStencil(slice);
+    const TileDraw tiles = limitToCountAtLeast(slice + 1);
     glEnable(GL_FRAMEBUFFER_SRGB);  // an sRGB light target (a display lit directly) adds in linear light
     if (slice > 0) {
       glEnable(GL_BLEND);
@@ -432,7 +428,7 @@ Status SliceRenderer::compositeSlice(PluginContext& context, const Plan& plan, i
     } else {
       composite_.bindTexture("uSliceCounts", counts_.get());
     }
-    context.drawTiles(tilesWhereCountAtLeast(slice + 1));
+    context.drawTiles(tiles);
   }
   return Status::ok();
 }
