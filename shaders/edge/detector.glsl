@@ -43,13 +43,16 @@ bool samplesShareOnePlane(ivec2 pixel, PlaneInputs quad) {
             surfaceSlope(sampleDistance(ivec2(pixel.x, clamp(pixel.y - quad.side.y, 0, last.y)), 0), d0,
                          quad.partnerD0.y);
   }
+  // No jumps in the loop (see resolve.glsl): it unrolls, and the resolve's arrays stay in registers.
+  bool onePlane = true;
   for (int s = 1; s < SAMPLES; ++s) {
     float d = sampleDistance(pixel, s);
-    if (isinf(d) != isinf(d0)) return false;  // geometry beside background
-    if (isinf(d)) continue;                   // background beside background
-    if (abs(d - d0) > slope + 1e-5 * d0 || dot(sampleNormal(pixel, s), n0) < 0.99) return false;
+    if (isinf(d) || isinf(d0))
+      onePlane = onePlane && isinf(d) == isinf(d0);  // background beside background only
+    else
+      onePlane = onePlane && !(abs(d - d0) > slope + 1e-5 * d0 || dot(sampleNormal(pixel, s), n0) < 0.99);
   }
-  return true;
+  return onePlane;
 }
 
 // The plane test's inputs, taken in uniform control flow (the quad exchange needs every fragment of the
@@ -83,38 +86,41 @@ bool isEdge(ivec2 pixel) {
 #else
   float d0 = sampleDistance(pixel, 0);
   vec3 n0 = sampleNormal(pixel, 0);
+  bool edge = false;  // (no jumps in the loop: see samplesShareOnePlane)
   for (int s = 1; s < SAMPLES; ++s) {
     float d = sampleDistance(pixel, s);
-    if (isinf(d) != isinf(d0)) return true;  // geometry beside background
-    if (isinf(d)) continue;                  // background beside background
+    if (isinf(d) || isinf(d0)) {
+      edge = edge || isinf(d) != isinf(d0);  // geometry beside background; background beside background is none
+    } else {
 #if EDGE_DETECTOR == DETECTOR_DEPTH
-    if (abs(d - d0) > min(d, d0) * uFootprintTan * uDepthCloseness) return true;
+      edge = edge || abs(d - d0) > min(d, d0) * uFootprintTan * uDepthCloseness;
 #elif EDGE_DETECTOR == DETECTOR_NORMAL
-    if (dot(normalize(sampleNormal(pixel, s)), normalize(n0)) < uNormalCosine) return true;
+      edge = edge || dot(normalize(sampleNormal(pixel, s)), normalize(n0)) < uNormalCosine;
 #elif EDGE_DETECTOR == DETECTOR_MATERIAL
-    // The material channels the layout has: albedo, specular, and gloss beside an xyz normal.
-    bool differs = false;
+      // The material channels the layout has: albedo, specular, and gloss beside an xyz normal.
+      bool differs = false;
 #if ALBEDO_ATTACHMENT >= 0
-    differs = differs ||
-              any(greaterThan(abs(DETECTOR_VALUE(ALBEDO_ATTACHMENT, s) - DETECTOR_VALUE(ALBEDO_ATTACHMENT, 0)),
-                              vec4(1.0 / 512.0)));
+      differs = differs ||
+                any(greaterThan(abs(DETECTOR_VALUE(ALBEDO_ATTACHMENT, s) - DETECTOR_VALUE(ALBEDO_ATTACHMENT, 0)),
+                                vec4(1.0 / 512.0)));
 #endif
 #if SPECULAR_ATTACHMENT >= 0
-    differs = differs ||
-              any(greaterThan(abs(DETECTOR_VALUE(SPECULAR_ATTACHMENT, s) - DETECTOR_VALUE(SPECULAR_ATTACHMENT, 0)),
-                              vec4(1.0 / 512.0)));
+      differs = differs ||
+                any(greaterThan(abs(DETECTOR_VALUE(SPECULAR_ATTACHMENT, s) - DETECTOR_VALUE(SPECULAR_ATTACHMENT, 0)),
+                                vec4(1.0 / 512.0)));
 #endif
 #if NORMAL_ATTACHMENT >= 0 && NORMAL_ENCODING == NORMAL_XYZ
-    differs = differs || abs(DETECTOR_VALUE(NORMAL_ATTACHMENT, s).w - DETECTOR_VALUE(NORMAL_ATTACHMENT, 0).w) > 1.0 / 512.0;
+      differs = differs || abs(DETECTOR_VALUE(NORMAL_ATTACHMENT, s).w - DETECTOR_VALUE(NORMAL_ATTACHMENT, 0).w) > 1.0 / 512.0;
 #endif
 #if NORMAL_ATTACHMENT >= 0 && NORMAL_ENCODING == NORMAL_SPHEREMAP  // zw: the host's material (STK: roughness, metallic)
-    differs = differs || any(greaterThan(abs(DETECTOR_VALUE(NORMAL_ATTACHMENT, s).zw -
-                                             DETECTOR_VALUE(NORMAL_ATTACHMENT, 0).zw),
-                                         vec2(1.0 / 512.0)));
+      differs = differs || any(greaterThan(abs(DETECTOR_VALUE(NORMAL_ATTACHMENT, s).zw -
+                                               DETECTOR_VALUE(NORMAL_ATTACHMENT, 0).zw),
+                                           vec2(1.0 / 512.0)));
 #endif
-    if (differs) return true;
+      edge = edge || differs;
 #endif
+    }
   }
-  return false;
+  return edge;
 #endif
 }

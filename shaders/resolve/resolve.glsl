@@ -43,16 +43,19 @@ float fsoWeight(float dist, float z) {
 // the arrays in scratch memory.
 #if SAMPLES <= 8
 vec4 fetched[SAMPLES][ATTACHMENT_COUNT];
+float fetchedDepthBuffer[SAMPLES];
 #define SAMPLE_VALUE(a, s) fetched[s][a]
+#define SAMPLE_DEPTH_BUFFER(s) fetchedDepthBuffer[s]
 #else
 #define SAMPLE_VALUE(a, s) FETCH(uAttachments[a], pixel, s)
+#define SAMPLE_DEPTH_BUFFER(s) FETCH(uDepthBuffer, pixel, s).r
 #endif
 // A sample's view distance and whether the host marked it as background, from the cached values.
 #if DEPTH_SOURCE == DEPTH_SOURCE_DEPTH_BUFFER
-#define SAMPLE_DISTANCE(s) distanceOfDepthBuffer(FETCH(uDepthBuffer, pixel, s).r)
-#define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r)
+#define SAMPLE_DISTANCE(s) distanceOfDepthBuffer(SAMPLE_DEPTH_BUFFER(s))
+#define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(SAMPLE_DEPTH_BUFFER(s))
 #elif DEPTH_SOURCE == DEPTH_SOURCE_WORLD_POSITION
-#define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(FETCH(uDepthBuffer, pixel, s).r)
+#define SAMPLE_MARKED_BACKGROUND(s) depthBufferIsFar(SAMPLE_DEPTH_BUFFER(s))
 #define SAMPLE_DISTANCE(s) \
   (SAMPLE_MARKED_BACKGROUND(s) ? 1.0 / 0.0 : distanceOfWorld(SAMPLE_VALUE(POSITION_ATTACHMENT, s).xyz))
 #else
@@ -100,9 +103,11 @@ bool fartherSurfaceCoversMore(ivec2 pixel, float nearMiddle, float farMiddle, in
 // The resolved values of `pixel`: one per host attachment, and the value for the host's depth buffer.
 void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float depth) {
 #if SAMPLES <= 8
-  for (int s = 0; s < SAMPLES; ++s)
+  for (int s = 0; s < SAMPLES; ++s) {
 #define FETCH_ATTACHMENT(a) fetched[s][a] = FETCH(uAttachments[a], pixel, s);
     FOR_EACH_ATTACHMENT(FETCH_ATTACHMENT)
+    fetchedDepthBuffer[s] = FETCH(uDepthBuffer, pixel, s).r;
+  }
 #endif
   bool fso = uWeighting == WEIGHTING_FSO;
   float distance[SAMPLES];  // metres in front of the camera; +inf for background
@@ -120,7 +125,6 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
     sortKey[s] = fso && isinf(distance[s]) ? 0.0 : distance[s];
     if (usable[s]) ++usableCount;
   }
-
 #define CLEAR_VALUE(a) values[a] = vec4(0.0);
   if (usableCount == 0) {  // every sample corrupt: write an empty background pixel
     FOR_EACH_ATTACHMENT(CLEAR_VALUE)
@@ -172,9 +176,6 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
     reference = nextInOrder;
     dRef = dNext;
   }
-  float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
-  bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
-
 #if SAMPLES <= 8
   // One surface: every sample bit-identical in every attachment (one primitive's outputs; a NaN compares
   // unequal, so corrupt samples take the general path). The weighted mean of equal values is the value:
@@ -184,101 +185,112 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
   for (int s = 1; s < SAMPLES; ++s)
 #define SAME_AS_FIRST(a) identical = identical && all(equal(fetched[s][a], fetched[0][a]));
     FOR_EACH_ATTACHMENT(SAME_AS_FIRST)
-  if (identical) {
 #define FIRST_SAMPLE(a) values[a] = fetched[0][a];
-    FOR_EACH_ATTACHMENT(FIRST_SAMPLE)
-    if (referenceIsBackground) {
-      depth = 0.0;
-      for (int s = 0; s < SAMPLES; ++s) depth = max(depth, FETCH(uDepthBuffer, pixel, s).r);
-      return;
-    }
+  FOR_EACH_ATTACHMENT(FIRST_SAMPLE)
+  float farthestDepthBuffer = 0.0;
+  for (int s = 0; s < SAMPLES; ++s) {
+    farthestDepthBuffer = max(farthestDepthBuffer, SAMPLE_DEPTH_BUFFER(s));
+    if (s == reference) depth = SAMPLE_DEPTH_BUFFER(s);
+  }
+  if (isinf(dRef)) depth = farthestDepthBuffer;
 #if NORMAL_ATTACHMENT >= 0
+  else {
     vec3 n = decodeNormal(values[NORMAL_ATTACHMENT]);
     if (!(length(n) > 1e-4)) n = vec3(0.0, 0.0, 1.0);
     values[NORMAL_ATTACHMENT] = encodeNormal(values[NORMAL_ATTACHMENT], normalize(n));
-#endif
-    depth = FETCH(uDepthBuffer, pixel, reference).r;
-    return;
   }
 #endif
+#else
+  bool identical = false;
+#endif
 
-  float weight[SAMPLES];
-  float weightSum = 0.0;
-  int contributors = 0, lastContributor = reference;
-  for (int s = 0; s < SAMPLES; ++s) {
-    float w = 0.0;
-    if (usable[s]) {
-      bool background = isinf(distance[s]);
-      if (fso) {
-        w = fsoWeight(referenceViewZ, background ? 0.0 : -distance[s]);
-      } else if (referenceIsBackground || background) {
-        w = (referenceIsBackground && background) ? 1.0 : 0.0;
-      } else if (uWeighting == WEIGHTING_MEAN) {
-        w = 1.0;
-      } else if (uWeighting == WEIGHTING_WINDOW) {
-        float footprint = dRef * uFootprintTan;
-        w = smoothRamp(dRef - kWindowEnd * footprint, dRef - kWindowFull * footprint, distance[s]) *
-            smoothRamp(dRef + kWindowEnd * footprint, dRef + kWindowFull * footprint, distance[s]);
-      } else {
-        w = abs(distance[s] - dRef) <= min(distance[s], dRef) * uFootprintTan * uCloseness ? 1.0 : 0.0;
+  // Every other pixel: samples of more than one surface, or corrupt ones. No loop here holds a `continue`,
+  // `break` or `return`: such a loop is not unrolled before the arrays are placed, every array it indexes
+  // then lives in memory, and llvmpipe measured the whole resolve 1.3x slower for one of them.
+  if (!identical) {
+    float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
+    bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
+
+    float weight[SAMPLES];
+    float weightSum = 0.0;
+    int contributors = 0, lastContributor = reference;
+    for (int s = 0; s < SAMPLES; ++s) {
+      float w = 0.0;
+      if (usable[s]) {
+        bool background = isinf(distance[s]);
+        if (fso) {
+          w = fsoWeight(referenceViewZ, background ? 0.0 : -distance[s]);
+        } else if (referenceIsBackground || background) {
+          w = (referenceIsBackground && background) ? 1.0 : 0.0;
+        } else if (uWeighting == WEIGHTING_MEAN) {
+          w = 1.0;
+        } else if (uWeighting == WEIGHTING_WINDOW) {
+          float footprint = dRef * uFootprintTan;
+          w = smoothRamp(dRef - kWindowEnd * footprint, dRef - kWindowFull * footprint, distance[s]) *
+              smoothRamp(dRef + kWindowEnd * footprint, dRef + kWindowFull * footprint, distance[s]);
+        } else {
+          w = abs(distance[s] - dRef) <= min(distance[s], dRef) * uFootprintTan * uCloseness ? 1.0 : 0.0;
+        }
+        if (s == reference && !fso) w = 1.0;  // ours always count the reference (c = 0 keeps only its depth)
       }
-      if (s == reference && !fso) w = 1.0;  // ours always count the reference (c = 0 keeps only its depth)
+      weight[s] = w;
+      weightSum += w;
+      if (w > 0.0) ++contributors, lastContributor = s;
     }
-    weight[s] = w;
-    weightSum += w;
-    if (w > 0.0) ++contributors, lastContributor = s;
-  }
 
-  if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
-    bool markedBackground = false;
-    for (int s = 0; s < SAMPLES; ++s)
-      if (s == lastContributor) {
+    if (contributors == 1) {  // one sample: pass it through untouched (N = 1 equals `off` bit for bit)
+      bool markedBackground = false;
+      for (int s = 0; s < SAMPLES; ++s)
+        if (s == lastContributor) {
 #define CONTRIBUTOR_VALUE(a) values[a] = SAMPLE_VALUE(a, s);
-        FOR_EACH_ATTACHMENT(CONTRIBUTOR_VALUE)
-        markedBackground = SAMPLE_MARKED_BACKGROUND(s);
-      }
+          FOR_EACH_ATTACHMENT(CONTRIBUTOR_VALUE)
+          markedBackground = SAMPLE_MARKED_BACKGROUND(s);
+          depth = SAMPLE_DEPTH_BUFFER(s);
+        }
 #if NORMAL_ATTACHMENT >= 0
-    values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], markedBackground);
+      values[NORMAL_ATTACHMENT] = safeNormal(values[NORMAL_ATTACHMENT], markedBackground);
 #endif
-    depth = FETCH(uDepthBuffer, pixel, lastContributor).r;
-    return;
-  }
-
-  float depthSum = 0.0;
-  float depthBufferMean = 0.0, depthBufferMax = 0.0;
-  vec3 normal = vec3(0.0);  // the weighted mean of the decoded normals
-  FOR_EACH_ATTACHMENT(CLEAR_VALUE)
-  for (int s = 0; s < SAMPLES; ++s) {
-    float w = weight[s] / weightSum;
-    if (w <= 0.0) continue;
+    } else {
+      float depthSum = 0.0;
+      float depthBufferMean = 0.0, depthBufferMax = 0.0;
+      vec3 normal = vec3(0.0);  // the weighted mean of the decoded normals
+      FOR_EACH_ATTACHMENT(CLEAR_VALUE)
+      for (int s = 0; s < SAMPLES; ++s) {
+        float w = weight[s] / weightSum;
+        if (w > 0.0) {
 #define ADD_WEIGHTED(a) values[a] += w * SAMPLE_VALUE(a, s);
-    FOR_EACH_ATTACHMENT(ADD_WEIGHTED)
+          FOR_EACH_ATTACHMENT(ADD_WEIGHTED)
 #if NORMAL_ATTACHMENT >= 0
-    normal += w * decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
+          normal += w * decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
 #endif
-    if (!referenceIsBackground) depthSum += w * distance[s];
-    float depthBuffer = FETCH(uDepthBuffer, pixel, s).r;
-    depthBufferMean += w * depthBuffer;
-    depthBufferMax = max(depthBufferMax, depthBuffer);
-  }
+          if (!referenceIsBackground) depthSum += w * distance[s];
+          depthBufferMean += w * SAMPLE_DEPTH_BUFFER(s);
+          depthBufferMax = max(depthBufferMax, SAMPLE_DEPTH_BUFFER(s));
+        }
+      }
 
-  // Depth is averaged in metres and re-encoded: no encoding but `linear` is linear.
+      // Depth is averaged in metres and re-encoded: no encoding but `linear` is linear.
 #if DEPTH_SOURCE == DEPTH_SOURCE_POSITION_CHANNEL
-  if (!referenceIsBackground) values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = encodeDepth(depthSum);
+      if (!referenceIsBackground) values[POSITION_ATTACHMENT][DEPTH_CHANNEL] = encodeDepth(depthSum);
 #endif
 #if NORMAL_ATTACHMENT >= 0
-  float len = length(normal);
-  if (!(len > 1e-4)) {  // opposing or zero-length normals: fall back to the reference's, then the view
-    for (int s = 0; s < SAMPLES; ++s)
-      if (s == reference) normal = decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
-    len = length(normal);
-    if (!(len > 1e-4)) normal = vec3(0.0, 0.0, 1.0), len = 1.0;
-  }
-  // A background pixel keeps its averaged raw values (an octahedral pair averaged as stored).
-  if (!referenceIsBackground) values[NORMAL_ATTACHMENT] = encodeNormal(values[NORMAL_ATTACHMENT], normal / len);
+      float len = length(normal);
+      if (!(len > 1e-4)) {  // opposing or zero-length normals: fall back to the reference's, then the view
+        for (int s = 0; s < SAMPLES; ++s)
+          if (s == reference) normal = decodeNormal(SAMPLE_VALUE(NORMAL_ATTACHMENT, s));
+        len = length(normal);
+        if (!(len > 1e-4)) normal = vec3(0.0, 0.0, 1.0), len = 1.0;
+      }
+      // A background pixel keeps its averaged raw values (an octahedral pair averaged as stored).
+      if (!referenceIsBackground) values[NORMAL_ATTACHMENT] = encodeNormal(values[NORMAL_ATTACHMENT], normal / len);
 #endif
-  // FSO writes the weighted mean of the samples' depth-buffer values. Ours write the reference sample's
-  // (encoding-agnostic; the farthest for background), so that forward passes after lighting
-  // depth-test against the very surface that was lit.
-  depth = fso ? depthBufferMean : referenceIsBackground ? depthBufferMax : FETCH(uDepthBuffer, pixel, reference).r;
+      // FSO writes the weighted mean of the samples' depth-buffer values. Ours write the reference sample's
+      // (encoding-agnostic; the farthest for background), so that forward passes after lighting
+      // depth-test against the very surface that was lit.
+      depth = fso ? depthBufferMean : depthBufferMax;
+      if (!fso && !referenceIsBackground)
+        for (int s = 0; s < SAMPLES; ++s)
+          if (s == reference) depth = SAMPLE_DEPTH_BUFFER(s);
+    }
+  }
 }
