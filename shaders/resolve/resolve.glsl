@@ -181,6 +181,7 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
   // unequal, so corrupt samples take the general path). The weighted mean of equal values is the value:
   // sample 0 passes through, its normal re-encoded as the mean's would be, with the depth the general path
   // writes (the reference's; the farthest for background). FSO's weighting averages depths: not here.
+  // Written for every pixel in straight-line code; the general path below replaces it where it runs.
   bool identical = usableCount == SAMPLES && !fso;
   for (int s = 1; s < SAMPLES; ++s)
 #define SAME_AS_FIRST(a) identical = identical && all(equal(fetched[s][a], fetched[0][a]));
