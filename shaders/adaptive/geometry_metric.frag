@@ -91,12 +91,15 @@ void main() {
   vec3 normalSum = vec3(0.0);
   for (int s = 0; s < SAMPLES; ++s) {
     float d = distances[s] = sampleDistance(pixel, s);
-    if (isinf(d) || !sampleIsFinite(pixel, s)) { ++background; continue; }
-    sum += d;
+    if (isinf(d) || !sampleIsFinite(pixel, s)) {  // an `if`, not `continue` (docs/architecture.md)
+      ++background;
+    } else {
+      sum += d;
 #if NORMAL_ATTACHMENT >= 0
-    vec3 n = sampleNormal(pixel, s);
-    normalSum += dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
+      vec3 n = sampleNormal(pixel, s);
+      normalSum += dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
 #endif
+    }
   }
   if (background == SAMPLES) { outGeometryK = vec4(min(kEmissive, float(SAMPLES)), 1.0, 1.0, 0.0); return; }
   if (background > 0) { outGeometryK = vec4(float(SAMPLES), 1.0, 1.0, 0.0); return; }

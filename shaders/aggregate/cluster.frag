@@ -48,16 +48,17 @@ void main() {
     kind[s] = !sampleIsFinite(pixel, s) ? 2 : (isinf(d) ? 1 : 0);
     position[s] = vec3(0.0);
     normal[s] = vec3(0.0, 0.0, 1.0);
-    if (kind[s] != 0) continue;
-    vec2 offset = (uSamplePositions[s] - 0.5) * d * uFootprintTan;
-    position[s] = vec3(offset, d);
-    vec3 n = sampleNormal(pixel, s);
-    normal[s] = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0, 0.0, 1.0);
-    if (geometry == 0) firstNormal = normal[s];
-    normalsAgree = normalsAgree && normal[s] == firstNormal;
-    meanPosition += position[s];
-    normalSum += normal[s];
-    ++geometry;
+    if (kind[s] == 0) {  // an `if`, not `continue` (docs/architecture.md)
+      vec2 offset = (uSamplePositions[s] - 0.5) * d * uFootprintTan;
+      position[s] = vec3(offset, d);
+      vec3 n = sampleNormal(pixel, s);
+      normal[s] = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0, 0.0, 1.0);
+      if (geometry == 0) firstNormal = normal[s];
+      normalsAgree = normalsAgree && normal[s] == firstNormal;
+      meanPosition += position[s];
+      normalSum += normal[s];
+      ++geometry;
+    }
   }
 
   float nearest[SAMPLES];   // to the nearest seed so far
@@ -76,24 +77,26 @@ void main() {
       float score = sampleDistance2(position[s], normal[s], meanPosition, meanNormal);
       if (kind[s] == 0 && score > best) best = score, seedPosition = position[s], seedNormal = normal[s];
     }
+    bool seeking = true;  // (a flag, not `break`: docs/architecture.md)
     for (int a = 0; a < MAX_AGGREGATES; ++a) {
-      // The seed just taken (a): every sample's distances to it.
-      for (int s = 0; s < SAMPLES; ++s) {
-        float dist = sampleDistance2(position[s], normal[s], seedPosition, seedNormal);
-        if (dist < nearest[s]) nearest[s] = dist, seedOf[s] = uint(a);
-        sumSquares[s] += dist * dist;
+      if (seeking) {
+        // The seed just taken (a): every sample's distances to it.
+        for (int s = 0; s < SAMPLES; ++s) {
+          float dist = sampleDistance2(position[s], normal[s], seedPosition, seedNormal);
+          if (dist < nearest[s]) nearest[s] = dist, seedOf[s] = uint(a);
+          sumSquares[s] += dist * dist;
+        }
+        seedCount = a + 1;
+        // The next seed, farther than t from every seed so far.
+        best = -1.0;
+        bool found = false;
+        for (int s = 0; s < SAMPLES; ++s) {
+          float score = a == 0 ? nearest[s] : sumSquares[s];
+          if (kind[s] == 0 && nearest[s] > uThreshold && score > best)
+            best = score, found = true, seedPosition = position[s], seedNormal = normal[s];
+        }
+        seeking = found;
       }
-      seedCount = a + 1;
-      if (a + 1 == MAX_AGGREGATES) break;
-      // The next seed, farther than t from every seed so far.
-      best = -1.0;
-      bool found = false;
-      for (int s = 0; s < SAMPLES; ++s) {
-        float score = a == 0 ? nearest[s] : sumSquares[s];
-        if (kind[s] == 0 && nearest[s] > uThreshold && score > best)
-          best = score, found = true, seedPosition = position[s], seedNormal = normal[s];
-      }
-      if (!found) break;
     }
   }
 
