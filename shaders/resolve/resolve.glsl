@@ -207,7 +207,7 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
 
   // Every other pixel: samples of more than one surface, or corrupt ones. No loop here holds a `continue`,
   // `break` or `return`: such a loop is not unrolled before the arrays are placed, every array it indexes
-  // then lives in memory, and llvmpipe measured the whole resolve 1.3x slower for one of them.
+  // then lives in memory (llvmpipe: the whole resolve 1.3x slower for two of them).
   if (!identical) {
     float referenceViewZ = isinf(dRef) ? 0.0 : -dRef;
     bool referenceIsBackground = fso ? referenceViewZ >= -0.001 : isinf(dRef);
