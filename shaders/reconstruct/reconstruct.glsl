@@ -190,7 +190,7 @@ int subSamplesOffOwnSurface(ivec2 pixel, out Geometry own, out Geometry samples[
   vec2 slope = vec2(inverseDepthSlope(pixel, own, ivec2(1, 0)), inverseDepthSlope(pixel, own, ivec2(0, 1)));
   for (int s = 0; s < SAMPLES; ++s) {
     float inverse = 1.0 / own.depth + dot(uSamplePositions[s] - 0.5, slope);
-    if (((open >> s) & 1) != 0 && inverse > 0.0) {  // an `if`, not `continue` (docs/architecture.md)
+    if (((open >> s) & 1) != 0 && !(inverse <= 0.0)) {  // an `if`, not `continue` (docs/architecture.md)
       Geometry onPlane = own;
       onPlane.depth = 1.0 / inverse;
       if (similarity(samples[s], onPlane, 0.5 * uTolerance) >= 0.5) open &= ~(1 << s);
