@@ -87,14 +87,15 @@ void main() {
           sumSquares[s] += dist * dist;
         }
         seedCount = a + 1;
-        // The next seed, farther than t from every seed so far.
+        // The next seed, farther than t from every seed so far; none after the last.
         best = -1.0;
         bool found = false;
-        for (int s = 0; s < SAMPLES; ++s) {
-          float score = a == 0 ? nearest[s] : sumSquares[s];
-          if (kind[s] == 0 && nearest[s] > uThreshold && score > best)
-            best = score, found = true, seedPosition = position[s], seedNormal = normal[s];
-        }
+        if (a + 1 < MAX_AGGREGATES)
+          for (int s = 0; s < SAMPLES; ++s) {
+            float score = a == 0 ? nearest[s] : sumSquares[s];
+            if (kind[s] == 0 && nearest[s] > uThreshold && score > best)
+              best = score, found = true, seedPosition = position[s], seedNormal = normal[s];
+          }
         seeking = found;
       }
     }

@@ -176,6 +176,15 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
     reference = nextInOrder;
     dRef = dNext;
   }
+  // The reference's depth-buffer value, which both paths below write for a surface: chosen by the loop
+  // counter where the samples are kept (an index from data would put the array in memory).
+#if SAMPLES <= 8
+  float referenceDepthBuffer = 0.0;
+  for (int s = 0; s < SAMPLES; ++s)
+    if (s == reference) referenceDepthBuffer = fetchedDepthBuffer[s];
+#else
+  float referenceDepthBuffer = FETCH(uDepthBuffer, pixel, reference).r;
+#endif
 #if SAMPLES <= 8
   // One surface: every sample bit-identical in every attachment (one primitive's outputs; a NaN compares
   // unequal, so corrupt samples take the general path). The weighted mean of equal values is the value:
@@ -188,12 +197,11 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
     FOR_EACH_ATTACHMENT(SAME_AS_FIRST)
 #define FIRST_SAMPLE(a) values[a] = fetched[0][a];
   FOR_EACH_ATTACHMENT(FIRST_SAMPLE)
-  float farthestDepthBuffer = 0.0;
-  for (int s = 0; s < SAMPLES; ++s) {
-    farthestDepthBuffer = max(farthestDepthBuffer, SAMPLE_DEPTH_BUFFER(s));
-    if (s == reference) depth = SAMPLE_DEPTH_BUFFER(s);
+  depth = referenceDepthBuffer;
+  if (isinf(dRef)) {
+    depth = 0.0;
+    for (int s = 0; s < SAMPLES; ++s) depth = max(depth, fetchedDepthBuffer[s]);
   }
-  if (isinf(dRef)) depth = farthestDepthBuffer;
 #if NORMAL_ATTACHMENT >= 0
   else {
     vec3 n = decodeNormal(values[NORMAL_ATTACHMENT]);
@@ -288,10 +296,7 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
       // FSO writes the weighted mean of the samples' depth-buffer values. Ours write the reference sample's
       // (encoding-agnostic; the farthest for background), so that forward passes after lighting
       // depth-test against the very surface that was lit.
-      depth = fso ? depthBufferMean : depthBufferMax;
-      if (!fso && !referenceIsBackground)
-        for (int s = 0; s < SAMPLES; ++s)
-          if (s == reference) depth = SAMPLE_DEPTH_BUFFER(s);
+      depth = fso ? depthBufferMean : referenceIsBackground ? depthBufferMax : referenceDepthBuffer;
     }
   }
 }
