@@ -118,6 +118,40 @@ TEST(Smaa, OnePixelCheckerboardIsLeftUnchangedByOrthogonalSearchesAndFlattenedBy
   }
 }
 
+TEST(Smaa, TheWeightsPassRunsOnlyOnTheEdgesPassesPixels) {
+  // A white rectangle on black: the edges pass keeps the pixels whose left or lower neighbour differs,
+  // the weights pass (the searches) runs on those alone through the stencil they marked, the blend on
+  // every pixel. Counted after the stencil test by an occlusion query, which llvmpipe's fragment counter
+  // is not (it counts before the test).
+  const int left = 20, right = 60, bottom = 10, top = 30;
+  const auto image = imageOf([&](int x, int y) { return x >= left && x < right && y >= bottom && y < top; });
+  int edgePixels = 0;
+  for (int y = 1; y < kHeight; ++y)
+    for (int x = 1; x < kWidth; ++x) {
+      const size_t at = (size_t(y) * kWidth + x) * 4;
+      if (image[at] != image[at - 4] || image[at] != image[at - size_t(kWidth) * 4]) ++edgePixels;
+    }
+  ASSERT_EQ(edgePixels, 2 * (top - bottom) + 2 * (right - left) - 1);
+  SyntheticFrame frame(kWidth, kHeight);
+  retroaa::Config config;
+  config.method = retroaa::Method::Smaa;
+  auto hooks = frame.attach(config);
+  ASSERT_TRUE(hooks);
+  glTextureSubImage2D(frame.renderer->targets().displayTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE,
+                      image.data());
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  EXPECT_TRUE(hooks->plugin().post());
+  glEndQuery(GL_SAMPLES_PASSED);
+  GLuint64 samplesPassed = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samplesPassed);
+  glDeleteQueries(1, &query);
+  EXPECT_EQ(samplesPassed, uint64_t(kWidth * kHeight + 2 * edgePixels))
+      << "edges " << edgePixels << " + weights " << edgePixels << " + blend " << kWidth * kHeight;
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST(Smaa, FsoAaPresetsThreeToSixSelectSmaaPresets) {
   const retroaa::SmaaQuality expected[] = {retroaa::SmaaQuality::Low, retroaa::SmaaQuality::Medium,
                                            retroaa::SmaaQuality::High, retroaa::SmaaQuality::Ultra};

@@ -132,7 +132,8 @@ uint64_t bytesPerTexel(GLenum internalFormat) {
     case GL_DEPTH32F_STENCIL8: return 8;
     case GL_DEPTH_COMPONENT24: return 4;
     case GL_DEPTH_COMPONENT16: return 2;
-    case GL_R8: return 1;
+    case GL_R8:
+    case GL_STENCIL_INDEX8: return 1;
     case GL_RG8: return 2;
     default: return 16;  // unknown formats: count generously rather than hide memory
   }

@@ -379,10 +379,13 @@ GLuint PassFloors::scratchFramebuffer(const Shape& shape) {
   }
   glNamedFramebufferDrawBuffers(framebuffer, GLsizei(drawBuffers.size()), drawBuffers.data());
   if (depthStencil) {
-    GLint stencilBits = 0;
+    GLint depthBits = 0, stencilBits = 0;
+    glGetTextureLevelParameteriv(depthStencil, 0, GL_TEXTURE_DEPTH_SIZE, &depthBits);
     glGetTextureLevelParameteriv(depthStencil, 0, GL_TEXTURE_STENCIL_SIZE, &stencilBits);
-    glNamedFramebufferTexture(framebuffer, stencilBits ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
-                              depthStencil, 0);
+    const GLenum attachment = !stencilBits ? GL_DEPTH_ATTACHMENT
+                              : depthBits  ? GL_DEPTH_STENCIL_ATTACHMENT
+                                           : GL_STENCIL_ATTACHMENT;
+    glNamedFramebufferTexture(framebuffer, attachment, depthStencil, 0);
   }
   glObjectLabel(GL_FRAMEBUFFER, framebuffer, -1, "retroaa.floor.target");
   return framebuffers_.emplace(key, GlFramebuffer(objects_, framebuffer)).first->second.get();

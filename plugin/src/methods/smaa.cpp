@@ -113,12 +113,18 @@ class SmaaPasses {
                         kSmaaSearchTexture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
 
+    // The reference's optimisation (SMAA.hlsl, integration step 9): the edges pass marks its edge pixels in
+    // a stencil, and the weights pass, whose searches are the technique's cost, runs only where it is set.
+    p.edgePixels_ = makeTexture(context, GL_STENCIL_INDEX8, layout.width, layout.height, 0,
+                                (name + ".edge_pixels").c_str(), p.bytes_);
     p.edgesTarget_ = makeFramebuffer(context, (name + ".edges").c_str());
     glNamedFramebufferTexture(p.edgesTarget_.get(), GL_COLOR_ATTACHMENT0, p.edges_.get(), 0);
     p.weightsTarget_ = makeFramebuffer(context, (name + ".weights").c_str());
     glNamedFramebufferTexture(p.weightsTarget_.get(), GL_COLOR_ATTACHMENT0, p.weights_.get(), 0);
-    for (GLuint fbo : {p.edgesTarget_.get(), p.weightsTarget_.get()})
+    for (GLuint fbo : {p.edgesTarget_.get(), p.weightsTarget_.get()}) {
+      glNamedFramebufferTexture(fbo, GL_STENCIL_ATTACHMENT, p.edgePixels_.get(), 0);
       if (Status status = checkFramebuffer(fbo, label); !status) return status.error();
+    }
 
     const SmaaPreset preset = presetFor(p.quality_);
     char threshold[48];
@@ -161,7 +167,14 @@ class SmaaPasses {
       ScopedPass timed(context, "smaa.edges");
       context.beginFullscreenPass(edgesTarget_.get());
       const GLfloat zero[4] = {0, 0, 0, 0};
-      glClearNamedFramebufferfv(edgesTarget_.get(), GL_COLOR, 0, zero);  // pixels without edges discard
+      const GLint noEdge = 0;
+      glStencilMask(0xFF);  // clears obey the write mask
+      // Pixels without edges discard: both start cleared.
+      glClearNamedFramebufferfv(edgesTarget_.get(), GL_COLOR, 0, zero);
+      glClearNamedFramebufferiv(edgesTarget_.get(), GL_STENCIL, 0, &noEdge);
+      glEnable(GL_STENCIL_TEST);  // every pixel the shader keeps is marked
+      glStencilFunc(GL_ALWAYS, 1, 0xFF);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
       edgesProgram_.use();
       if (detection_ == SmaaEdgeDetection::Depth) {
         edgesProgram_.setDepthEncoding(context);
@@ -176,6 +189,11 @@ class SmaaPasses {
     {
       ScopedPass timed(context, "smaa.weights");
       context.beginFullscreenPass(weightsTarget_.get());
+      const GLfloat none[4] = {0, 0, 0, 0};  // what the searches give a pixel without edges
+      glClearNamedFramebufferfv(weightsTarget_.get(), GL_COLOR, 0, none);
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, 1, 0xFF);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
       weightsProgram_.use();
       weightsProgram_.bindTexture("uEdges", edges_.get());
       weightsProgram_.bindTexture("uArea", area_.get());
@@ -200,6 +218,7 @@ class SmaaPasses {
 
  private:
   GlTexture edges_, weights_, area_, search_;
+  GlTexture edgePixels_;  // stencil: 1 where the edges pass found an edge
   GlFramebuffer edgesTarget_, weightsTarget_;
   ShaderProgram edgesProgram_, weightsProgram_, blendProgram_;
   SmaaQuality quality_ = SmaaQuality::High;
