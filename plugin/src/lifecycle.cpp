@@ -277,7 +277,9 @@ Status Plugin::Impl::allocate(bool rebuildAll) {
     msaa.reset();
   }
   if (!(storage & kStorageSlices)) slices.reset();
-  if (resolvePass && resolvePass->computeRequested() != config.resolveCompute) resolvePass.reset();
+  if (resolvePass &&
+      (resolvePass->computeRequested() != config.resolveCompute || resolvePass->weighting() != config.resolveWeighting))
+    resolvePass.reset();
   if (rebuildAll || !(storage & kStoragePostTarget)) postTarget.reset();
   if (rebuildAll) forwardMask.reset();
   std::vector<ActiveTechnique> kept;

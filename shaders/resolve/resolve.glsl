@@ -11,7 +11,9 @@
 // facts and the two deviations: corrupt samples are dropped, background normals stay unnormalised).
 #include "common/gbuffer.glsl"
 
-uniform int uWeighting;          // one of WEIGHTING_* (injected from the C++ enum)
+// RESOLVE_WEIGHTING: one of WEIGHTING_* (the C++ enum's values), injected as a constant: a uniform would
+// leave every weighting's arithmetic in the program, and llvmpipe runs a branch's both sides.
+
 uniform bool uSplitByNeighbours; // resolve_even_split: an even split decided by the 3x3 neighbourhood
 uniform float uFootprintTan;     // tan(hfov / width): Eq. 1's pixel footprint per metre
 uniform float uFsoFootprintTan;  // tan(vfov / height): FreeSpace Open's texelWidthFactor
@@ -109,7 +111,7 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
     fetchedDepthBuffer[s] = FETCH(uDepthBuffer, pixel, s).r;
   }
 #endif
-  bool fso = uWeighting == WEIGHTING_FSO;
+  bool fso = RESOLVE_WEIGHTING == WEIGHTING_FSO;
   float distance[SAMPLES];  // metres in front of the camera; +inf for background
   bool usable[SAMPLES];     // false for samples holding NaN or Inf in any attachment
   // Sorted near to far (background farthest, but nearest for FSO, whose background has view z 0):
@@ -136,13 +138,13 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
   }
 
   int referenceRank;
-  if (uWeighting == WEIGHTING_FRONT || uWeighting == WEIGHTING_MEAN)
+  if (RESOLVE_WEIGHTING == WEIGHTING_FRONT || RESOLVE_WEIGHTING == WEIGHTING_MEAN)
     referenceRank = 0;
-  else if (uWeighting == WEIGHTING_BACK)
+  else if (RESOLVE_WEIGHTING == WEIGHTING_BACK)
     referenceRank = usableCount - 1;
   else if (fso)  // dists[1] of 4, [3] of 8, [7] of 16 in ascending view z; other counts: front first
     referenceRank = (SAMPLES == 4 || SAMPLES == 8 || SAMPLES == 16) ? usableCount / 2 : 0;
-  else if (uWeighting == WEIGHTING_WINDOW)
+  else if (RESOLVE_WEIGHTING == WEIGHTING_WINDOW)
     referenceRank = usableCount - 1 - (usableCount - 1) / 2;  // the farther middle sample
   else
     referenceRank = (usableCount - 1) / 2;  // a real middle sample: the nearer of two for even N
@@ -161,7 +163,7 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
   }
   // The median of an even count split evenly between two surfaces: each half within Eq. 1 of its middle.
   bool evenSplit = false;
-  if (uSplitByNeighbours && uWeighting == WEIGHTING_MEDIAN && usableCount % 2 == 0 && !isinf(dRef)) {
+  if (uSplitByNeighbours && RESOLVE_WEIGHTING == WEIGHTING_MEDIAN && usableCount % 2 == 0 && !isinf(dRef)) {
     int nearHalf = 0, farHalf = 0;
     for (int s = 0; s < SAMPLES; ++s)
       if (usable[s]) {
@@ -231,9 +233,9 @@ void resolvePixel(ivec2 pixel, out vec4 values[ATTACHMENT_COUNT], out float dept
           w = fsoWeight(referenceViewZ, background ? 0.0 : -distance[s]);
         } else if (referenceIsBackground || background) {
           w = (referenceIsBackground && background) ? 1.0 : 0.0;
-        } else if (uWeighting == WEIGHTING_MEAN) {
+        } else if (RESOLVE_WEIGHTING == WEIGHTING_MEAN) {
           w = 1.0;
-        } else if (uWeighting == WEIGHTING_WINDOW) {
+        } else if (RESOLVE_WEIGHTING == WEIGHTING_WINDOW) {
           float footprint = dRef * uFootprintTan;
           w = smoothRamp(dRef - kWindowEnd * footprint, dRef - kWindowFull * footprint, distance[s]) *
               smoothRamp(dRef + kWindowEnd * footprint, dRef + kWindowFull * footprint, distance[s]);

@@ -104,6 +104,7 @@ class ResolvePass {
   // Whether run() must keep its depth floats for a restore after `slices`.
   static bool restoreNeedsDepthFloats(const PluginContext& context, const SliceRenderer& slices);
   bool computeRequested() const { return computeRequested_; }  // resolve_compute as created
+  ResolveWeighting weighting() const { return weighting_; }  // resolve_weighting as created: a constant of its programs
   // Frees what one config's slices asked of the resolve (its counting programs and target, the restore's
   // kept copies): a new config asks again, so what it holds follows it, not the configs before it.
   void releaseForNewConfig() {
@@ -128,6 +129,8 @@ class ResolvePass {
 
  private:
   static constexpr int kTileSize = 8;  // resolve.comp's work group: 8 × 8 pixels
+  // What every resolve program is built with: the layout's defines and the weighting it was created for.
+  std::string defines(const PluginContext& context, const MsaaGBuffer& source, bool withOutputs = true) const;
   // resolve_compute: resolve.comp and what carries its depth into the host's (none where the layout's
   // formats or the context's image units do not allow it, with a warning).
   Status createCompute(PluginContext& context, const MsaaGBuffer& source);
@@ -170,6 +173,7 @@ class ResolvePass {
   GlTexture resolvedDepth_;    // R32F: the resolve's depth as written (compute, or keepDepthForRestore)
   GlFramebuffer depthTarget_;  // the host's depth alone
   bool computeRequested_ = false;
+  ResolveWeighting weighting_ = ResolveWeighting::Median;
   uint64_t bytes_ = 0;
   GlQuery noGeometryQuery_, nonPositiveQuery_;
   enum class LayoutCheck : uint8_t { ToIssue, Pending, Done } layoutCheckState_ = LayoutCheck::ToIssue;

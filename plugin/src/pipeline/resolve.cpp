@@ -12,11 +12,10 @@ namespace retroaa {
 
 namespace {
 // The uniforms resolve.glsl declares, for each of its three programs.
-constexpr std::initializer_list<const char*> kResolveUniforms = {
-    RETROAA_GBUFFER_PASS_UNIFORMS, "uWeighting", "uSplitByNeighbours", "uFsoFootprintTan", "uCloseness"};
+constexpr std::initializer_list<const char*> kResolveUniforms = {RETROAA_GBUFFER_PASS_UNIFORMS, "uSplitByNeighbours",
+                                                                 "uFsoFootprintTan", "uCloseness"};
 // … and of the counting resolve, which adds edge/detector.glsl's.
 constexpr std::initializer_list<const char*> kCountingResolveUniforms = {RETROAA_GBUFFER_PASS_UNIFORMS,
-                                                                         "uWeighting",
                                                                          "uSplitByNeighbours",
                                                                          "uFsoFootprintTan",
                                                                          "uCloseness",
@@ -24,13 +23,18 @@ constexpr std::initializer_list<const char*> kCountingResolveUniforms = {RETROAA
                                                                          "uNormalCosine"};
 }  // namespace
 
+std::string ResolvePass::defines(const PluginContext& context, const MsaaGBuffer& source, bool withOutputs) const {
+  return defineLine("RESOLVE_WEIGHTING", int(weighting_)) + source.shaderDefines(context.layout, withOutputs);
+}
+
 Result<std::unique_ptr<ResolvePass>> ResolvePass::create(PluginContext& context, const MsaaGBuffer& source) {
   auto pass = std::make_unique<ResolvePass>();
   const GBufferLayout& layout = context.layout;
+  pass->weighting_ = context.config.resolveWeighting;
   for (const bool restore : {false, true}) {
     Result<ShaderProgram> program = context.shaders->program(
         "common/fullscreen.vert", "resolve/resolve.frag",
-        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + source.shaderDefines(layout), kResolveUniforms);
+        (restore ? "#define RESOLVE_RESTORE 1\n" : "") + pass->defines(context, source), kResolveUniforms);
     if (!program) return program.error();
     (restore ? pass->restoreProgram_ : pass->program_) = std::move(program.value());
   }
@@ -85,7 +89,7 @@ Status ResolvePass::createCompute(PluginContext& context, const MsaaGBuffer& sou
     return Status::ok();
   }
   auto program =
-      context.shaders->computeProgram("resolve/resolve.comp", source.shaderDefines(layout, false), kResolveUniforms);
+      context.shaders->computeProgram("resolve/resolve.comp", defines(context, source, false), kResolveUniforms);
   if (!program) return program.error();
   if (Status status = createDepthWriter(context); !status) return status;
   computeProgram_ = std::move(program.value());
@@ -124,7 +128,6 @@ namespace {
 void setResolveInputs(PluginContext& context, const ShaderProgram& program, const MsaaGBuffer& source,
                       const FrameInfo& frame) {
   source.beginPass(program, context, frame);
-  program.set("uWeighting", int(context.config.resolveWeighting));
   const ResolveEvenSplit split = context.config.resolveEvenSplit;
   program.set("uSplitByNeighbours", int(split == ResolveEvenSplit::Neighbours ||
                                         (split == ResolveEvenSplit::Auto && !context.lightsIntoFloats)));
@@ -145,12 +148,11 @@ Result<const ShaderProgram*> ResolvePass::countingProgram(PluginContext& context
   auto found = countingPrograms_.find({detector, keepDepth});
   if (found != countingPrograms_.end()) return &found->second;
   const int keptDepthLocation = int(context.layout.attachments.size()) + 1;  // after the counts
-  Result<ShaderProgram> program =
-      context.shaders->program("common/fullscreen.vert", "resolve/resolve.frag",
-                               "#define RESOLVE_COUNTS 1\n" + defineLine("EDGE_DETECTOR", int(detector)) +
-                                   (keepDepth ? defineLine("RESOLVE_KEPT_DEPTH_LOCATION", keptDepthLocation) : "") +
-                                   source.shaderDefines(context.layout),
-                               kCountingResolveUniforms);
+  Result<ShaderProgram> program = context.shaders->program(
+      "common/fullscreen.vert", "resolve/resolve.frag",
+      "#define RESOLVE_COUNTS 1\n" + defineLine("EDGE_DETECTOR", int(detector)) +
+          (keepDepth ? defineLine("RESOLVE_KEPT_DEPTH_LOCATION", keptDepthLocation) : "") + defines(context, source),
+      kCountingResolveUniforms);
   if (!program) return program.error();
   return &countingPrograms_.emplace(std::make_pair(detector, keepDepth), std::move(program.value())).first->second;
 }
@@ -160,7 +162,7 @@ Result<GLuint> ResolvePass::keepingTarget(PluginContext& context, const MsaaGBuf
   const GBufferLayout& layout = context.layout;
   Result<ShaderProgram> program = context.shaders->program(
       "common/fullscreen.vert", "resolve/resolve.frag",
-      defineLine("RESOLVE_KEPT_DEPTH_LOCATION", int(layout.attachments.size())) + source.shaderDefines(layout),
+      defineLine("RESOLVE_KEPT_DEPTH_LOCATION", int(layout.attachments.size())) + defines(context, source),
       kResolveUniforms);
   if (!program) return program.error();
   keepingProgram_ = std::move(program.value());
