@@ -129,7 +129,8 @@ TEST(Plugin, AllocatesOnlyWhatTheMethodNeeds) {
   EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, 0u);
   EXPECT_EQ(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
   host.render("fxaa");
-  EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, 64u * 48u * 4u);  // one RGBA8 copy, no MSAA
+  // One RGBA8 copy and a stencil of the pixels FXAA filters, no MSAA.
+  EXPECT_EQ(host.hooks->plugin().stats().bytesHeld, 64u * 48u * (4u + 1u));
   host.render("resolve", withSamples(4));
   const int samples = host.hooks->plugin().stats().samples;
   // Five attachments (8+8+8+4+8 bytes) and D24S8 (4 bytes), per sample.

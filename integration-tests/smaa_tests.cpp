@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -149,6 +150,48 @@ TEST(Smaa, TheWeightsPassRunsOnlyOnTheEdgesPassesPixels) {
   glDeleteQueries(1, &query);
   EXPECT_EQ(samplesPassed, uint64_t(kWidth * kHeight + 2 * edgePixels))
       << "edges " << edgePixels << " + weights " << edgePixels << " + blend " << kWidth * kHeight;
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST(Fxaa, TheSearchRunsOnlyOnPixelsThatPassTheContrastTest) {
+  // The same rectangle: FXAA's contrast test (N, S, E, W and the centre, clamped at the borders) passes
+  // where a 4-neighbour differs. The first draw marks those pixels and discards the rest; the second, the
+  // search and blend, runs on them alone. One draw with an early return would pass every pixel once.
+  const int left = 20, right = 60, bottom = 10, top = 30;
+  const auto image = imageOf([&](int x, int y) { return x >= left && x < right && y >= bottom && y < top; });
+  const auto at = [&](int x, int y) {
+    return image[(size_t(std::clamp(y, 0, kHeight - 1)) * kWidth + size_t(std::clamp(x, 0, kWidth - 1))) * 4];
+  };
+  int filtered = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      if (at(x - 1, y) != at(x, y) || at(x + 1, y) != at(x, y) || at(x, y - 1) != at(x, y) || at(x, y + 1) != at(x, y))
+        ++filtered;
+  // The rectangle's border (its corners once) and the ring just outside it (no corners).
+  ASSERT_EQ(filtered, 2 * (top - bottom) + 2 * (right - left) - 4 + 2 * (top - bottom) + 2 * (right - left));
+  SyntheticFrame frame(kWidth, kHeight);
+  retroaa::Config config;
+  config.method = retroaa::Method::Fxaa;
+  auto hooks = frame.attach(config);
+  ASSERT_TRUE(hooks);
+  const GLuint display = frame.renderer->targets().displayTexture;
+  glTextureSubImage2D(display, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  EXPECT_TRUE(hooks->plugin().post());
+  glEndQuery(GL_SAMPLES_PASSED);
+  GLuint64 samplesPassed = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samplesPassed);
+  glDeleteQueries(1, &query);
+  EXPECT_EQ(samplesPassed, uint64_t(2 * filtered)) << "marked " << filtered << " + filtered " << filtered;
+  // Only those pixels change: the flat ones are not written at all.
+  std::vector<uint8_t> out(image.size());
+  glGetTextureImage(display, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
+  int changed = 0;
+  for (size_t i = 0; i < out.size(); i += 4) changed += out[i] != image[i];
+  EXPECT_GT(changed, 0);
+  EXPECT_LE(changed, filtered);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 

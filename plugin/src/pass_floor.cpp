@@ -313,6 +313,10 @@ const ShaderProgram* PassFloors::program(const Shape& shape) {
   }
   if (!shape.compute && shape.depthStencil && shape.depthTest && shape.depthMask)
     writes += "gl_FragDepth = fract(abs(sum.x)); ";
+  // A draw that writes only its stencil (a marking pass) still fetches what the pass fetched: the test
+  // keeps the compiler from dropping reads whose sum nothing stores.
+  if (!shape.compute && shape.outputs.empty() && writes.empty() && !reads.empty())
+    writes += "if (isnan(sum.x)) discard; ";
   std::string defines = "#define FLOOR_INPUTS " + inputs + "\n#define FLOOR_READ " + reads +
                         "\n#define FLOOR_OUTPUTS " + outputs + "\n#define FLOOR_WRITE " + writes + "\n";
   if (shape.compute)

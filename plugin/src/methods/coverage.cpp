@@ -37,7 +37,7 @@ class CoverageTechnique : public SampleGeometryTechnique {
     const GBufferLayout& layout = context.layout;
     shared.post->bindAsOutput(context);
     program_.use();
-    shared.post->bindInput(layout, program_, "uInput");
+    shared.post->bindBilinear(program_, "uInput", shared.post->input(layout));
     program_.bindTexture("uPixelDepth", layout.depthStencilTexture);
     program_.bindTexture("uSampleDepth", geometry_.depth);
     bindForwardMask(program_, shared);

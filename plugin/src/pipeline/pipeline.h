@@ -390,8 +390,8 @@ class PostTarget {
   void end(const GBufferLayout& layout) const;    // after the last
   GLuint input(const GBufferLayout& layout) const { return encodedCopy_ ? encodedCopy_.get() : layout.displayTexture; }
   void bindAsOutput(const PluginContext& context) const;  // framebuffer, viewport, plain state
-  // input(), bilinear, as `program`'s `sampler`.
-  void bindInput(const GBufferLayout& layout, const ShaderProgram& program, const char* sampler) const;
+  // `texture` (input() or copyOfInput()), bilinear, as `program`'s `sampler`.
+  void bindBilinear(const ShaderProgram& program, const char* sampler, GLuint texture) const;
   void copyBack(const GBufferLayout& layout) const;  // the output into input()
   // A pass that rewrites only some pixels and discards the rest renders into input() itself and reads
   // the frame from a copy: one copy, as with copyBack, and nothing written where nothing changes.

@@ -61,10 +61,10 @@ void PostTarget::end(const GBufferLayout& layout) const {
   if (encodedCopy_) copyLayoutTexture(layout, encodedCopy_.get(), layout.displayTexture);
 }
 
-void PostTarget::bindInput(const GBufferLayout& layout, const ShaderProgram& program, const char* sampler) const {
+void PostTarget::bindBilinear(const ShaderProgram& program, const char* sampler, GLuint texture) const {
   const int unit = program.unit(sampler);
   if (unit < 0) return;
-  glBindTextureUnit(GLuint(unit), input(layout));
+  glBindTextureUnit(GLuint(unit), texture);
   glBindSampler(GLuint(unit), linear_.get());
 }
 
