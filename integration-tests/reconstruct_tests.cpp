@@ -300,7 +300,7 @@ TEST(Reconstruct, NormalsInAnySpaceKeepTheirSignInThePrepass) {
   const std::vector<uint8_t> out = fixture.run(
       "bool onB = x >= 9 || (x == 7 && position.x > 0.6); gl_FragDepth = 0.5;"
       " outNormal = vec4(0.6, 0.0, onB ? -0.8 : 0.8, 0.5);");
-  EXPECT_EQ(fixture.plugin->stats().bytesHeld, uint64_t(kWidth * kHeight) * (4u * 4u + 4u * 8u + 4u))
+  EXPECT_EQ(fixture.plugin->stats().bytesHeld, uint64_t(kWidth * kHeight) * (4u * 4u + 4u * 8u + 4u + 1u))
       << "the whole RGBA16F normal per sample";
   const float mixed = linearMix(200.0f, 30.0f, 0.5f);
   for (int y = 0; y < kHeight; ++y) {
@@ -363,8 +363,9 @@ TEST(Reconstruct, LightsOncePerPixelAndHoldsAQuarterOfResolvesMemory) {
   const retroaa::Stats stats = host.hooks->plugin().waitForStats();
   EXPECT_EQ(stats.evaluationsPerPixel(), 1.0);
   ASSERT_EQ(stats.samples, 4);
-  // D24S8 and RG16F normals × 4 samples, plus the post copy: 36 B/px against resolve's 160.
-  EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * (4u * 4u + 4u * 4u + 4u));
+  // D24S8 and RG16F normals × 4 samples, the post copy and the stencil of the pixels it rebuilds: 37 B/px
+  // against resolve's 160.
+  EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * (4u * 4u + 4u * 4u + 4u + 1u));
   EXPECT_EQ(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
   // Only edge pixels change: the interior of the image is the host's own.
   int changed = 0;

@@ -35,47 +35,25 @@ class FxaaTechnique : public Technique {
       if (!program) return program.error();
       (marking ? t.markProgram_ : t.filterProgram_) = std::move(program.value());
     }
-    // The pixels the contrast test keeps (shaders/fxaa/fxaa.frag): marked by the first draw, which writes
-    // nothing else; the second filters them in place in the display, reading a copy of it.
-    t.edgePixels_ =
-        makeTexture(context, GL_STENCIL_INDEX8, layout.width, layout.height, 0, "fxaa.edge_pixels", t.bytes_);
-    t.markTarget_ = makeFramebuffer(context, "fxaa.mark");
-    glNamedFramebufferTexture(t.markTarget_.get(), GL_STENCIL_ATTACHMENT, t.edgePixels_.get(), 0);
-    glNamedFramebufferDrawBuffer(t.markTarget_.get(), GL_NONE);
-    t.filterTarget_ = makeFramebuffer(context, "fxaa.filter");
-    glNamedFramebufferTexture(t.filterTarget_.get(), GL_COLOR_ATTACHMENT0, shared.post->input(layout), 0);
-    glNamedFramebufferTexture(t.filterTarget_.get(), GL_STENCIL_ATTACHMENT, t.edgePixels_.get(), 0);
-    for (const GLuint fbo : {t.markTarget_.get(), t.filterTarget_.get()})
-      if (Status status = checkFramebuffer(fbo, "fxaa"); !status) return status.error();
+    // The contrast test marks the pixels the search and blend rewrite in place (shaders/fxaa/fxaa.frag).
+    auto rewrite = MarkedRewrite::create(context, shared.post->input(layout), "fxaa", t.bytes_);
+    if (!rewrite) return rewrite.error();
+    t.rewrite_ = std::move(rewrite.value());
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
   Status post(PluginContext& context, SharedTargets& shared, const FrameInfo&) override {
     ScopedPass timed(context, "fxaa");
     const GBufferLayout& layout = context.layout;
-    shared.post->copyInputAside(layout);
-    for (const ShaderProgram* program : {&markProgram_, &filterProgram_}) {
-      const bool marking = program == &markProgram_;
-      context.beginFullscreenPass(marking ? markTarget_.get() : filterTarget_.get());
-      glEnable(GL_STENCIL_TEST);
-      if (marking) {
-        const GLint unmarked = 0;
-        glStencilMask(0xFF);  // clears obey the write mask
-        glClearNamedFramebufferiv(markTarget_.get(), GL_STENCIL, 0, &unmarked);
-        glStencilFunc(GL_ALWAYS, 1, 0xFF);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-      } else {
-        glStencilFunc(GL_EQUAL, 1, 0xFF);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      }
-      program->use();
-      shared.post->bindBilinear(*program, "uInput", shared.post->copyOfInput());
-      program->set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
-      program->set("uEdgeThreshold", context.config.fxaaEdgeThreshold);
-      program->set("uEdgeThresholdMin", 0.0312f);
-      program->set("uSubpixel", 0.75f);
-      context.drawFullscreen();
-    }
+    shared.post->copyInputAside(layout);  // what both draws read
+    rewrite_.run(context, markProgram_, filterProgram_, [&](const ShaderProgram& program) {
+      program.use();
+      shared.post->bindBilinear(program, "uInput", shared.post->copyOfInput());
+      program.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
+      program.set("uEdgeThreshold", context.config.fxaaEdgeThreshold);
+      program.set("uEdgeThresholdMin", 0.0312f);
+      program.set("uSubpixel", 0.75f);
+    });
     return Status::ok();
   }
 
@@ -85,8 +63,7 @@ class FxaaTechnique : public Technique {
 
  private:
   ShaderProgram markProgram_, filterProgram_;
-  GlTexture edgePixels_;  // stencil: 1 where the contrast test passed
-  GlFramebuffer markTarget_, filterTarget_;
+  MarkedRewrite rewrite_;
   FxaaQuality quality_ = FxaaQuality::High;
   uint64_t bytes_ = 0;
 };

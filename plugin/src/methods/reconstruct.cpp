@@ -50,35 +50,38 @@ class ReconstructTechnique : public SampleGeometryTechnique {
                                 (t.beforeTonemap_ ? std::string() : shared.post->encodingDefine()) +
                                 defineLine("SEARCH_RADIUS", t.searchRadius_) +
                                 t.forwardMaskDefine(layout, !t.beforeTonemap_);  // before tonemapping: before them
-    auto program = t.compute_ ? context.shaders->computeProgram("reconstruct/reconstruct.comp", defines, kUniforms)
-                              : context.shaders->program("common/fullscreen.vert", "reconstruct/reconstruct.frag",
-                                                         defines, kUniforms);
-    if (!program) return program.error();
-    t.program_ = std::move(program.value());
+    if (t.compute_) {
+      auto program = context.shaders->computeProgram("reconstruct/reconstruct.comp", defines, kUniforms);
+      if (!program) return program.error();
+      t.program_ = std::move(program.value());
+      return std::unique_ptr<Technique>(std::move(technique));
+    }
+    for (const bool marking : {true, false}) {
+      auto program = context.shaders->program("common/fullscreen.vert", "reconstruct/reconstruct.frag",
+                                              defines + defineLine("RECONSTRUCT_MARK", marking), kUniforms);
+      if (!program) return program.error();
+      (marking ? t.markProgram_ : t.program_) = std::move(program.value());
+    }
+    auto rewrite = MarkedRewrite::create(context, t.output_, "reconstruct", t.geometry_.bytes);
+    if (!rewrite) return rewrite.error();
+    t.rewrite_ = std::move(rewrite.value());
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
-  Status afterLighting(PluginContext& context, SharedTargets&, const FrameInfo& frame) override {
+  Status afterLighting(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     if (!beforeTonemap_) return Status::ok();
     ScopedPass timed(context, "reconstruct");
     const GBufferLayout& layout = context.layout;
     copyLightTarget(layout, radiance_.get());
-    if (!compute_) context.beginFullscreenPass(sceneColourFramebuffer(layout));
-    program_.bindTexture("uInput", radiance_.get());
-    run(context, frame);
+    run(context, shared, frame, radiance_.get());
     return Status::ok();
   }
 
   Status post(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     if (beforeTonemap_) return Status::ok();
     ScopedPass timed(context, "reconstruct");
-    if (compute_)
-      shared.post->copyInputAside(context.layout);
-    else
-      shared.post->beginInPlace(context);
-    program_.bindTexture("uInput", linearInput_ ? shared.post->linearCopyOfInput() : shared.post->copyOfInput());
-    bindForwardMask(program_, shared);
-    run(context, frame);
+    shared.post->copyInputAside(context.layout);
+    run(context, shared, frame, linearInput_ ? shared.post->linearCopyOfInput() : shared.post->copyOfInput());
     return Status::ok();
   }
 
@@ -95,26 +98,34 @@ class ReconstructTechnique : public SampleGeometryTechnique {
                                                                    "uSampleNormal",    "uForwardDrawn"};
   static constexpr int kTileSize = 8;  // reconstruct.comp's work group: 8 × 8 pixels
 
-  // The pass itself, on a copy of output_ bound as uInput (and for the full-screen pass, output_ bound
-  // as the target).
-  void run(PluginContext& context, const FrameInfo& frame) {
+  // The pass itself: `input`, a copy of output_, rewritten into output_.
+  void run(PluginContext& context, const SharedTargets& shared, const FrameInfo& frame, GLuint input) {
     const GBufferLayout& layout = context.layout;
-    program_.use();
-    program_.bindTexture("uPixelDepth", layout.depthStencilTexture);
-    program_.bindTexture("uPixelNormal", pixelNormal_);
-    program_.bindTexture("uSampleDepth", geometry_.depth);
-    program_.bindTexture("uSampleNormal", geometry_.normal);
-    program_.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
-    program_.setDepthPlanes(context);
-    program_.set("uFootprintTan", context.footprintTan(frame));
-    program_.set("uTolerance", context.config.reconstructTolerance);
-    if (compute_)
+    const float footprintTan = context.footprintTan(frame);
+    const auto bind = [&](const ShaderProgram& program) {
+      program.use();
+      program.bindTexture("uInput", input);
+      bindForwardMask(program, shared);
+      program.bindTexture("uPixelDepth", layout.depthStencilTexture);
+      program.bindTexture("uPixelNormal", pixelNormal_);
+      program.bindTexture("uSampleDepth", geometry_.depth);
+      program.bindTexture("uSampleNormal", geometry_.normal);
+      program.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
+      program.setDepthPlanes(context);
+      program.set("uFootprintTan", footprintTan);
+      program.set("uTolerance", context.config.reconstructTolerance);
+    };
+    if (compute_) {
+      bind(program_);
       context.dispatchOverScreen({{output_, outputFormat_}}, kTileSize);
-    else
-      context.drawFullscreen();
+    } else {
+      rewrite_.run(context, markProgram_, program_, bind);
+    }
   }
 
-  ShaderProgram program_;
+  ShaderProgram program_;      // the rebuild (the fragment pass: of the marked pixels)
+  ShaderProgram markProgram_;  // the fragment pass: marks the pixels to rebuild
+  MarkedRewrite rewrite_;
   GLuint output_ = 0;  // what the pass rewrites: the display (post's input()) or the light target
   GLenum outputFormat_ = GL_RGBA8;
   bool compute_ = false;           // reconstruct.comp: asked for, and outputFormat_ takes image stores

@@ -378,6 +378,25 @@ class ForwardMask {
   uint64_t bytes_ = 0;
 };
 
+// A pass that rewrites, in place, only the pixels a cheap test picks (FXAA's contrast test, reconstruct's
+// sub-samples off their pixel's surface), in two draws: `mark` runs the test on every pixel and discards
+// the pixels it leaves alone, the rest being marked in a stencil of its own; `rewrite` runs on the marked
+// pixels alone and writes them into `output`. One draw with an early return would cost every pixel the
+// costly part: llvmpipe runs both sides of a branch under a mask, and a stencil test drops whole blocks
+// before the shader runs (SMAA's reference marks its edges for its searches the same way).
+class MarkedRewrite {
+ public:
+  // `output`: a single-sample texture of the layout's size, which neither program reads.
+  static Result<MarkedRewrite> create(PluginContext& context, GLuint output, const std::string& label, uint64_t& bytes);
+  // `bind(program)` uses the program and binds its inputs; it is called before each draw.
+  void run(const PluginContext& context, const ShaderProgram& mark, const ShaderProgram& rewrite,
+           const std::function<void(const ShaderProgram&)>& bind) const;
+
+ private:
+  GlTexture marked_;  // stencil: 1 where `mark` kept the pixel
+  GlFramebuffer markTarget_, rewriteTarget_;
+};
+
 // Where the post passes (MethodInfo::filtersDisplay) render: a plugin-owned copy of the host's display
 // target in its format, copied back after each pass, and the bilinear sampler they read the display
 // with. The passes work on the display's stored (gamma-encoded) values: an sRGB-format display
