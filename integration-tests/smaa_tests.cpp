@@ -42,6 +42,35 @@ std::vector<uint8_t> imageOf(const std::function<bool(int x, int y)>& white) {
   return image;
 }
 
+// `method`'s post passes on `image` (RGBA8, GL rows) written into the display by hand: the samples that
+// passed every test (an occlusion query, which counts after the stencil test where llvmpipe's fragment
+// counter counts before it), and the display afterwards.
+std::pair<uint64_t, std::vector<uint8_t>> samplesPassedInPost(retroaa::Method method,
+                                                              const std::vector<uint8_t>& image) {
+  SyntheticFrame frame(kWidth, kHeight);
+  retroaa::Config config;
+  config.method = method;
+  auto hooks = frame.attach(config);
+  if (!hooks) {
+    ADD_FAILURE() << "the plugin was not installed";
+    return {};
+  }
+  const GLuint display = frame.renderer->targets().displayTexture;
+  glTextureSubImage2D(display, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  EXPECT_TRUE(hooks->plugin().post());
+  glEndQuery(GL_SAMPLES_PASSED);
+  GLuint64 samplesPassed = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samplesPassed);
+  glDeleteQueries(1, &query);
+  std::vector<uint8_t> out(image.size());
+  glGetTextureImage(display, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  return {samplesPassed, out};
+}
+
 // The fraction of pixel (x, y) below the line y = y0 + slope·x (exact: a trapezoid clipped to [0, 1]).
 double coverageBelow(int x, int y, double y0, double slope) {
   // Integrate clamp(line(t) − y, 0, 1) over t in [x, x+1] numerically: fine enough at 1/4096.
@@ -133,24 +162,9 @@ TEST(Smaa, TheWeightsPassRunsOnlyOnTheEdgesPassesPixels) {
       if (image[at] != image[at - 4] || image[at] != image[at - size_t(kWidth) * 4]) ++edgePixels;
     }
   ASSERT_EQ(edgePixels, 2 * (top - bottom) + 2 * (right - left) - 1);
-  SyntheticFrame frame(kWidth, kHeight);
-  retroaa::Config config;
-  config.method = retroaa::Method::Smaa;
-  auto hooks = frame.attach(config);
-  ASSERT_TRUE(hooks);
-  glTextureSubImage2D(frame.renderer->targets().displayTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE,
-                      image.data());
-  GLuint query = 0;
-  glGenQueries(1, &query);
-  glBeginQuery(GL_SAMPLES_PASSED, query);
-  EXPECT_TRUE(hooks->plugin().post());
-  glEndQuery(GL_SAMPLES_PASSED);
-  GLuint64 samplesPassed = 0;
-  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samplesPassed);
-  glDeleteQueries(1, &query);
+  const uint64_t samplesPassed = samplesPassedInPost(retroaa::Method::Smaa, image).first;
   EXPECT_EQ(samplesPassed, uint64_t(kWidth * kHeight + 2 * edgePixels))
       << "edges " << edgePixels << " + weights " << edgePixels << " + blend " << kWidth * kHeight;
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 TEST(Fxaa, TheSearchRunsOnlyOnPixelsThatPassTheContrastTest) {
@@ -169,30 +183,13 @@ TEST(Fxaa, TheSearchRunsOnlyOnPixelsThatPassTheContrastTest) {
         ++filtered;
   // The rectangle's border (its corners once) and the ring just outside it (no corners).
   ASSERT_EQ(filtered, 2 * (top - bottom) + 2 * (right - left) - 4 + 2 * (top - bottom) + 2 * (right - left));
-  SyntheticFrame frame(kWidth, kHeight);
-  retroaa::Config config;
-  config.method = retroaa::Method::Fxaa;
-  auto hooks = frame.attach(config);
-  ASSERT_TRUE(hooks);
-  const GLuint display = frame.renderer->targets().displayTexture;
-  glTextureSubImage2D(display, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
-  GLuint query = 0;
-  glGenQueries(1, &query);
-  glBeginQuery(GL_SAMPLES_PASSED, query);
-  EXPECT_TRUE(hooks->plugin().post());
-  glEndQuery(GL_SAMPLES_PASSED);
-  GLuint64 samplesPassed = 0;
-  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samplesPassed);
-  glDeleteQueries(1, &query);
+  const auto [samplesPassed, out] = samplesPassedInPost(retroaa::Method::Fxaa, image);
   EXPECT_EQ(samplesPassed, uint64_t(2 * filtered)) << "marked " << filtered << " + filtered " << filtered;
   // Only those pixels change: the flat ones are not written at all.
-  std::vector<uint8_t> out(image.size());
-  glGetTextureImage(display, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
   int changed = 0;
   for (size_t i = 0; i < out.size(); i += 4) changed += out[i] != image[i];
   EXPECT_GT(changed, 0);
   EXPECT_LE(changed, filtered);
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 TEST(Smaa, FsoAaPresetsThreeToSixSelectSmaaPresets) {
