@@ -1,6 +1,8 @@
 #version 450 core
 // SMAA pass 3: neighbourhood blending. Each pixel mixes with the neighbour across its strongest
 // edge by the coverage area the weights pass found (the larger of horizontal and vertical wins).
+// SMAA_BLEND_MARK 1: MarkedRewrite's marking draw (on the display, SMAA 1x rewrites in place only the
+// pixels that have weights of their own or from the neighbours they blend with).
 #include "smaa/smaa_common.glsl"
 layout(binding = 0) uniform sampler2D uInput;    // the colour the edges were found in
 layout(binding = 1) uniform sampler2D uWeights;  // pass 2's areas
@@ -29,6 +31,10 @@ void main() {
   a.x = texelFetch(uWeights, min(p + ivec2(1, 0), ivec2(uMetrics.zw) - 1), 0).a;
   a.y = texelFetch(uWeights, min(p + ivec2(0, 1), ivec2(uMetrics.zw) - 1), 0).g;
   a.wz = texelFetch(uWeights, p, 0).xz;
+#if SMAA_BLEND_MARK
+  // The first of MarkedRewrite's draws: a pixel without weights keeps its colour and is not written.
+  if (dot(a, vec4(1.0)) < 1e-5) discard;
+#else
   vec4 centre = texelFetch(uInput, p, 0);
   if (dot(a, vec4(1.0)) < 1e-5) {
     outColour = centre;
@@ -44,4 +50,5 @@ void main() {
   vec4 towardsPlus = mix(lc, colourAt(p + axis), amount.x);
   vec4 towardsMinus = mix(lc, colourAt(p - axis), amount.y);
   outColour = fromLinear(weight.x * towardsPlus + weight.y * towardsMinus);
+#endif
 }

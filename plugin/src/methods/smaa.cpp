@@ -85,9 +85,11 @@ SmaaPreset presetFor(SmaaQuality quality) {
 // or, for S2x, a slice's linear HDR light.
 class SmaaPasses {
  public:
-  // `displayEncoding`: PostTarget::encodingDefine() for the display; empty for HDR input.
+  // `displayEncoding`: PostTarget::encodingDefine() for the display; empty for HDR input. `blendedInPlace`:
+  // the texture the blend rewrites in place, only where a pixel or the neighbours it blends with hold
+  // weights (MarkedRewrite), reading a copy as `input`; 0: the blend writes every pixel where run() binds.
   static Result<SmaaPasses> create(PluginContext& context, bool hdrInput, const std::string& displayEncoding,
-                                   const char* label) {
+                                   const char* label, GLuint blendedInPlace) {
     SmaaPasses p;
     const GBufferLayout& layout = context.layout;
     p.quality_ = context.config.smaaQuality;
@@ -146,19 +148,30 @@ class SmaaPasses {
                                             {"uMetrics", "uSubsampleIndices", "uEdges", "uArea", "uSearch"});
     if (!weights) return weights.error();
     p.weightsProgram_ = std::move(weights.value());
-    auto blend = context.shaders->program("common/fullscreen.vert", "smaa/blend.frag", common,
-                                          {"uMetrics", "uInput", "uWeights"});
-    if (!blend) return blend.error();
-    p.blendProgram_ = std::move(blend.value());
+    for (const bool marking : {false, true}) {
+      if (marking && !blendedInPlace) break;
+      auto blend =
+          context.shaders->program("common/fullscreen.vert", "smaa/blend.frag",
+                                   common + defineLine("SMAA_BLEND_MARK", marking), {"uMetrics", "uInput", "uWeights"});
+      if (!blend) return blend.error();
+      (marking ? p.blendMarkProgram_ : p.blendProgram_) = std::move(blend.value());
+    }
+    if (blendedInPlace) {
+      auto rewrite = MarkedRewrite::create(context, blendedInPlace, name + ".blend", p.bytes_);
+      if (!rewrite) return rewrite.error();
+      p.blendInPlace_ = std::move(rewrite.value());
+    }
+    p.blendsInPlace_ = blendedInPlace != 0;
     // The size is fixed for the programs' lifetime (a new layout rebuilds every technique).
     const float metrics[4] = {1.0f / layout.width, 1.0f / layout.height, float(layout.width), float(layout.height)};
-    for (const ShaderProgram* program : {&p.edgesProgram_, &p.weightsProgram_, &p.blendProgram_})
-      program->setVec4("uMetrics", metrics);
+    for (const ShaderProgram* program : {&p.edgesProgram_, &p.weightsProgram_, &p.blendProgram_, &p.blendMarkProgram_})
+      if (program->get()) program->setVec4("uMetrics", metrics);
     return p;
   }
 
-  // SMAA of `input`, written where `bindOutput` binds (with the layout's viewport). `subsample`: the
-  // area-texture rows (0 for 1x).
+  // SMAA of `input`, written where `bindOutput` binds (with the layout's viewport), or, blended in place,
+  // into the texture create() was given (`input` then a copy of it; `bindOutput` unused). `subsample`:
+  // the area-texture rows (0 for 1x).
   template <typename BindOutput>
   void run(PluginContext& context, GLuint input, const BindOutput& bindOutput, const float subsample[4]) const {
     const GBufferLayout& layout = context.layout;
@@ -203,11 +216,18 @@ class SmaaPasses {
     }
     {
       ScopedPass timed(context, "smaa.blend");
-      bindOutput();
-      blendProgram_.use();
-      blendProgram_.bindTexture("uInput", input);
-      blendProgram_.bindTexture("uWeights", weights_.get());
-      context.drawFullscreen();
+      const auto bind = [&](const ShaderProgram& program) {
+        program.use();
+        program.bindTexture("uInput", input);
+        program.bindTexture("uWeights", weights_.get());
+      };
+      if (blendsInPlace_) {
+        blendInPlace_.run(context, blendMarkProgram_, blendProgram_, bind);
+      } else {
+        bindOutput();
+        bind(blendProgram_);
+        context.drawFullscreen();
+      }
     }
   }
 
@@ -221,6 +241,9 @@ class SmaaPasses {
   GlTexture edgePixels_;  // stencil: 1 where the edges pass found an edge
   GlFramebuffer edgesTarget_, weightsTarget_;
   ShaderProgram edgesProgram_, weightsProgram_, blendProgram_;
+  ShaderProgram blendMarkProgram_;  // blended in place: marks the pixels the blend changes
+  MarkedRewrite blendInPlace_;
+  bool blendsInPlace_ = false;
   SmaaQuality quality_ = SmaaQuality::High;
   SmaaEdgeDetection detection_ = SmaaEdgeDetection::Luma;
   int positionAttachment_ = -1;
@@ -231,7 +254,8 @@ class SmaaPasses {
 class SmaaTechnique : public Technique {
  public:
   static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
-    auto passes = SmaaPasses::create(context, /*hdrInput=*/false, shared.post->encodingDefine(), "smaa");
+    auto passes = SmaaPasses::create(context, /*hdrInput=*/false, shared.post->encodingDefine(), "smaa",
+                                     shared.post->input(context.layout));
     if (!passes) return passes.error();
     auto technique = std::make_unique<SmaaTechnique>();
     technique->passes_ = std::move(passes.value());
@@ -240,9 +264,9 @@ class SmaaTechnique : public Technique {
 
   Status post(PluginContext& context, SharedTargets& shared, const FrameInfo&) override {
     static const float kNoSubsample[4] = {0, 0, 0, 0};
+    shared.post->copyInputAside(context.layout);  // the blend rewrites the display in place
     passes_.run(
-        context, shared.post->input(context.layout), [&] { shared.post->bindAsOutput(context); }, kNoSubsample);
-    shared.post->copyBack(context.layout);
+        context, shared.post->copyOfInput(), [] {}, kNoSubsample);
     return Status::ok();
   }
 
@@ -260,7 +284,7 @@ class SmaaS2xTechnique : public Technique {
   static Result<std::unique_ptr<Technique>> create(PluginContext& context, SharedTargets& shared) {
     auto technique = std::make_unique<SmaaS2xTechnique>();
     SmaaS2xTechnique& t = *technique;
-    auto passes = SmaaPasses::create(context, /*hdrInput=*/true, std::string(), "smaa_s2x");
+    auto passes = SmaaPasses::create(context, /*hdrInput=*/true, std::string(), "smaa_s2x", 0);
     if (!passes) return passes.error();
     t.passes_ = std::move(passes.value());
     t.stencilExport_ = context.capabilities.stencilExport;
