@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "smaa.h"
@@ -161,7 +162,6 @@ class SmaaPasses {
       if (!rewrite) return rewrite.error();
       p.blendInPlace_ = std::move(rewrite.value());
     }
-    p.blendsInPlace_ = blendedInPlace != 0;
     // The size is fixed for the programs' lifetime (a new layout rebuilds every technique).
     const float metrics[4] = {1.0f / layout.width, 1.0f / layout.height, float(layout.width), float(layout.height)};
     for (const ShaderProgram* program : {&p.edgesProgram_, &p.weightsProgram_, &p.blendProgram_, &p.blendMarkProgram_})
@@ -221,8 +221,8 @@ class SmaaPasses {
         program.bindTexture("uInput", input);
         program.bindTexture("uWeights", weights_.get());
       };
-      if (blendsInPlace_) {
-        blendInPlace_.run(context, blendMarkProgram_, blendProgram_, bind);
+      if (blendInPlace_) {
+        blendInPlace_->run(context, blendMarkProgram_, blendProgram_, bind);
       } else {
         bindOutput();
         bind(blendProgram_);
@@ -241,9 +241,8 @@ class SmaaPasses {
   GlTexture edgePixels_;  // stencil: 1 where the edges pass found an edge
   GlFramebuffer edgesTarget_, weightsTarget_;
   ShaderProgram edgesProgram_, weightsProgram_, blendProgram_;
-  ShaderProgram blendMarkProgram_;  // blended in place: marks the pixels the blend changes
-  MarkedRewrite blendInPlace_;
-  bool blendsInPlace_ = false;
+  ShaderProgram blendMarkProgram_;             // blended in place: marks the pixels the blend changes
+  std::optional<MarkedRewrite> blendInPlace_;  // none: the blend writes every pixel where run() binds
   SmaaQuality quality_ = SmaaQuality::High;
   SmaaEdgeDetection detection_ = SmaaEdgeDetection::Luma;
   int positionAttachment_ = -1;

@@ -412,10 +412,9 @@ class PostTarget {
   // `texture` (input() or copyOfInput()), bilinear, as `program`'s `sampler`.
   void bindBilinear(const ShaderProgram& program, const char* sampler, GLuint texture) const;
   void copyBack(const GBufferLayout& layout) const;  // the output into input()
-  // A pass that rewrites only some pixels and discards the rest renders into input() itself and reads
+  // A pass that rewrites only some pixels (MarkedRewrite, a compute pass) writes input() itself and reads
   // the frame from a copy: one copy, as with copyBack, and nothing written where nothing changes.
-  void beginInPlace(const PluginContext& context) const;   // input() copied aside and bound as the output
-  void copyInputAside(const GBufferLayout& layout) const;  // the same for a compute pass: the copy alone
+  void copyInputAside(const GBufferLayout& layout) const;  // input() into copyOfInput()
   GLuint copyOfInput() const { return output_.get(); }
   // The copy read as linear light: its sRGB view, which the texture unit decodes (cheaper than pow in a
   // shader); 0 where the display's format has no sRGB twin or the layout says it holds linear values.
@@ -430,8 +429,7 @@ class PostTarget {
   GlTexture output_;
   GlTexture encodedCopy_;  // RGBA8 stand-in for an sRGB display; empty otherwise
   GlFramebuffer framebuffer_;
-  GlFramebuffer inPlaceFramebuffer_;  // input() as the colour attachment
-  GlTexture linearView_;              // output_ as GL_SRGB8_ALPHA8; empty unless output_ is GL_RGBA8
+  GlTexture linearView_;  // output_ as GL_SRGB8_ALPHA8; empty unless output_ is GL_RGBA8
   bool linearValues_ = false;
   GlSampler linear_;
   uint64_t bytes_ = 0;

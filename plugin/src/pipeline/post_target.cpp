@@ -26,10 +26,6 @@ Result<std::unique_ptr<PostTarget>> PostTarget::create(PluginContext& context) {
   target->framebuffer_ = makeFramebuffer(context, "post.output");
   glNamedFramebufferTexture(target->framebuffer_.get(), GL_COLOR_ATTACHMENT0, target->output_.get(), 0);
   if (Status status = checkFramebuffer(target->framebuffer_.get(), "post.output"); !status) return status.error();
-  target->inPlaceFramebuffer_ = makeFramebuffer(context, "post.in_place");
-  glNamedFramebufferTexture(target->inPlaceFramebuffer_.get(), GL_COLOR_ATTACHMENT0, target->input(layout), 0);
-  if (Status status = checkFramebuffer(target->inPlaceFramebuffer_.get(), "post.in_place"); !status)
-    return status.error();
   // A linear display is averaged as stored: no decoding view (an sRGB format is encoded whatever the layout says).
   target->linearValues_ = !srgb && layout.displayEncoding == DisplayEncoding::Linear;
   if (workFormat == GL_RGBA8 && !target->linearValues_) {
@@ -74,11 +70,6 @@ void PostTarget::copyBack(const GBufferLayout& layout) const {
 
 void PostTarget::copyInputAside(const GBufferLayout& layout) const {
   copyLayoutTexture(layout, input(layout), output_.get());
-}
-
-void PostTarget::beginInPlace(const PluginContext& context) const {
-  copyInputAside(context.layout);
-  context.beginFullscreenPass(inPlaceFramebuffer_.get());
 }
 
 }  // namespace retroaa
