@@ -167,6 +167,20 @@ TEST(WholeFrame, EdgeComposesOnlyItsEdgePixelsPerSample) {
   EXPECT_LT(run.stats.evaluationsPerPixel(), 2.0);  // two edge pixels of 32 lit 4 times
 }
 
+// A composing host's slices keep each slice's depth in the mask (its combine may depth-test against it): the
+// G-buffer write writes it too, one draw a slice over the slice's pixels, not a second depth write after it.
+TEST(WholeFrame, EachSliceWritesItsGBufferAndItsKeptDepthInOneDraw) {
+  const ComposedRun run = runComposed("per-sample@measure_gpu_time=on");
+  expectNear(run.composed[1], 0.5f * glm::vec3(1, 0, 0) + 0.5f * kSky, 0.01f, "red beside sky");
+  uint64_t writeFragments = 0, resolveFragments = 0;
+  for (const retroaa::PassStats& pass : run.stats.passes) {
+    if (pass.name == "slices.write") writeFragments += pass.fragmentInvocations;  // an entry a slice
+    if (pass.name == "resolve") resolveFragments = pass.fragmentInvocations;      // one full-screen draw
+  }
+  ASSERT_GT(resolveFragments, 0u) << "no pipeline statistics";
+  EXPECT_EQ(writeFragments, 4 * resolveFragments);  // four slices, each writing every pixel once
+}
+
 TEST(WholeFrame, ASingleSliceMethodComposesIntoTheHostsTargetOnce) {
   const ComposedRun run = runComposed("resolve");
   ASSERT_EQ(run.composed.size(), size_t(kWidth) * kHeight);

@@ -30,12 +30,11 @@ class AggregateTechnique : public Technique {
     if (!cluster) return cluster.error();
     t.clusterProgram_ = std::move(cluster.value());
     for (const bool depth : {false, true}) {  // the G-buffer write, and its depth write where the slices make one
-      if (depth && !shared.slices->writesDepth()) continue;
-      auto write = context.shaders->program(
-          "common/fullscreen.vert", "aggregate/write_aggregate.frag",
-          depth ? SliceRenderer::depthWriteDefines(source, layout) : source.shaderDefines(layout),
-          {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSlice", "uHasGloss", "uGlossScale",
-           "uGlossBias"});
+      if (depth && !shared.slices->writesHostDepth()) continue;
+      auto write = context.shaders->program("common/fullscreen.vert", "aggregate/write_aggregate.frag",
+                                            shared.slices->writerDefines(source, layout, depth),
+                                            {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSlice",
+                                             "uHasGloss", "uGlossScale", "uGlossBias"});
       if (!write) return write.error();
       (depth ? t.writeDepthProgram_ : t.writeProgram_) = std::move(write.value());
     }

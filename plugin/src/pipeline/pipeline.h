@@ -200,12 +200,14 @@ class SliceRenderer {
   // lighting rebuilds positions from it), and the #defines of a slice writer's depth variant.
   bool writesHostDepth() const { return depthWriter_.get() != 0; }
   // Whether each slice's depth stays in the targets the host's callback draws into (the layout composes:
-  // a far-plane sky or a depth-tested fog must see the slice's surface), and whether a slice writer needs
-  // its depth variant for either.
+  // a far-plane sky or a depth-tested fog must see the slice's surface).
   bool keepsSliceDepth() const { return maskDepthWriter_.get() != 0; }
-  bool writesDepth() const { return writesHostDepth() || keepsSliceDepth(); }
-  static std::string depthWriteDefines(const MsaaGBuffer& source, const GBufferLayout& layout) {
-    return "#define WRITE_DEPTH 1\n" + source.shaderDefines(layout, false);
+  // The #defines of a slice writer: its G-buffer write (`hostDepth` false), which also writes the slice's
+  // depth into the mask where the slices keep it, or its variant for the host's depth texture alone
+  // (`hostDepth`; needed where writesHostDepth()).
+  std::string writerDefines(const MsaaGBuffer& source, const GBufferLayout& layout, bool hostDepth) const {
+    if (hostDepth) return "#define WRITE_DEPTH 1\n" + source.shaderDefines(layout, false);
+    return (keepsSliceDepth() ? "#define WRITE_DEPTH 1\n" : "") + source.shaderDefines(layout);
   }
   GLuint mask() const { return mask_.get(); }
   // How a method uses the slices.
@@ -220,8 +222,9 @@ class SliceRenderer {
     int sliceCount = 0;  // most slices a pixel may need (0: the sample count)
     // A technique's own slice writer (null: sample sampleOrder[s] verbatim). It is given uniform
     // `uSlice` and the G-buffer; `bindWriteInputs` binds and sets on the program what else it reads.
-    // Where the slices write the host's depth (writesHostDepth()), `writeDepthProgram` is the same
-    // shader built with depthWriteDefines(): it writes gl_FragDepth for the pixels of the slice.
+    // Both are built with writerDefines(): `writeProgram` with hostDepth false, and where the slices write
+    // the host's depth (writesHostDepth()) `writeDepthProgram` with it true: it writes gl_FragDepth for the
+    // pixels of the slice.
     const ShaderProgram* writeProgram = nullptr;
     const ShaderProgram* writeDepthProgram = nullptr;
     std::function<void(const ShaderProgram&)> bindWriteInputs;

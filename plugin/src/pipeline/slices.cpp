@@ -184,11 +184,10 @@ Status SliceRenderer::createTargets(PluginContext& context) {
 Status SliceRenderer::createPrograms(PluginContext& context, const MsaaGBuffer& source) {
   const GBufferLayout& layout = context.layout;
   for (const bool depth : {false, true}) {
-    if (depth && !writesDepth()) continue;
-    auto writeSlice =
-        context.shaders->program("common/fullscreen.vert", "slices/write_slice.frag",
-                                 depth ? depthWriteDefines(source, layout) : source.shaderDefines(layout),
-                                 {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSample"});
+    if (depth && !writesHostDepth()) continue;
+    auto writeSlice = context.shaders->program(
+        "common/fullscreen.vert", "slices/write_slice.frag", writerDefines(source, layout, depth),
+        {RETROAA_DEPTH_ENCODING_UNIFORMS, RETROAA_SLICE_DEPTH_UNIFORMS, "uSample"});
     if (!writeSlice) return writeSlice.error();
     (depth ? writeSliceDepth_ : writeSlice_) = std::move(writeSlice.value());
   }
@@ -337,7 +336,14 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
   const GBufferLayout& layout = context.layout;
   ScopedPass timed(context, "slices.write");
   if (!plan.writeProgram) timed.floorReadsSamples(1);  // the stock writer copies one sample of each attachment
-  context.beginFullscreenPass(sliceWriter_.get());
+  // Where the slices keep their depth, the G-buffer write also writes the mask's depth, under the mask's
+  // own stencil: a draw a slice fewer than a depth write of its own limited by the counts (the depth
+  // output makes the stencil test late, so the write's shader runs on every pixel of its tiles).
+  const bool writesMaskDepth = keepsSliceDepth();
+  if (writesMaskDepth)
+    context.beginDepthWritingPass(sliceWriter_.get());
+  else
+    context.beginFullscreenPass(sliceWriter_.get());
   const TileDraw tiles = limitToCountAtLeast(leastCountLitBy(plan, slice));
   auto useWriter = [&](const ShaderProgram* own, const ShaderProgram& stock) {
     const ShaderProgram& program = plan.writeProgram ? *own : stock;
@@ -352,7 +358,11 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
     }
     return &program;
   };
-  useWriter(plan.writeProgram, writeSlice_);
+  const ShaderProgram* writer = useWriter(plan.writeProgram, writeSlice_);
+  if (writesMaskDepth) {
+    writer->set("uMinCount", 0);  // the stencil test limits it
+    glBindTextureUnit(kUnitSliceCounts, counts_.get());
+  }
   // The write passes exactly where this slice's lighting will run (slice 0 lights every pixel):
   // its occlusion query counts the slice's evaluations, without a pass of its own.
   const bool countOnGpu = slice > 0;
@@ -362,11 +372,10 @@ GLuint SliceRenderer::writeSlice(PluginContext& context, const MsaaGBuffer& sour
     context.statistics->endEvaluationCount();
   else
     context.statistics->addEvaluations(context.pixelCount());
-  // The same pixels' depth, selected by the counts instead of the stencil, into the host's depth texture
-  // (its lighting reads it) and the mask's depth (its composing passes test against it).
-  for (const GLuint depthTarget : {depthWriter_.get(), maskDepthWriter_.get()}) {
-    if (!depthTarget) continue;
-    context.beginDepthWritingPass(depthTarget);
+  // The same pixels' depth, selected by the counts instead of the stencil (the host's depth-stencil has the
+  // host's bits), into the host's depth texture: its lighting reads it.
+  if (writesHostDepth()) {
+    context.beginDepthWritingPass(depthWriter_.get());
     const ShaderProgram* program = useWriter(plan.writeDepthProgram, writeSliceDepth_);
     program->set("uMinCount", leastCountLitBy(plan, slice));
     glBindTextureUnit(kUnitSliceCounts, counts_.get());
