@@ -59,6 +59,26 @@ TEST(CoverageFilter, HalfCoveredSilhouettePixelBlendsByItsCoverage) {
   }
 }
 
+TEST(CoverageFilter, TheTapRunsOnlyOnThePixelsItBlends) {
+  // Column 7 half covered, as above: the depth test marks its pixels and discards the rest; the tap runs on
+  // the marked ones alone and writes them in place. One draw with an early return passed every pixel once.
+  CoverageFixture fixture(columns(40, 220, 8));
+  retroaa::Plugin& plugin = fixture.hooks->plugin();
+  writePerSample(plugin.prepassFramebuffer(), kWidth, kHeight,
+                 "gl_FragDepth = (x == 7 && position.x > 0.5) ? 1.0 : 0.5;");
+  ASSERT_TRUE(plugin.resolve({verticalFovFor(0.8f, kWidth, kHeight), 0.1f, 100.0f}));
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  ASSERT_TRUE(plugin.post());
+  glEndQuery(GL_SAMPLES_PASSED);
+  GLuint64 samplesPassed = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samplesPassed);
+  glDeleteQueries(1, &query);
+  EXPECT_EQ(samplesPassed, uint64_t(2 * kHeight)) << "column 7 marked, then blended";
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST(CoverageFilter, QuarterCoverageBlendsAQuarter) {
   CoverageFixture fixture(columns(40, 220, 8));
   // Only the rightmost sample of the pattern (largest x) sees the background.
@@ -113,7 +133,8 @@ TEST(Coverage, HoldsOnlyADepthTargetAndLightsOncePerPixel) {
   const retroaa::Stats stats = host.hooks->plugin().waitForStats();
   EXPECT_EQ(stats.evaluationsPerPixel(), 1.0);
   ASSERT_EQ(stats.samples, 4);
-  EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * (4u * 4u + 4u));  // D24S8 × 4 samples + the post copy
+  // D24S8 × 4 samples, the post copy and the stencil marking the pixels the filter blends
+  EXPECT_EQ(stats.bytesHeld, uint64_t(64 * 48) * (4u * 4u + 4u + 1u));
   EXPECT_EQ(host.hooks->plugin().geometryFramebuffer(), host.renderer->targets().gbufferFramebuffer);
   host.render("resolve+coverage");  // reuses the G-buffer's depth: no prepass
   EXPECT_EQ(host.hooks->plugin().prepassFramebuffer(), 0u);

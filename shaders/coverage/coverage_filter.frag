@@ -6,9 +6,14 @@
 // pixel is how much of it the other surface covers. One bilinear tap, f texels towards that side,
 // blends (1 − f) of this pixel with f of its neighbour there, in linear light (a coverage is an area:
 // mixing gamma-encoded values darkens every blended edge; common/display_encoding.glsl).
-// The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, DISPLAY_HOLDS_LINEAR, LIT_PER_SAMPLE and FORWARD_MASK (the host draws forward passes: a
+// The plugin prepends SAMPLES, DEPTH_BUFFER_ENCODING, DISPLAY_HOLDS_LINEAR, LIT_PER_SAMPLE, FORWARD_MASK (the host draws forward passes: a
 // pixel on an edge of what they drew, or one whose tap would read a colour they changed otherwise than
-// this pixel's, keeps its colour; the depth here is the opaque surfaces' alone).
+// this pixel's, keeps its colour; the depth here is the opaque surfaces' alone) and COVERAGE_MARK_EDGES.
+//
+// Two draws (MarkedRewrite, as FXAA's): COVERAGE_MARK_EDGES 1 runs the depth test on every pixel and keeps,
+// in a stencil, the pixels it blends; COVERAGE_MARK_EDGES 0 blends those alone, in place. A pixel left as it
+// is is not written at all: in one draw every pixel paid the tap's decoding, llvmpipe running both sides of
+// the early return under a mask.
 #include "common/depth_buffer.glsl"
 #include "common/display_encoding.glsl"
 layout(binding = 0) uniform sampler2D uInput;        // the display image (linear filtering)
@@ -62,12 +67,14 @@ void main() {
   bool underFilm = underForwardFilm(pixel);
   bool forward = forwardEdge(pixel) || !lendsColour(pixel + ivec2(side.x, 0), underFilm) ||
                  !lendsColour(pixel + ivec2(0, side.y), underFilm) || !lendsColour(pixel + side, underFilm);
-  if (differing == 0 || longest < 1e-6 || forward || litPerSample(pixel)) {
-    // interior, a symmetric crossing with no side to blend towards, a forward pass's, or lit per sample
-    outColour = centre;
-    return;
-  }
+#if COVERAGE_MARK_EDGES
+  // Left as it is: interior, a symmetric crossing with no side to blend towards, a forward pass's, or lit
+  // per sample.
+  if (differing == 0 || longest < 1e-6 || forward || litPerSample(pixel)) discard;
+  outColour = centre;  // no colour target: the stencil keeps the pixel
+#else
   float covered = float(differing) / float(SAMPLES);
   vec2 towards = offset / longest;  // one texel along the dominant axis
   outColour = vec4(linearLightTap(vec2(pixel) + 0.5 + towards * covered), centre.a);
+#endif
 }

@@ -20,37 +20,46 @@ class CoverageTechnique : public SampleGeometryTechnique {
     if (Status status = technique->createGeometry(context, shared, Method::Coverage, false, "coverage"); !status)
       return status.error();
     technique->litPerSample_ = shared.slices != nullptr;
-    auto program = context.shaders->program(
-        "common/fullscreen.vert", "coverage/coverage_filter.frag",
-        defineLine("SAMPLES", technique->geometry_.samples) + depthEncodingDefines(context.layout) +
-            shared.post->encodingDefine() + defineLine("LIT_PER_SAMPLE", technique->litPerSample_) +
-            technique->forwardMaskDefine(context.layout, true),
-        {"uSamplePositions", "uTexelSize", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance", "uInput",
-         "uPixelDepth", "uSampleDepth", "uForwardDrawn", "uSliceCounts"});
-    if (!program) return program.error();
-    technique->program_ = std::move(program.value());
+    for (const bool marking : {true, false}) {
+      auto program = context.shaders->program(
+          "common/fullscreen.vert", "coverage/coverage_filter.frag",
+          defineLine("SAMPLES", technique->geometry_.samples) + depthEncodingDefines(context.layout) +
+              shared.post->encodingDefine() + defineLine("LIT_PER_SAMPLE", technique->litPerSample_) +
+              technique->forwardMaskDefine(context.layout, true) + defineLine("COVERAGE_MARK_EDGES", marking),
+          {"uSamplePositions", "uTexelSize", RETROAA_DEPTH_BUFFER_UNIFORMS, "uFootprintTan", "uTolerance", "uInput",
+           "uPixelDepth", "uSampleDepth", "uForwardDrawn", "uSliceCounts"});
+      if (!program) return program.error();
+      (marking ? technique->markProgram_ : technique->blendProgram_) = std::move(program.value());
+    }
+    // The depth test marks the pixels the tap blends in place (shaders/coverage/coverage_filter.frag).
+    auto rewrite =
+        MarkedRewrite::create(context, shared.post->input(context.layout), "coverage", technique->rewriteBytes_);
+    if (!rewrite) return rewrite.error();
+    technique->rewrite_ = std::move(rewrite.value());
     return std::unique_ptr<Technique>(std::move(technique));
   }
 
   Status post(PluginContext& context, SharedTargets& shared, const FrameInfo& frame) override {
     ScopedPass timed(context, "coverage_filter");
     const GBufferLayout& layout = context.layout;
-    shared.post->bindAsOutput(context);
-    program_.use();
-    shared.post->bindBilinear(program_, "uInput", shared.post->input(layout));
-    program_.bindTexture("uPixelDepth", layout.depthStencilTexture);
-    program_.bindTexture("uSampleDepth", geometry_.depth);
-    bindForwardMask(program_, shared);
-    if (litPerSample_) program_.bindTexture("uSliceCounts", shared.slices->counts());
-    program_.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
-    program_.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
-    program_.setDepthPlanes(context);
-    program_.set("uFootprintTan", context.footprintTan(frame));
-    program_.set("uTolerance", context.config.coverageTolerance);
-    context.drawFullscreen();
-    shared.post->copyBack(layout);
+    shared.post->copyInputAside(layout);  // what both draws read
+    rewrite_.run(context, markProgram_, blendProgram_, [&](const ShaderProgram& program) {
+      program.use();
+      shared.post->bindBilinear(program, "uInput", shared.post->copyOfInput());
+      program.bindTexture("uPixelDepth", layout.depthStencilTexture);
+      program.bindTexture("uSampleDepth", geometry_.depth);
+      bindForwardMask(program, shared);
+      if (litPerSample_) program.bindTexture("uSliceCounts", shared.slices->counts());
+      program.setVec2Array("uSamplePositions", geometry_.samples, geometry_.samplePositions.data());
+      program.set("uTexelSize", 1.0f / layout.width, 1.0f / layout.height);
+      program.setDepthPlanes(context);
+      program.set("uFootprintTan", context.footprintTan(frame));
+      program.set("uTolerance", context.config.coverageTolerance);
+    });
     return Status::ok();
   }
+
+  uint64_t bytes() const override { return SampleGeometryTechnique::bytes() + rewriteBytes_; }
 
   bool keepsObjectsFor(const Config& config) const override {
     const TechniqueRow* base = findTechnique(config.method);
@@ -59,7 +68,9 @@ class CoverageTechnique : public SampleGeometryTechnique {
   }
 
  private:
-  ShaderProgram program_;
+  ShaderProgram markProgram_, blendProgram_;
+  MarkedRewrite rewrite_;
+  uint64_t rewriteBytes_ = 0;  // its stencil
   bool litPerSample_ = false;  // over a slice method: the pixels it lit per sample pass through
 };
 
