@@ -29,7 +29,7 @@ class AggregateTechnique : public Technique {
         {RETROAA_GBUFFER_PASS_UNIFORMS, "uLength", "uThreshold", "uSamplePositions"});
     if (!cluster) return cluster.error();
     t.clusterProgram_ = std::move(cluster.value());
-    for (const bool depth : {false, true}) {  // the G-buffer write, and its depth write where the slices make one
+    for (const bool depth : {false, true}) {  // the G-buffer write, and its host-depth write where the slices make one
       if (depth && !shared.slices->writesHostDepth()) continue;
       auto write = context.shaders->program("common/fullscreen.vert", "aggregate/write_aggregate.frag",
                                             shared.slices->writerDefines(source, layout, depth),

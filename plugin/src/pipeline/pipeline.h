@@ -197,7 +197,7 @@ class SliceRenderer {
   void writeUniformMask(PluginContext& context, int count);
   GLuint counts() const { return counts_.get(); }
   // Whether each slice writes the host's depth texture too (DepthSource::DepthBuffer: the host's
-  // lighting rebuilds positions from it), and the #defines of a slice writer's depth variant.
+  // lighting rebuilds positions from it).
   bool writesHostDepth() const { return depthWriter_.get() != 0; }
   // Whether each slice's depth stays in the targets the host's callback draws into (the layout composes:
   // a far-plane sky or a depth-tested fog must see the slice's surface).
