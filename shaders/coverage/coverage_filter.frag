@@ -71,7 +71,6 @@ void main() {
   // Left as it is: interior, a symmetric crossing with no side to blend towards, a forward pass's, or lit
   // per sample.
   if (differing == 0 || longest < 1e-6 || forward || litPerSample(pixel)) discard;
-  outColour = centre;  // no colour target: the stencil keeps the pixel
 #else
   float covered = float(differing) / float(SAMPLES);
   vec2 towards = offset / longest;  // one texel along the dominant axis

@@ -33,7 +33,7 @@ class CoverageTechnique : public SampleGeometryTechnique {
     }
     // The depth test marks the pixels the tap blends in place (shaders/coverage/coverage_filter.frag).
     auto rewrite =
-        MarkedRewrite::create(context, shared.post->input(context.layout), "coverage", technique->rewriteBytes_);
+        MarkedRewrite::create(context, shared.post->input(context.layout), "coverage", technique->geometry_.bytes);
     if (!rewrite) return rewrite.error();
     technique->rewrite_ = std::move(rewrite.value());
     return std::unique_ptr<Technique>(std::move(technique));
@@ -59,8 +59,6 @@ class CoverageTechnique : public SampleGeometryTechnique {
     return Status::ok();
   }
 
-  uint64_t bytes() const override { return SampleGeometryTechnique::bytes() + rewriteBytes_; }
-
   bool keepsObjectsFor(const Config& config) const override {
     const TechniqueRow* base = findTechnique(config.method);
     return SampleGeometryTechnique::keepsObjectsFor(config) &&
@@ -70,7 +68,6 @@ class CoverageTechnique : public SampleGeometryTechnique {
  private:
   ShaderProgram markProgram_, blendProgram_;
   MarkedRewrite rewrite_;
-  uint64_t rewriteBytes_ = 0;  // its stencil
   bool litPerSample_ = false;  // over a slice method: the pixels it lit per sample pass through
 };
 
