@@ -58,6 +58,7 @@ STK_REPORT_METHODS = off stk-mlaa fxaa smaa resolve resolve/front resolve/back r
 STK_RACE_METHODS = off fxaa smaa reconstruct resolve edge per-sample temporal reconstruct+temporal
 # Races with three AI opponents on each track (temporal's swing, flicker and karts among other karts).
 STK_OPPONENT_RACE_METHODS = fxaa edge temporal
+STK_OPPONENT_RACE_TRACKS = $(STK_TRACKS) lighthouse zengarden
 STK_RACE_SCORE = --region kart=120,110,80,75 --region wires=160,0,160,70 --crop 128,112,64 --crop 200,20,64
 stk-report: stk
 	for effects in "--particles" "--effects --no-ssao"; do for track in $(STK_TRACKS); do \
@@ -68,7 +69,7 @@ stk-report: stk
 	  $(RETROAA) score $$dir --reference $$dir/reference/off.png --factor 4 --crop $$crop || exit 1; done; done
 	bash $(STK_DIR)/race.sh $(STK) $(RETROAA) cornfield_crossing 320x240 607 8 "$(STK_RACE_METHODS)" out/stk/race \
 	  $(STK_RACE_SCORE)
-	for track in $(STK_TRACKS); do \
+	for track in $(STK_OPPONENT_RACE_TRACKS); do \
 	  bash $(STK_DIR)/race.sh $(STK) $(RETROAA) $$track 320x240 607 8 "$(STK_OPPONENT_RACE_METHODS)" \
 	    out/stk/race-opponents/$$track --karts=4 --region kart=120,110,80,75 || exit 1; done
 
@@ -83,7 +84,10 @@ stk-cost: stk
 # with sky and power lines (the sky must stay as off has it), each against STK's own 4x render.
 STK_TEST_METHODS = off fxaa resolve reconstruct edge per-sample temporal@temporal_before_tonemap=off
 # Then: the choice in STK's graphics settings (saved, applied in a race, an unknown one falling back); the
-# effects of its high preset on; and a short driven race (reproducible, every method from the start).
+# effects of its high preset on; a short driven race (reproducible, every method from the start); and races
+# with three AI opponents on the tracks where temporal meets every race target (docs/results.md says which
+# it misses elsewhere and why: olivermath's own swing, lighthouse's and zengarden's foliage flicker).
+STK_TEST_OPPONENT_TRACKS = cornfield_crossing black_forest
 test-stk: stk
 	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) olivermath $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/olivermath --edges --whole-frame
 	bash $(STK_DIR)/test.sh $(STK) $(RETROAA) cornfield_crossing $(STK_FRAME) "$(STK_TEST_METHODS)" out/test-stk/cornfield_crossing --sky --whole-frame
@@ -94,6 +98,10 @@ test-stk: stk
 	bash $(STK_DIR)/race.sh $(STK) $(RETROAA) cornfield_crossing 320x240 607 8 "fxaa reconstruct temporal" out/test-stk/race \
 	  $(STK_RACE_SCORE)
 	python3 $(STK_DIR)/check.py out/test-stk/race $(STK_DIR)/patches --race
+	for track in $(STK_TEST_OPPONENT_TRACKS); do \
+	  bash $(STK_DIR)/race.sh $(STK) $(RETROAA) $$track 320x240 607 8 "fxaa temporal" out/test-stk/race-opponents/$$track \
+	    --karts=4 --region kart=120,110,80,75 && \
+	  python3 $(STK_DIR)/check.py out/test-stk/race-opponents/$$track $(STK_DIR)/patches --race || exit 1; done
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo

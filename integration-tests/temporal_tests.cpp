@@ -85,7 +85,9 @@ std::vector<std::vector<SyntheticSample>> wall(float depth, glm::vec3 albedo, in
 }  // namespace
 
 TEST(Temporal, JitterIsHaltonTwoThreeOverItsLengthAndZeroForOtherMethods) {
-  HandWrittenFrames frames;
+  retroaa::Config config;
+  config.temporalMovingJitterScale = 1.0f;  // the sequence itself: a new history is short, and would narrow it
+  HandWrittenFrames frames(config);
   retroaa::Plugin& plugin = frames.hooks->plugin();
   EXPECT_EQ(plugin.textureLodBias(), -1.0f);
   const auto red = wall(10, kRed);
@@ -135,6 +137,43 @@ TEST(Temporal, TheMipBiasFollowsTheViewsMotion) {
   }
   EXPECT_GT(plugin.textureLodBias(), -1.0f - 1e-6f);
   EXPECT_LT(plugin.textureLodBias(), -0.85f) << "a slow pan";
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// The jitter narrows as the mip bias moves: to temporal_moving_jitter_scale of the Halton point once every
+// pixel's history is shorter than the sequence (too short to average its phases), the full point while the
+// view is still; counted by the pass, read frames later.
+TEST(Temporal, TheJitterNarrowsWhileTheViewMoves) {
+  retroaa::Config config;
+  config.temporalMovingJitterScale = 0.5f;
+  HandWrittenFrames frames(config);
+  retroaa::Plugin& plugin = frames.hooks->plugin();
+  const auto red = wall(10, kRed);
+  int framesRun = 0;
+  // The next frame's Halton point (index 1 first) times `scale`, against what the plugin answers.
+  auto expectJitter = [&](float scale, float tolerance, const char* view) {
+    const uint32_t index = uint32_t(framesRun % 8) + 1;
+    const retroaa::Jitter jitter = plugin.jitter();
+    EXPECT_NEAR(jitter.x, scale * (radicalInverse(index, 2) - 0.5f), tolerance) << view << ", frame " << framesRun;
+    EXPECT_NEAR(jitter.y, scale * (radicalInverse(index, 3) - 0.5f), tolerance) << view << ", frame " << framesRun;
+  };
+  for (; framesRun < 12; ++framesRun) frames.run(red);
+  for (int i = 0; i < 8; ++i, ++framesRun) {
+    expectJitter(1.0f, 1e-6f, "a still view");
+    frames.run(red);
+  }
+  // 0.73 pixel a frame at the wall (TheMipBiasFollowsTheViewsMotion): every pixel's history is short.
+  for (int i = 0; i < 12; ++i, ++framesRun) {
+    frames.info.viewMatrix[12] -= 1.0f;
+    frames.run(red);
+  }
+  for (int i = 0; i < 8; ++i, ++framesRun) {
+    expectJitter(0.5f, 0.005f, "every pixel moving");
+    frames.info.viewMatrix[12] -= 1.0f;
+    frames.run(red);
+  }
+  for (; framesRun < 60; ++framesRun) frames.run(red);
+  expectJitter(1.0f, 1e-6f, "still again");
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 

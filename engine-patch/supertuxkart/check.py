@@ -11,8 +11,9 @@ usage: check.py CAPTURE_DIR PATCH_DIR [--edges] [--sky] [--whole-frame] [--race]
            off; edge within 0.5 dB of per-sample at <= 1.5 evaluations per pixel; reconstruct within
            0.5 dB of off's interior PSNR
   --race   a driven race (race.sh): every method scored over the same frames; temporal's edge PSNR at
-           least fxaa's, its interior PSNR at least off's - 1 dB, its kart (the score's "kart" region) at
-           least off's, and its whole-frame PSNR swinging at most 0.5 dB from frame to frame
+           least fxaa's, its flicker at most fxaa's, its interior PSNR at least off's - 1 dB, its kart (the
+           score's "kart" region) at least off's, and its whole-frame PSNR swinging at most 0.5 dB from frame
+           to frame
   --forward  every method's interior PSNR at least off's - 1 dB: nothing STK's forward passes drew
            (transparents, the karts' exhaust smoke) is lost (a capture with its effects on)
 Exit 1 naming every failed assertion; prints 'N passed, N failed'."""
@@ -79,6 +80,9 @@ if race:
         check("temporal's edge PSNR at least fxaa's in the race",
               rows["temporal"]["edge_psnr_db"] >= rows["fxaa"]["edge_psnr_db"],
               f"{rows['temporal']['edge_psnr_db']:.2f} dB against {rows['fxaa']['edge_psnr_db']:.2f} dB")
+        check("temporal flickers at most as much as fxaa in the race",
+              rows["temporal"]["flicker"] <= rows["fxaa"]["flicker"],
+              f"{rows['temporal']['flicker']:.4f} against {rows['fxaa']['flicker']:.4f}")
     if "temporal" in rows:
         temporal = rows["temporal"]
         check("temporal's interior PSNR at least off's - 1 dB in the race",

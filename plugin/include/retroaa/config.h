@@ -127,12 +127,13 @@ struct Config {
   bool reconstructCompute = false;        // `reconstruct_compute`
   // `temporal`, and its accumulation stacked on another method (`resolve+temporal`): the host jitters its
   // projection by Plugin::jitter() and biases its material samplers by Plugin::textureLodBias().
-  bool temporalFilter = false;           // `temporal_filter`
-  float temporalBlend = 0.1f;            // `temporal_blend`
-  int temporalJitterLength = 8;          // `temporal_jitter_length`
-  float temporalLodBias = -1.0f;         // `temporal_lod_bias`
-  float temporalMovingLodBias = -0.25f;  // `temporal_moving_lod_bias`
-  bool temporalBeforeTonemap = true;     // `temporal_before_tonemap`
+  bool temporalFilter = false;             // `temporal_filter`
+  float temporalBlend = 0.1f;              // `temporal_blend`
+  int temporalJitterLength = 8;            // `temporal_jitter_length`
+  float temporalLodBias = -1.0f;           // `temporal_lod_bias`
+  float temporalMovingLodBias = -0.25f;    // `temporal_moving_lod_bias`
+  float temporalMovingJitterScale = 0.5f;  // `temporal_moving_jitter_scale`
+  bool temporalBeforeTonemap = true;       // `temporal_before_tonemap`
   // Shared by every method.
   bool restoreGBufferAfterShade = true;  // `restore_gbuffer_after_shade`
   bool sliceTiles = true;                // `slice_tiles`

@@ -67,9 +67,10 @@ class RETROAA_API Plugin {
   // GL_NONE). 0 when the method needs no such pass. Valid until the next reconfigure() or resize().
   GLuintHandle prepassFramebuffer() const;
   // Where a method with a history runs (as the method or stacked): this frame's sub-pixel offset of the projection,
-  // Halton (2, 3) over temporal_jitter_length frames; (0, 0) otherwise. Call it once before the model
-  // pass and shift the projection every pass of the frame that draws the scene (model pass, prepass, lighting,
-  // forward passes between beginForward() and endForward(), a sky drawn late) by it:
+  // Halton (2, 3) over temporal_jitter_length frames, narrowed to temporal_moving_jitter_scale of it with the share
+  // of pixels whose history is shorter than the sequence (as textureLodBias()); (0, 0) otherwise. Call it once before
+  // the model pass and shift the projection every pass of the frame that draws the scene (model pass, prepass,
+  // lighting, forward passes between beginForward() and endForward(), a sky drawn late) by it:
   //   projection[2][0] += 2 * jitter.x / width;  projection[2][1] += 2 * jitter.y / height;
   // (column-major; width and height of the layout). FrameInfo::projectionMatrix stays unshifted.
   Jitter jitter() const;

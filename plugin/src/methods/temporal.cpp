@@ -200,8 +200,10 @@ class TemporalTechnique : public Technique {
     jitterOrigin_ = context.statistics->framesStarted();
   }
   // The sequence starts anew with the history: the frame about to begin is its frame framesStarted + 1 - origin.
-  std::optional<Jitter> jitter(const Config&, uint64_t framesStarted) const override {
-    return haltonJitter(framesStarted + 1 - jitterOrigin_, jitterLength_);
+  std::optional<Jitter> jitter(const Config& config, uint64_t framesStarted) const override {
+    const Jitter point = haltonJitter(framesStarted + 1 - jitterOrigin_, jitterLength_);
+    const float scale = 1.0f + (config.temporalMovingJitterScale - 1.0f) * shortHistoryShare_;
+    return Jitter{point.x * scale, point.y * scale};
   }
   // temporal_lod_bias where the history spans the jitter sequence, temporal_moving_lod_bias where it is
   // shorter (a pixel moving, its history blended at up to 0.5, or rejected), by the share of such pixels
@@ -430,6 +432,10 @@ std::vector<Key> temporalKeys() {
              "the mip bias where the view moves: a moving pixel's history is shorter than the jitter sequence, "
              "too short to average sharper mips, whose aliasing then pulses with the jitter; the bias goes "
              "from temporal_lod_bias to this with the share of such pixels, counted frames later"),
+      number("temporal_moving_jitter_scale", &Config::temporalMovingJitterScale, 0, 1,
+             "the jitter's amplitude where the view moves, as a share of the still view's: a moving pixel's "
+             "history is too short to average the jitter's phases; goes from 1 to this with the share of such "
+             "pixels, counted frames later"),
       onOff("temporal_before_tonemap", &Config::temporalBeforeTonemap,
             "temporal on the HDR light target before tonemapping (radiance, as the ground truth averages) rather "
             "than on the display (where the layout has no single float light target, after tonemapping, said in "
