@@ -59,6 +59,8 @@ STK_RACE_METHODS = off fxaa smaa reconstruct resolve edge per-sample temporal re
 # Races with three AI opponents on each track (temporal's swing, flicker and karts among other karts).
 STK_OPPONENT_RACE_METHODS = fxaa edge temporal
 STK_OPPONENT_RACE_TRACKS = $(STK_TRACKS) lighthouse zengarden
+# A race with three AI opponents, the player's kart scored apart (race.sh's options after OUT).
+STK_OPPONENT_RACE = --karts=4 --region kart=120,110,80,75
 STK_RACE_SCORE = --region kart=120,110,80,75 --region wires=160,0,160,70 --crop 128,112,64 --crop 200,20,64
 stk-report: stk
 	for effects in "--particles" "--effects --no-ssao"; do for track in $(STK_TRACKS); do \
@@ -71,7 +73,7 @@ stk-report: stk
 	  $(STK_RACE_SCORE)
 	for track in $(STK_OPPONENT_RACE_TRACKS); do \
 	  bash $(STK_DIR)/race.sh $(STK) $(RETROAA) $$track 320x240 607 8 "$(STK_OPPONENT_RACE_METHODS)" \
-	    out/stk/race-opponents/$$track --karts=4 --region kart=120,110,80,75 || exit 1; done
+	    out/stk/race-opponents/$$track $(STK_OPPONENT_RACE) || exit 1; done
 
 # What the plugin's own passes cost inside SuperTuxKart, each beside its floor (a pass of the same shape that
 # only moves its bytes), on the report's three tracks at 320x240, 10 timed frames each: out/stk/cost/
@@ -100,7 +102,7 @@ test-stk: stk
 	python3 $(STK_DIR)/check.py out/test-stk/race $(STK_DIR)/patches --race
 	for track in $(STK_TEST_OPPONENT_TRACKS); do \
 	  bash $(STK_DIR)/race.sh $(STK) $(RETROAA) $$track 320x240 607 8 "fxaa temporal" out/test-stk/race-opponents/$$track \
-	    --karts=4 --region kart=120,110,80,75 && \
+	    $(STK_OPPONENT_RACE) && \
 	  python3 $(STK_DIR)/check.py out/test-stk/race-opponents/$$track $(STK_DIR)/patches --race || exit 1; done
 
 build: deps

@@ -200,16 +200,14 @@ class TemporalTechnique : public Technique {
     jitterOrigin_ = context.statistics->framesStarted();
   }
   // The sequence starts anew with the history: the frame about to begin is its frame framesStarted + 1 - origin.
+  // Narrowed to temporal_moving_jitter_scale of the point as the view moves (byHistory).
   std::optional<Jitter> jitter(const Config& config, uint64_t framesStarted) const override {
     const Jitter point = haltonJitter(framesStarted + 1 - jitterOrigin_, jitterLength_);
-    const float scale = 1.0f + (config.temporalMovingJitterScale - 1.0f) * shortHistoryShare_;
+    const float scale = byHistory(1.0f, config.temporalMovingJitterScale);
     return Jitter{point.x * scale, point.y * scale};
   }
-  // temporal_lod_bias where the history spans the jitter sequence, temporal_moving_lod_bias where it is
-  // shorter (a pixel moving, its history blended at up to 0.5, or rejected), by the share of such pixels
-  // the pass counted (read frames later: the bias follows the view's motion a few frames behind it).
   float textureLodBias(const Config& config) const override {
-    return config.temporalLodBias + (config.temporalMovingLodBias - config.temporalLodBias) * shortHistoryShare_;
+    return byHistory(config.temporalLodBias, config.temporalMovingLodBias);
   }
   bool keepsObjectsFor(const Config& config) const override {
     return config.temporalBeforeTonemap == beforeTonemapRequested_ && config.temporalJitterLength == jitterLength_;
@@ -217,6 +215,11 @@ class TemporalTechnique : public Technique {
   uint64_t bytes() const override { return bytes_; }
 
  private:
+  // `still` where the history spans the jitter sequence, `moving` where it is shorter (a pixel moving, its
+  // history blended at up to 0.5, or rejected), by the share of such pixels the pass counted (read frames
+  // later: the jitter and the mip bias follow the view's motion a few frames behind it).
+  float byHistory(float still, float moving) const { return still + (moving - still) * shortHistoryShare_; }
+
   // Whether this frame can reproject the history: its matrices are given and usable, and the previous
   // frame's were. Warns once per cause.
   bool reprojectable(PluginContext& context, const FrameInfo& frame, Matrix4& viewToPreviousClip, Matrix4& inverseView,
