@@ -131,7 +131,7 @@ struct Config {
   float temporalBlend = 0.1f;              // `temporal_blend`
   int temporalJitterLength = 8;            // `temporal_jitter_length`
   float temporalLodBias = -1.0f;           // `temporal_lod_bias`
-  float temporalMovingLodBias = -0.25f;    // `temporal_moving_lod_bias`
+  float temporalMovingLodBias = -0.5f;     // `temporal_moving_lod_bias`
   float temporalMovingJitterScale = 0.5f;  // `temporal_moving_jitter_scale`
   bool temporalBeforeTonemap = true;       // `temporal_before_tonemap`
   // Shared by every method.
