@@ -76,7 +76,8 @@ stk-report: stk
 	    out/stk/race-opponents/$$track $(STK_OPPONENT_RACE) || exit 1; done
 
 # What the plugin's own passes cost inside SuperTuxKart, each beside its floor (a pass of the same shape that
-# only moves its bytes), on the report's three tracks at 320x240, 10 timed frames each: out/stk/cost/
+# only moves its bytes), and `resolve` and `edge` without the floors for the walls, on the report's three
+# tracks at 320x240, 10 timed frames each: out/stk/cost/
 # (<track>/report.md and cost.md, the targets of docs/results.md#what-the-passes-cost met or missed).
 stk-cost: stk
 	bash $(STK_DIR)/cost.sh $(STK) $(RETROAA) out/stk/cost 320x240 10 $(STK_TRACKS)
