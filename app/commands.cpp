@@ -281,32 +281,6 @@ std::string floorTable(const json& rows) {
   return table.str();
 }
 
-// Each slice's own cost (slice 0 lights every pixel, later ones only where the counts ask): what a sparse
-// slice costs against a full one on this device.
-std::string sliceTable(const json& rows) {
-  std::ostringstream table;
-  table << std::fixed << std::setprecision(2);
-  bool any = false;
-  for (const auto& row : rows) {
-    const json& runs = row["passes_ms_by_run"];
-    if (!runs.contains("plugin.slices.lighting")) continue;
-    if (!any)
-      table << "Each slice's GPU ms (the host's lighting, the plugin's write and composite):\n\n"
-            << "| method | slice | lighting ms | write ms | composite ms |\n|---|---|---|---|---|\n";
-    any = true;
-    const json& lighting = runs["plugin.slices.lighting"];
-    for (size_t slice = 0; slice < lighting.size(); ++slice) {
-      auto cell = [&](const char* pass) {
-        return runs.contains(pass) && slice < runs[pass].size() ? runs[pass][slice].get<double>() : 0.0;
-      };
-      table << "| " << (slice == 0 ? row["method"].get<std::string>() : "") << " | " << slice << " | "
-            << lighting[slice].get<double>() << " | " << cell("plugin.slices.write") << " | "
-            << cell("plugin.slices.composite") << " |\n";
-    }
-  }
-  return any ? "\n" + table.str() : "";
-}
-
 void writeBenchCsv(const std::string& path, const json& rows) {
   ensureParent(path);
   std::ofstream csv(path);
@@ -372,6 +346,35 @@ void writeReferenceImages(const std::string& directory, const Session& session, 
 }
 
 }  // namespace
+
+std::string sliceTable(const nlohmann::json& rows, const std::string& nameKey, const std::string& passPrefix) {
+  using json = nlohmann::json;
+  std::ostringstream table;
+  table << std::fixed << std::setprecision(2);
+  const std::string lightingPass = passPrefix + "slices.lighting";
+  bool any = false;
+  for (const auto& row : rows) {
+    const json runs = row.value("passes_ms_by_run", json::object());
+    if (!runs.contains(lightingPass)) continue;
+    if (!any)
+      table << "Each slice's pixels lit and GPU ms (the host's lighting, the plugin's write and composite):\n\n"
+            << "| method | slice | pixels lit | lighting ms | write ms | composite ms |\n|---|---|---|---|---|---|\n";
+    any = true;
+    const json& lighting = runs[lightingPass];
+    const json pixels = row.value("lighting_evaluations_by_slice", json::array());
+    for (size_t slice = 0; slice < lighting.size(); ++slice) {
+      auto cell = [&](const char* pass) {
+        const std::string name = passPrefix + pass;
+        return runs.contains(name) && slice < runs[name].size() ? runs[name][slice].get<double>() : 0.0;
+      };
+      table << "| " << (slice == 0 ? row[nameKey].get<std::string>() : "") << " | " << slice << " | "
+            << (slice < pixels.size() ? std::to_string(pixels[slice].get<uint64_t>()) : "-") << " | "
+            << lighting[slice].get<double>() << " | " << cell("slices.write") << " | " << cell("slices.composite")
+            << " |\n";
+    }
+  }
+  return any ? "\n" + table.str() : "";
+}
 
 int runBench(const BenchOptions& options) {
   const std::vector<MethodSpec> specs = parseMethodList(options.methods, options.base);
@@ -444,7 +447,7 @@ int runBench(const BenchOptions& options) {
                          {"shading_floor_samples", options.base.samples},
                          {"metric_space", "display (tonemapped sRGB, 8-bit) values in [0,1]"},
                          {"rows", rows}};
-  const std::string table = benchTable(rows) + "\n" + floorTable(rows) + sliceTable(rows);
+  const std::string table = benchTable(rows) + "\n" + floorTable(rows) + sliceTable(rows, "method", "plugin.");
   std::printf("%s", table.c_str());
   std::printf("renderer: %s\n", info.summary().c_str());
   if (!options.json.empty()) {

@@ -3,6 +3,8 @@
 
 #include "retroaa/config.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -36,6 +38,11 @@ std::vector<std::string> expandMethodList(const std::string& list);
 // expandMethodList, each spec parsed over `base`; throws std::invalid_argument naming a bad spec, or
 // when the list names no method.
 std::vector<MethodSpec> parseMethodList(const std::string& list, const retroaa::Config& base);
+
+// Each slice's pixels lit and GPU ms, what a sparse slice costs beside a full one: rows with
+// "passes_ms_by_run" (a pass's ms per run, in slice order, keyed by `passPrefix` + its name) and
+// "lighting_evaluations_by_slice", each named by its `nameKey` field. Empty when no row has slices.
+std::string sliceTable(const nlohmann::json& rows, const std::string& nameKey, const std::string& passPrefix);
 
 struct RenderOptions {
   std::string scene = "default";

@@ -281,6 +281,7 @@ nlohmann::json figures(const Measurement& m) {
       {"samples", m.stats.samples},
       {"evals_per_pixel", m.stats.evaluationsPerPixel()},
       {"lighting_evaluations", m.stats.lightingEvaluations},
+      {"lighting_evaluations_by_slice", m.stats.lightingEvaluationsBySlice},
       {"slices", m.stats.slices},
       {"gpu_ms", m.gpuMs},
       // Not measured (wall frames 0): null, never a made-up number.

@@ -435,6 +435,8 @@ int score(const ScoreOptions& options) {
         {"wall_vs_off", offWall > 0 ? wall / offWall : 0.0},
         {"passes_ms", r.value("passes", nlohmann::json::object())},
         {"passes_unmeasured", r.value("passes_unmeasured", nlohmann::json::object())},
+        {"passes_ms_by_run", r.value("passes_by_run", nlohmann::json::object())},
+        {"lighting_evaluations_by_slice", r.value("evaluations_by_slice", nlohmann::json::array())},
         {"own_passes_ms", ownMs},
         {"own_passes_vs_off_wall", offWall > 0 ? ownMs / offWall : 0.0},
         {"plugin_bytes", r.value("plugin_bytes", 0)},
@@ -488,7 +490,7 @@ int score(const ScoreOptions& options) {
      << " sky pixels (no geometry within a pixel of them in the reference), kept = within 1/255 of off; "
      << "model edges: the " << apart.modelPixels << " edge pixels outside the sky (the other " << apart.backgroundPixels
      << " are the sky's own detail; – without a sky mask, as in a race).\n";
-  md << floorTable(report);
+  md << floorTable(report) << sliceTable(report, "spec", "");
   std::ofstream(out + "/report.md") << md.str();
   std::ofstream(out + "/report.json") << report.dump(2) << "\n";
   std::printf("%s", md.str().c_str());

@@ -257,6 +257,34 @@ TEST(Statistics, SlicesWithoutPixelsLightNothing) {
   EXPECT_EQ(edge.rgb, off.rgb);
 }
 
+// What each slice lit, in slice order, beside its pass times: slice 0 every pixel, each later one the
+// pixels whose count reaches it (a subset of its predecessor's), summing to the frame's evaluations.
+TEST(Statistics, EachSliceReportsThePixelsItLit) {
+  PatchedHost host("default", 96, 72);
+  const uint64_t pixels = 96 * 72;
+  const retroaa::Stats off = measuredStats(host, "off");
+  EXPECT_EQ(off.lightingEvaluationsBySlice, std::vector<uint64_t>{pixels});
+  const retroaa::Stats perSample = measuredStats(host, "per-sample");
+  EXPECT_EQ(perSample.lightingEvaluationsBySlice, std::vector<uint64_t>(size_t(perSample.samples), pixels));
+  const retroaa::Stats edge = measuredStats(host, "edge");
+  const std::vector<uint64_t>& bySlice = edge.lightingEvaluationsBySlice;
+  ASSERT_EQ(bySlice.size(), size_t(edge.slices));
+  EXPECT_EQ(bySlice[0], pixels);
+  uint64_t sum = 0;
+  for (size_t slice = 0; slice < bySlice.size(); ++slice) {
+    sum += bySlice[slice];
+    if (slice > 0) {
+      EXPECT_LE(bySlice[slice], bySlice[slice - 1]) << "slice " << slice;
+    }
+  }
+  EXPECT_EQ(sum, edge.lightingEvaluations);
+  EXPECT_GT(bySlice[1], 0u) << "the demo has edges";
+  EXPECT_LT(bySlice[1], pixels / 2) << "a sparse slice";
+  size_t lightingRuns = 0;  // one timed lighting pass per count, in the same order
+  for (const retroaa::PassStats& pass : edge.passes) lightingRuns += pass.name == "slices.lighting";
+  EXPECT_EQ(lightingRuns, bySlice.size());
+}
+
 // The resolve states the least traffic its job needs: every sample of the MSAA G-buffer read once
 // (what the resolve method holds), one value per attachment and depth written.
 TEST(Statistics, TheResolveStatesItsMinimumTraffic) {
@@ -306,15 +334,16 @@ std::map<std::string, PassFigures> byName(const retroaa::Stats& stats) {
 // leaves the frame as it was.
 TEST(Statistics, EveryPassHasAFloorOfItsOwnShape) {
   PatchedHost host("default", 64, 48);
-  for (const char* spec : {"resolve", "edge", "per-sample", "adaptive", "aggregate", "smaa-s2x", "fxaa", "smaa",
-                           "coverage", "reconstruct", "temporal", "resolve@resolve_compute=on",
-                           "reconstruct@reconstruct_compute=on"}) {
+  for (const char* spec :
+       {"resolve", "edge", "per-sample", "adaptive", "aggregate", "smaa-s2x", "fxaa", "smaa", "coverage", "reconstruct",
+        "temporal", "resolve@resolve_compute=on", "reconstruct@reconstruct_compute=on"}) {
     const app::DisplayImage plain = host.render(spec);
     const auto [stats, display] = floorStats(host, spec);
     const std::map<std::string, PassFigures> passes = byName(stats);
     // (A history's frame moves on from frame to frame: temporal's is compared by its floors' shapes alone.)
     if (std::string(spec) != "temporal") {
-      EXPECT_EQ(app::DisplayImage::fromRgba8(64, 48, display).rgb, plain.rgb) << spec << ": the floors touched the frame";
+      EXPECT_EQ(app::DisplayImage::fromRgba8(64, 48, display).rgb, plain.rgb)
+          << spec << ": the floors touched the frame";
     }
     int floors = 0;
     for (const auto& [name, figures] : passes) {

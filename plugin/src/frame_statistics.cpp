@@ -32,8 +32,7 @@ void FrameStatistics::beginFrame() {
   slot.frame = ++frames_;
   slot.state = Slot::State::Open;
   slot.passes.clear();
-  slot.evaluationQueries.clear();
-  slot.knownEvaluations = 0;
+  slot.evaluationCounts.clear();
   slot.timePool.used = slot.fragmentPool.used = slot.computePool.used = slot.samplesPool.used = 0;
   passDepth_ = 0;
 }
@@ -75,9 +74,10 @@ void FrameStatistics::addUnmeasuredPass(const std::string& name, const std::stri
 GLuint FrameStatistics::beginEvaluationCount() {
   Slot* slot = openSlot();
   if (!slot) return 0;
-  slot->evaluationQueries.push_back(slot->samplesPool.next(queries_));
-  glBeginQuery(GL_SAMPLES_PASSED, slot->evaluationQueries.back());
-  return slot->evaluationQueries.back();
+  const GLuint query = slot->samplesPool.next(queries_);
+  slot->evaluationCounts.push_back({query, 0});
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  return query;
 }
 
 void FrameStatistics::endEvaluationCount() {
@@ -85,7 +85,7 @@ void FrameStatistics::endEvaluationCount() {
 }
 
 void FrameStatistics::addEvaluations(uint64_t pixels) {
-  if (Slot* slot = openSlot()) slot->knownEvaluations += pixels;
+  if (Slot* slot = openSlot()) slot->evaluationCounts.push_back({0, pixels});
 }
 
 bool FrameStatistics::available(const Slot& slot) const {
@@ -97,8 +97,8 @@ bool FrameStatistics::available(const Slot& slot) const {
   for (const PassQueries& pass : slot.passes)
     for (GLuint query : {pass.time, pass.fragments, pass.computes})
       if (query && !isAvailable(query)) return false;
-  for (GLuint query : slot.evaluationQueries)
-    if (!isAvailable(query)) return false;
+  for (const Slot::EvaluationCount& count : slot.evaluationCounts)
+    if (count.query && !isAvailable(count.query)) return false;
   return true;
 }
 
@@ -110,8 +110,10 @@ void FrameStatistics::read(Slot& slot, GLenum resultMode) {
   };
   FrameFigures figures;
   figures.frame = slot.frame;
-  figures.lightingEvaluations = slot.knownEvaluations;
-  for (GLuint query : slot.evaluationQueries) figures.lightingEvaluations += result(query);
+  for (const Slot::EvaluationCount& count : slot.evaluationCounts) {
+    figures.lightingEvaluationsBySlice.push_back(count.query ? result(count.query) : count.pixels);
+    figures.lightingEvaluations += figures.lightingEvaluationsBySlice.back();
+  }
   for (const PassQueries& pass : slot.passes) {
     const uint64_t fragments = result(pass.fragments), computes = result(pass.computes);
     // Without pipeline statistics a floor's invocations, so its bytes, are unknown: 0, not a guess.

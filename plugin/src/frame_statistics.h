@@ -17,6 +17,7 @@ namespace retroaa {
 struct FrameFigures {
   uint64_t frame = 0;  // 1 for the first frame the plugin ran; 0: none back yet
   uint64_t lightingEvaluations = 0;
+  std::vector<uint64_t> lightingEvaluationsBySlice;  // one per lighting call (a slice), in order
   std::vector<PassStats> passes;
 };
 
@@ -75,8 +76,12 @@ class FrameStatistics {
     uint64_t frame = 0;
     enum class State : uint8_t { Empty, Open, Pending } state = State::Empty;
     std::vector<PassQueries> passes;
-    std::vector<GLuint> evaluationQueries;
-    uint64_t knownEvaluations = 0;
+    // One per lighting call: an occlusion query, or the pixels where the CPU knows them (query 0).
+    struct EvaluationCount {
+      GLuint query = 0;
+      uint64_t pixels = 0;
+    };
+    std::vector<EvaluationCount> evaluationCounts;
     QueryPool timePool, fragmentPool, computePool, samplesPool;
   };
   void closeFrame();  // the frame in flight, if any, becomes pending

@@ -304,6 +304,7 @@ Stats Plugin::stats() const {
   stats.framesStarted = context.statistics->framesStarted();
   stats.measuredFrame = measured.frame;
   stats.lightingEvaluations = measured.lightingEvaluations;
+  stats.lightingEvaluationsBySlice = measured.lightingEvaluationsBySlice;
   stats.passes = measured.passes;
   stats.method = context.config.method;
   stats.samples = 1;

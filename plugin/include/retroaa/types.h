@@ -259,6 +259,9 @@ struct Stats {
   uint64_t framesStarted = 0;  // frames begun (resolve() or shade()) since creation
   uint64_t measuredFrame = 0;
   uint64_t lightingEvaluations = 0;  // pixels lit, summed over the lighting calls of the measured frame
+  // The same per lighting call, in order: one per slice (slice 0 lights every pixel; a later slice, the
+  // pixels whose count reaches it), beside each slice's pass times (PassStats in the same order).
+  std::vector<uint64_t> lightingEvaluationsBySlice;
   double evaluationsPerPixel() const { return pixels ? double(lightingEvaluations) / pixels : 0; }
   std::vector<PassStats> passes;  // plugin passes of the measured frame (measureGpuTime)
   uint64_t bytesHeld = 0;         // GPU memory of the plugin's own targets
