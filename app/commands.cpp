@@ -354,14 +354,14 @@ std::string sliceTable(const nlohmann::json& rows, const std::string& nameKey, c
   const std::string lightingPass = passPrefix + "slices.lighting";
   bool any = false;
   for (const auto& row : rows) {
-    const json runs = row.value("passes_ms_by_run", json::object());
+    const json& runs = row.at("passes_ms_by_run");
     if (!runs.contains(lightingPass)) continue;
     if (!any)
       table << "Each slice's pixels lit and GPU ms (the host's lighting, the plugin's write and composite):\n\n"
             << "| method | slice | pixels lit | lighting ms | write ms | composite ms |\n|---|---|---|---|---|---|\n";
     any = true;
     const json& lighting = runs[lightingPass];
-    const json pixels = row.value("lighting_evaluations_by_slice", json::array());
+    const json& pixels = row.at("lighting_evaluations_by_slice");
     for (size_t slice = 0; slice < lighting.size(); ++slice) {
       auto cell = [&](const char* pass) {
         const std::string name = passPrefix + pass;

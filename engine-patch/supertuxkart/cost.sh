@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # What the plugin's own passes cost in SuperTuxKart, against the bytes they must move: each track at
 # SIZE with particles on (forward passes), METHODS with measure_pass_floors (each pass beside a floor pass
-# of its shape, timed in the same run) and TIMED timed frames, and `resolve` and `edge` without the floors, then scored against STK's own render at 4x
-# the size. Writes OUT/<track>/report.md (quality, wall and own passes against off, the floors table) and
-# OUT/cost.md (the targets of docs/results.md#what-the-passes-cost, met or not, per track).
+# of its shape, timed in the same run) and TIMED timed frames, and `resolve` and `edge` without the floors,
+# then scored against STK's own render at 4x the size. Writes OUT/<track>/report.md (quality, wall and own
+# passes against off, the floors table) and OUT/cost.md (the targets of docs/results.md#what-the-passes-cost,
+# met or not, per track).
 #   usage: cost.sh STK_BINARY RETROAA OUT [SIZE] [TIMED] [TRACK...]
 set -euo pipefail
 binary=$1 retroaa=$2 out=$3

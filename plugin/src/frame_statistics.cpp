@@ -110,10 +110,8 @@ void FrameStatistics::read(Slot& slot, GLenum resultMode) {
   };
   FrameFigures figures;
   figures.frame = slot.frame;
-  for (const Slot::EvaluationCount& count : slot.evaluationCounts) {
+  for (const Slot::EvaluationCount& count : slot.evaluationCounts)
     figures.lightingEvaluationsBySlice.push_back(count.query ? result(count.query) : count.pixels);
-    figures.lightingEvaluations += figures.lightingEvaluationsBySlice.back();
-  }
   for (const PassQueries& pass : slot.passes) {
     const uint64_t fragments = result(pass.fragments), computes = result(pass.computes);
     // Without pipeline statistics a floor's invocations, so its bytes, are unknown: 0, not a guess.

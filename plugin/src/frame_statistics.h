@@ -15,9 +15,8 @@ namespace retroaa {
 
 // What one frame measured once its queries are back.
 struct FrameFigures {
-  uint64_t frame = 0;  // 1 for the first frame the plugin ran; 0: none back yet
-  uint64_t lightingEvaluations = 0;
-  std::vector<uint64_t> lightingEvaluationsBySlice;  // one per lighting call (a slice), in order
+  uint64_t frame = 0;                                // 1 for the first frame the plugin ran; 0: none back yet
+  std::vector<uint64_t> lightingEvaluationsBySlice;  // pixels lit, one per lighting call (a slice), in order
   std::vector<PassStats> passes;
 };
 

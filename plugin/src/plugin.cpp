@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace retroaa {
 
@@ -303,8 +304,9 @@ Stats Plugin::stats() const {
   const FrameFigures& measured = context.statistics->latest();
   stats.framesStarted = context.statistics->framesStarted();
   stats.measuredFrame = measured.frame;
-  stats.lightingEvaluations = measured.lightingEvaluations;
   stats.lightingEvaluationsBySlice = measured.lightingEvaluationsBySlice;
+  stats.lightingEvaluations =
+      std::accumulate(stats.lightingEvaluationsBySlice.begin(), stats.lightingEvaluationsBySlice.end(), uint64_t(0));
   stats.passes = measured.passes;
   stats.method = context.config.method;
   stats.samples = 1;
